@@ -1,0 +1,199 @@
+//! `rolldyn check MODEL.toml`: validate a model and print derived quantities.
+
+use crate::failure::Failure;
+use crate::output::{load_model, print_json};
+use rolldyn_geometry::{BearingModel, MassProperties};
+use rolldyn_units::{AngularSpeed, Quantity};
+use serde::Serialize;
+use std::path::PathBuf;
+
+#[derive(clap::Args)]
+pub struct Args {
+    /// Model file (TOML); the embedded default model (2002834) when omitted.
+    pub model: Option<PathBuf>,
+    /// Inner-ring speed for the epicyclic speeds, e.g. `6371rpm`.
+    #[arg(long, default_value = "1000rpm")]
+    pub speed: Quantity<AngularSpeed>,
+    /// Outer-ring speed (intershaft bearings), e.g. `13067rpm`.
+    #[arg(long, default_value = "0rpm")]
+    pub outer_speed: Quantity<AngularSpeed>,
+    /// Print JSON instead of text.
+    #[arg(long)]
+    pub json: bool,
+}
+
+#[derive(Serialize)]
+struct Mass {
+    mass_kg: f64,
+    axial_inertia_kg_m2: f64,
+    transverse_inertia_kg_m2: f64,
+}
+
+impl From<MassProperties> for Mass {
+    fn from(m: MassProperties) -> Self {
+        Self {
+            mass_kg: m.mass,
+            axial_inertia_kg_m2: m.axial_inertia,
+            transverse_inertia_kg_m2: m.transverse_inertia,
+        }
+    }
+}
+
+/// Derived quantities of a model (SI units).
+#[derive(Serialize, Default)]
+pub struct Summary {
+    name: String,
+    kind: &'static str,
+    roller_diameter_m: f64,
+    roller_length_m: f64,
+    effective_contact_length_m: f64,
+    crown_radius_m: Option<f64>,
+    slices: usize,
+    roller: Option<Mass>,
+    roller_count: Option<usize>,
+    pitch_diameter_m: Option<f64>,
+    geometric_clearance_m: Option<f64>,
+    radial_clearance_m: Option<f64>,
+    roller_rib_axial_clearance_m: Option<f64>,
+    misalignment_rad: f64,
+    inner_ring: Option<Mass>,
+    outer_ring: Option<Mass>,
+    cage: Option<Mass>,
+    cage_land_diameter_m: Option<f64>,
+    inner_speed_rad_s: Option<f64>,
+    outer_speed_rad_s: Option<f64>,
+    epicyclic_cage_speed_rad_s: Option<f64>,
+    epicyclic_roller_speed_rad_s: Option<f64>,
+}
+
+pub fn summarise(model: &BearingModel, inner_speed: f64, outer_speed: f64) -> Summary {
+    let roller = model.roller();
+    let mut s = Summary {
+        name: model.name().to_string(),
+        roller_diameter_m: roller.diameter,
+        roller_length_m: roller.length,
+        effective_contact_length_m: roller.profile.effective_length(),
+        crown_radius_m: roller.profile.crown_radius(),
+        slices: roller.slice_count,
+        roller: Some(roller.mass_properties.into()),
+        misalignment_rad: model.misalignment().inner_ring_tilt,
+        ..Summary::default()
+    };
+    match model {
+        BearingModel::RollerRaceway(p) => {
+            s.kind = "roller-raceway";
+            let ring = Some(p.raceway.mass_properties.into());
+            if p.raceway_is_inner {
+                s.inner_ring = ring;
+            } else {
+                s.outer_ring = ring;
+            }
+        }
+        BearingModel::Cylindrical(b) => {
+            s.kind = "cylindrical";
+            s.roller_count = Some(b.roller_count);
+            s.pitch_diameter_m = Some(b.pitch_diameter());
+            s.geometric_clearance_m = Some(b.geometric_clearance());
+            s.radial_clearance_m = Some(b.clearance.radial);
+            s.roller_rib_axial_clearance_m = b.roller_rib_axial_clearance();
+            s.inner_ring = Some(b.inner_ring.mass_properties.into());
+            s.outer_ring = Some(b.outer_ring.mass_properties.into());
+            s.cage = b.cage.as_ref().map(|c| c.mass_properties.into());
+            s.cage_land_diameter_m = b.cage.as_ref().and_then(|c| c.land_diameter());
+            s.inner_speed_rad_s = Some(inner_speed);
+            s.outer_speed_rad_s = Some(outer_speed);
+            s.epicyclic_cage_speed_rad_s = Some(b.epicyclic_cage_speed(inner_speed, outer_speed));
+            s.epicyclic_roller_speed_rad_s =
+                Some(b.epicyclic_roller_speed(inner_speed, outer_speed));
+        }
+    }
+    s
+}
+
+/// Human-readable lines of a summary (mm, g, rpm).
+pub fn describe(s: &Summary) -> Vec<String> {
+    let mm = |v: f64| format!("{:.4} mm", v * 1e3);
+    let mass = |m: &Mass| {
+        format!(
+            "{:.4} kg, J_axial {:.4e} kg·m², J_transverse {:.4e} kg·m²",
+            m.mass_kg, m.axial_inertia_kg_m2, m.transverse_inertia_kg_m2
+        )
+    };
+    let rpm = |w: f64| {
+        format!(
+            "{:.2} rad/s ({:.1} rpm)",
+            w,
+            w * 30.0 / std::f64::consts::PI
+        )
+    };
+    let mut out = vec![format!("model {} ({}) — valid", s.name, s.kind)];
+    let mut line = |label: &str, value: String| out.push(format!("  {label:<34} {value}"));
+    line(
+        "roller diameter × length",
+        format!("{} × {}", mm(s.roller_diameter_m), mm(s.roller_length_m)),
+    );
+    line("effective contact length", mm(s.effective_contact_length_m));
+    if let Some(r) = s.crown_radius_m {
+        line("crown radius (derived if not given)", mm(r));
+    }
+    line("slices per roller", s.slices.to_string());
+    if let Some(m) = &s.roller {
+        line("roller mass properties", mass(m));
+    }
+    if let Some(z) = s.roller_count {
+        line("rollers", z.to_string());
+    }
+    if let Some(d) = s.pitch_diameter_m {
+        line("pitch diameter d_m", mm(d));
+    }
+    if let Some(g) = s.geometric_clearance_m {
+        line("clearance from raceway diameters", mm(g));
+    }
+    if let Some(g) = s.radial_clearance_m {
+        line("radial clearance (used)", mm(g));
+    }
+    if let Some(a) = s.roller_rib_axial_clearance_m {
+        line("roller–rib axial clearance", mm(a));
+    }
+    line(
+        "misalignment",
+        format!("{:.2}′", s.misalignment_rad.to_degrees() * 60.0),
+    );
+    for (label, m) in [
+        ("inner ring", &s.inner_ring),
+        ("outer ring", &s.outer_ring),
+        ("cage", &s.cage),
+    ] {
+        if let Some(m) = m {
+            line(&format!("{label} mass properties"), mass(m));
+        }
+    }
+    if let Some(d) = s.cage_land_diameter_m {
+        line("cage guiding land diameter", mm(d));
+    }
+    if let (Some(wi), Some(wo), Some(wc), Some(wr)) = (
+        s.inner_speed_rad_s,
+        s.outer_speed_rad_s,
+        s.epicyclic_cage_speed_rad_s,
+        s.epicyclic_roller_speed_rad_s,
+    ) {
+        line(
+            "inner / outer ring speed",
+            format!("{} / {}", rpm(wi), rpm(wo)),
+        );
+        line("epicyclic cage speed", rpm(wc));
+        line("epicyclic roller spin speed", rpm(wr));
+    }
+    out
+}
+
+pub fn run(args: Args) -> Result<(), Failure> {
+    let model = load_model(args.model.as_deref())?;
+    let summary = summarise(&model, args.speed.si(), args.outer_speed.si());
+    if args.json {
+        print_json(&summary)
+    } else {
+        describe(&summary).iter().for_each(|l| println!("{l}"));
+        Ok(())
+    }
+}

@@ -1,0 +1,47 @@
+//! Why a command failed, and the exit code that says so.
+
+use std::fmt;
+
+/// A command failure: bad input (exit 2) or a failure while running (exit 1).
+#[derive(Debug)]
+pub enum Failure {
+    /// The user's input is wrong: model file, flag value. Exit code 2.
+    Input(String),
+    /// The analysis or the output failed. Exit code 1.
+    Run(String),
+}
+
+impl Failure {
+    pub fn exit_code(&self) -> u8 {
+        match self {
+            Self::Input(_) => 2,
+            Self::Run(_) => 1,
+        }
+    }
+}
+
+impl fmt::Display for Failure {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::Input(m) | Self::Run(m) => f.write_str(m),
+        }
+    }
+}
+
+impl From<rolldyn_model::ModelError> for Failure {
+    fn from(e: rolldyn_model::ModelError) -> Self {
+        Self::Input(e.to_string())
+    }
+}
+
+impl From<rolldyn_plot::PlotError> for Failure {
+    fn from(e: rolldyn_plot::PlotError) -> Self {
+        Self::Run(e.to_string())
+    }
+}
+
+impl From<std::io::Error> for Failure {
+    fn from(e: std::io::Error) -> Self {
+        Self::Run(e.to_string())
+    }
+}

@@ -1,0 +1,43 @@
+//! `rolldyn`: the command-line front end. It parses arguments, calls the library crates and
+//! formats their results; it owns no physics.
+
+mod commands;
+mod failure;
+mod output;
+
+use clap::{Parser, Subcommand};
+use std::process::ExitCode;
+
+/// Roller-bearing dynamics, contact and lubrication simulator.
+#[derive(Parser)]
+#[command(name = "rolldyn", version, about, long_about = None)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Run the most complete analysis available on the embedded default model (bearing 2002834).
+    Demo(commands::demo::Args),
+    /// Validate a model file and print its derived quantities.
+    Check(commands::check::Args),
+    /// Roller–raceway contact pressure: Boussinesq solver, slice model or Hertz.
+    Contact(commands::contact::Args),
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        Command::Demo(args) => commands::demo::run(args),
+        Command::Check(args) => commands::check::run(args),
+        Command::Contact(args) => commands::contact::run(args),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(failure) => {
+            eprintln!("rolldyn: {failure}");
+            ExitCode::from(failure.exit_code())
+        }
+    }
+}

@@ -1,0 +1,49 @@
+//! Writing results: JSON on stdout, CSV files, output folders.
+
+use crate::failure::Failure;
+use serde::Serialize;
+use std::path::{Path, PathBuf};
+
+/// Prints `value` as pretty JSON on stdout.
+pub fn print_json<T: Serialize>(value: &T) -> Result<(), Failure> {
+    let text = serde_json::to_string_pretty(value).map_err(|e| Failure::Run(e.to_string()))?;
+    println!("{text}");
+    Ok(())
+}
+
+/// Creates the output folder (and parents) and returns it.
+pub fn out_dir(dir: &Path) -> Result<PathBuf, Failure> {
+    std::fs::create_dir_all(dir).map_err(|e| {
+        Failure::Run(format!(
+            "cannot create output folder {}: {e}",
+            dir.display()
+        ))
+    })?;
+    Ok(dir.to_path_buf())
+}
+
+/// Writes a CSV file with a header row and numeric rows.
+pub fn write_csv(
+    path: &Path,
+    header: &[&str],
+    rows: impl Iterator<Item = Vec<f64>>,
+) -> Result<(), Failure> {
+    let fail = |e: csv::Error| Failure::Run(format!("cannot write {}: {e}", path.display()));
+    let mut writer = csv::Writer::from_path(path).map_err(fail)?;
+    writer.write_record(header).map_err(fail)?;
+    for row in rows {
+        writer
+            .write_record(row.iter().map(|v| format!("{v:e}")))
+            .map_err(fail)?;
+    }
+    writer.flush()?;
+    Ok(())
+}
+
+/// Loads a model file, or the embedded default model when `path` is `None`.
+pub fn load_model(path: Option<&Path>) -> Result<rolldyn_model::BearingModel, Failure> {
+    Ok(match path {
+        Some(path) => rolldyn_model::load(path)?,
+        None => rolldyn_model::parse(rolldyn_model::DEFAULT_MODEL, "<embedded 2002834.toml>")?,
+    })
+}

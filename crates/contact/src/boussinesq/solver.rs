@@ -1,0 +1,737 @@
+//! Constrained conjugate-gradient contact solver (Polonsky & Keer 1999, Wear 231:206–219)
+//! for the discretised Boussinesq problem of seed 004 eqs. (4)–(6) (SPEC §2.5).
+//!
+//! Minimises the complementary energy `½ pᵀF p + pᵀ(K − α)` over `p ≥ 0`:
+//! * approach-controlled: `α` given, gap `g = K − α + u(p)`;
+//! * force-controlled: `ΔS Σ p = Q` given (seed 004 eq. (6)); `α` is the Lagrange multiplier,
+//!   equal to the mean of `K + u` over the contact set (Polonsky–Keer step 2).
+//!
+//! `u = F p` is evaluated with the zero-padded FFT [`Convolver`]. Per iteration one
+//! convolution (of the conjugate direction) is done; `u(p)` is updated linearly, the cells
+//! changed by the projection (`p < 0 → 0`) or the overlap step are added by direct sums when
+//! few, otherwise `u` is recomputed by FFT.
+
+use super::convolution::{ConvolutionMode, Convolver, accumulate_cell};
+use super::influence::InfluenceTable;
+use super::{BoussinesqError, Grid};
+
+/// Every knob of [`BoussinesqSolver`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct BoussinesqOptions {
+    /// Convergence tolerance on the relative pressure change per iteration,
+    /// `ε = Σ|p_k − p_{k−1}| / Σ p_k < tolerance` (Polonsky–Keer criterion). Default `1e-10`.
+    pub tolerance: f64,
+    /// Iteration limit; on reaching it the result has `converged == false`. Default 5000.
+    pub max_iterations: usize,
+    /// Convolution evaluation along `y`. Default [`ConvolutionMode::Auto`].
+    pub convolution: ConvolutionMode,
+    /// Largest number of cells changed by the projection/overlap steps for which the
+    /// displacement is corrected by direct sums instead of a full FFT convolution
+    /// (`0`: always FFT). Default 32 (one cell costs `nx·ny` multiply-adds, one FFT
+    /// convolution roughly 50–100 times that).
+    pub sparse_update_max_cells: usize,
+    /// Recompute `u = F p` by FFT every this many iterations to stop round-off drift of the
+    /// linear update. Default 50.
+    pub recompute_interval: usize,
+    /// Nested-iteration start: solve the same problem on a grid coarsened ×2 (along each
+    /// direction with at least 16 cells; recursively) and start from its prolonged pressure.
+    /// Used only without a user guess. Default true.
+    pub multilevel: bool,
+    /// A coarser level is created only if it has at least this many cells. Default 1024.
+    pub multilevel_min_cells: usize,
+    /// Pressure-change tolerance of the coarse-level solves. Default 1e-5.
+    pub coarse_tolerance: f64,
+}
+
+impl Default for BoussinesqOptions {
+    fn default() -> Self {
+        Self {
+            tolerance: 1e-10,
+            max_iterations: 5000,
+            convolution: ConvolutionMode::Auto,
+            sparse_update_max_cells: 32,
+            recompute_interval: 50,
+            multilevel: true,
+            multilevel_min_cells: 1024,
+            coarse_tolerance: 1e-5,
+        }
+    }
+}
+
+/// Solution of one contact problem. Fields are in storage order (`j * nx + i`, x fastest).
+#[derive(Debug, Clone)]
+pub struct ContactSolution {
+    /// Grid the fields live on.
+    pub grid: Grid,
+    /// Contact pressure per cell, Pa.
+    pub pressure: Vec<f64>,
+    /// Combined elastic surface displacement `u = F p` per cell, m.
+    pub displacement: Vec<f64>,
+    /// Rigid approach `α`, m (input in approach mode, Lagrange multiplier in force mode).
+    pub approach_m: f64,
+    /// Total force `ΔS Σ p`, N.
+    pub force_n: f64,
+    /// Largest cell pressure, Pa.
+    pub max_pressure_pa: f64,
+    /// Number of cells with `p > 0`.
+    pub cells_in_contact: usize,
+    /// Conjugate-gradient iterations.
+    pub iterations: usize,
+    /// FFT convolutions performed on this grid (about one per iteration plus full `u`
+    /// recomputations).
+    pub convolutions: usize,
+    /// Iterations spent on the coarser levels of the multilevel start (each 2–4× cheaper).
+    pub coarse_iterations: usize,
+    /// Whether `pressure_change < tolerance` was reached.
+    pub converged: bool,
+    /// Final relative pressure change `ε` of the last iteration.
+    pub pressure_change: f64,
+    /// Complementarity residual: `max(|g| on p > 0, max(−g, 0) on p = 0) / max u`.
+    pub residual: f64,
+    /// Contact reaches the first or last column (candidate region too short along `x`).
+    pub touches_edge_x: bool,
+    /// Contact reaches the first or last row (candidate region too narrow along `y`, F-12).
+    pub touches_edge_y: bool,
+}
+
+impl ContactSolution {
+    /// Pressure of cell `(i, j)`, Pa.
+    pub fn pressure_at(&self, i: usize, j: usize) -> f64 {
+        self.pressure[self.grid.index(i, j)]
+    }
+
+    /// Pressure along the central line: the row of cells nearest `y = 0`, for each `x`
+    /// (abscissae `grid.x(i)`), Pa.
+    pub fn central_line(&self) -> &[f64] {
+        let j = self.grid.central_row();
+        &self.pressure[j * self.grid.nx..(j + 1) * self.grid.nx]
+    }
+
+    /// Pressure at the middle of the contact line (cell nearest `(0, 0)`), Pa.
+    pub fn pressure_at_middle(&self) -> f64 {
+        self.pressure_at(self.grid.central_column(), self.grid.central_row())
+    }
+
+    /// Contact area `ΔS · cells_in_contact`, m².
+    pub fn contact_area_m2(&self) -> f64 {
+        self.grid.cell_area() * self.cells_in_contact as f64
+    }
+
+    /// Mean pressure `force / contact area`, Pa (0 without contact).
+    pub fn mean_pressure_pa(&self) -> f64 {
+        if self.cells_in_contact == 0 {
+            0.0
+        } else {
+            self.force_n / self.contact_area_m2()
+        }
+    }
+
+    /// Stress concentration factor `p_max / p̄` (SPEC §2.5 "derived outputs").
+    pub fn concentration_factor(&self) -> f64 {
+        let m = self.mean_pressure_pa();
+        if m > 0.0 {
+            self.max_pressure_pa / m
+        } else {
+            0.0
+        }
+    }
+
+    /// Contact length along `x`: extent of the columns containing contact cells, m.
+    pub fn contact_length_m(&self) -> f64 {
+        let (nx, ny) = (self.grid.nx, self.grid.ny);
+        let cols: Vec<usize> = (0..nx)
+            .filter(|&i| (0..ny).any(|j| self.pressure[j * nx + i] > 0.0))
+            .collect();
+        match (cols.first(), cols.last()) {
+            (Some(a), Some(b)) => (b - a + 1) as f64 * self.grid.dx,
+            _ => 0.0,
+        }
+    }
+
+    /// Largest half-width along `y` over all columns: `max_i (extent of contact rows)/2`, m.
+    pub fn max_half_width_m(&self) -> f64 {
+        let (nx, ny) = (self.grid.nx, self.grid.ny);
+        let mut w = 0usize;
+        for i in 0..nx {
+            let rows = (0..ny).filter(|&j| self.pressure[j * nx + i] > 0.0);
+            let (mut lo, mut hi) = (usize::MAX, 0);
+            for j in rows {
+                lo = lo.min(j);
+                hi = hi.max(j);
+            }
+            if lo != usize::MAX {
+                w = w.max(hi - lo + 1);
+            }
+        }
+        0.5 * w as f64 * self.grid.dy
+    }
+}
+
+#[derive(Clone, Copy)]
+enum Control {
+    Force(f64),
+    Approach(f64),
+}
+
+/// Reusable solver for one grid and material pair: kernel table and its FFT are computed once
+/// in [`BoussinesqSolver::new`]; all iteration buffers are owned, so solves do not allocate
+/// inside the iteration loop.
+#[derive(Debug)]
+pub struct BoussinesqSolver {
+    grid: Grid,
+    options: BoussinesqOptions,
+    table: InfluenceTable,
+    conv: Convolver,
+    p: Vec<f64>,
+    p_old: Vec<f64>,
+    u: Vec<f64>,
+    g: Vec<f64>,
+    t: Vec<f64>,
+    r: Vec<f64>,
+    /// Cells whose pressure was changed by the projection / overlap step (index, amount).
+    corr: Vec<(usize, f64)>,
+    /// Convolutions of the current solve.
+    n_conv: usize,
+    /// Next coarser level of the multilevel start.
+    coarse: Option<Box<Coarse>>,
+    /// Iterations spent on coarser levels in the last solve.
+    last_coarse_iterations: usize,
+}
+
+/// Coarser level: grid coarsened by `fx × fy` cells (1 or 2 each).
+#[derive(Debug)]
+struct Coarse {
+    solver: BoussinesqSolver,
+    fx: usize,
+    fy: usize,
+    gap: Vec<f64>,
+}
+
+impl BoussinesqSolver {
+    /// Solver for `grid` with combined compliance `compliance` (1/Pa, see
+    /// [`super::combined_compliance`]).
+    pub fn new(
+        grid: Grid,
+        compliance: f64,
+        options: BoussinesqOptions,
+    ) -> Result<Self, BoussinesqError> {
+        let grid = Grid::new(grid.nx, grid.ny, grid.dx, grid.dy, grid.x_min, grid.y_min)?;
+        if !(compliance.is_finite() && compliance > 0.0) {
+            return Err(BoussinesqError::InvalidCompliance(compliance));
+        }
+        if !(options.tolerance.is_finite() && options.tolerance > 0.0) {
+            return Err(BoussinesqError::InvalidOption(format!(
+                "tolerance {}",
+                options.tolerance
+            )));
+        }
+        if options.max_iterations == 0 || options.recompute_interval == 0 {
+            return Err(BoussinesqError::InvalidOption(
+                "max_iterations and recompute_interval must be positive".into(),
+            ));
+        }
+        if !(options.coarse_tolerance.is_finite() && options.coarse_tolerance > 0.0) {
+            return Err(BoussinesqError::InvalidOption(format!(
+                "coarse_tolerance {}",
+                options.coarse_tolerance
+            )));
+        }
+        let table = InfluenceTable::new(&grid, compliance);
+        let conv = Convolver::new(&table, options.convolution);
+        let n = grid.len();
+        let mut coarse = None;
+        if options.multilevel {
+            let fx = if grid.nx >= 16 { 2 } else { 1 };
+            let fy = if grid.ny >= 16 { 2 } else { 1 };
+            let (cnx, cny) = (grid.nx.div_ceil(fx), grid.ny.div_ceil(fy));
+            if fx * fy > 1 && cnx * cny >= options.multilevel_min_cells {
+                let cgrid = Grid::new(
+                    cnx,
+                    cny,
+                    grid.dx * fx as f64,
+                    grid.dy * fy as f64,
+                    grid.x_min,
+                    grid.y_min,
+                )?;
+                let copt = BoussinesqOptions {
+                    tolerance: options.coarse_tolerance,
+                    ..options.clone()
+                };
+                coarse = Some(Box::new(Coarse {
+                    solver: BoussinesqSolver::new(cgrid, compliance, copt)?,
+                    fx,
+                    fy,
+                    gap: vec![0.0; cnx * cny],
+                }));
+            }
+        }
+        Ok(Self {
+            grid,
+            options,
+            table,
+            conv,
+            p: vec![0.0; n],
+            p_old: vec![0.0; n],
+            u: vec![0.0; n],
+            g: vec![0.0; n],
+            t: vec![0.0; n],
+            r: vec![0.0; n],
+            corr: Vec::with_capacity(n),
+            n_conv: 0,
+            coarse,
+            last_coarse_iterations: 0,
+        })
+    }
+
+    /// The grid.
+    pub fn grid(&self) -> &Grid {
+        &self.grid
+    }
+
+    /// The options.
+    pub fn options(&self) -> &BoussinesqOptions {
+        &self.options
+    }
+
+    /// The kernel table `f(m·dx, d·dy)`.
+    pub fn influence_table(&self) -> &InfluenceTable {
+        &self.table
+    }
+
+    /// Resolved convolution mode.
+    pub fn convolution_mode(&self) -> ConvolutionMode {
+        self.conv.mode()
+    }
+
+    /// `u = F p` (FFT), e.g. to evaluate displacements of a given pressure field.
+    pub fn displacement(&mut self, p: &[f64], u: &mut [f64]) {
+        self.conv.apply(p, u);
+    }
+
+    /// Force-controlled solve: total force `q` (N) on the initial gap `gap` (m, per cell).
+    pub fn solve_force(&mut self, gap: &[f64], q: f64) -> Result<ContactSolution, BoussinesqError> {
+        self.run(gap, Control::Force(q), None)
+    }
+
+    /// Approach-controlled solve: rigid approach `alpha` (m) on the initial gap `gap`.
+    pub fn solve_approach(
+        &mut self,
+        gap: &[f64],
+        alpha: f64,
+    ) -> Result<ContactSolution, BoussinesqError> {
+        self.run(gap, Control::Approach(alpha), None)
+    }
+
+    /// [`Self::solve_force`] starting from the pressure field `guess` (e.g. the previous time
+    /// step; negative entries are clipped, it is rescaled to the force).
+    pub fn solve_force_with_guess(
+        &mut self,
+        gap: &[f64],
+        q: f64,
+        guess: &[f64],
+    ) -> Result<ContactSolution, BoussinesqError> {
+        self.run(gap, Control::Force(q), Some(guess))
+    }
+
+    /// [`Self::solve_approach`] starting from the pressure field `guess`.
+    pub fn solve_approach_with_guess(
+        &mut self,
+        gap: &[f64],
+        alpha: f64,
+        guess: &[f64],
+    ) -> Result<ContactSolution, BoussinesqError> {
+        self.run(gap, Control::Approach(alpha), Some(guess))
+    }
+
+    fn validate(
+        &self,
+        gap: &[f64],
+        control: Control,
+        guess: Option<&[f64]>,
+    ) -> Result<(), BoussinesqError> {
+        let n = self.grid.len();
+        if gap.len() != n {
+            return Err(BoussinesqError::LengthMismatch {
+                expected: n,
+                got: gap.len(),
+            });
+        }
+        if let Some(i) = gap.iter().position(|v| !v.is_finite()) {
+            return Err(BoussinesqError::NonFiniteGap(i));
+        }
+        match control {
+            Control::Force(q) if !(q.is_finite() && q >= 0.0) => {
+                return Err(BoussinesqError::InvalidLoad(q));
+            }
+            Control::Approach(a) if !a.is_finite() => return Err(BoussinesqError::InvalidLoad(a)),
+            _ => {}
+        }
+        if let Some(g) = guess {
+            if g.len() != n {
+                return Err(BoussinesqError::LengthMismatch {
+                    expected: n,
+                    got: g.len(),
+                });
+            }
+        }
+        Ok(())
+    }
+
+    /// Initial pressure (before force scaling): `guess` if given and non-trivial, else the
+    /// prolonged coarse-level solution (multilevel), else a Hertz-like `√(c − K)` field.
+    /// Returns the iterations spent on coarser levels.
+    fn initial_pressure(
+        &mut self,
+        gap: &[f64],
+        control: Control,
+        guess: Option<&[f64]>,
+    ) -> Result<usize, BoussinesqError> {
+        if let Some(g) = guess {
+            for (p, &v) in self.p.iter_mut().zip(g) {
+                *p = if v.is_finite() && v > 0.0 { v } else { 0.0 };
+            }
+            if self.p.iter().any(|&v| v > 0.0) {
+                return Ok(0);
+            }
+        }
+        if let Some(c) = self.coarse.as_deref_mut() {
+            // Restriction: coarse gap = mean of the fine gaps of its (existing) children.
+            let (nx, ny) = (self.grid.nx, self.grid.ny);
+            let (cnx, cny) = (c.solver.grid.nx, c.solver.grid.ny);
+            for cj in 0..cny {
+                for ci in 0..cnx {
+                    let (mut sum, mut cnt) = (0.0, 0usize);
+                    for j in cj * c.fy..((cj + 1) * c.fy).min(ny) {
+                        for i in ci * c.fx..((ci + 1) * c.fx).min(nx) {
+                            sum += gap[j * nx + i];
+                            cnt += 1;
+                        }
+                    }
+                    c.gap[cj * cnx + ci] = sum / cnt as f64;
+                }
+            }
+            let (it, _, _) = c.solver.solve_in_place(&c.gap, control, None)?;
+            let coarse_it = it + c.solver.last_coarse_iterations;
+            // Prolongation by injection.
+            for j in 0..ny {
+                for i in 0..nx {
+                    self.p[j * nx + i] = c.solver.p[(j / c.fy) * cnx + i / c.fx];
+                }
+            }
+            if self.p.iter().any(|&v| v > 0.0) {
+                return Ok(coarse_it);
+            }
+        }
+        let f00 = self.table.self_coefficient();
+        match control {
+            Control::Approach(alpha) => {
+                // Local (Winkler-like) estimate; the CG fixes shape and level.
+                for (p, &k) in self.p.iter_mut().zip(gap) {
+                    *p = (alpha - k).max(0.0) / (4.0 * f00);
+                }
+            }
+            Control::Force(q) => {
+                let h_min = gap.iter().copied().fold(f64::INFINITY, f64::min);
+                // Interference scale of the load spread over one cell, then a √ profile.
+                let c = 0.25 * f00 * q / self.grid.cell_area();
+                for (p, &k) in self.p.iter_mut().zip(gap) {
+                    *p = (c - (k - h_min)).max(0.0).sqrt();
+                }
+            }
+        }
+        Ok(0)
+    }
+
+    fn run(
+        &mut self,
+        gap: &[f64],
+        control: Control,
+        guess: Option<&[f64]>,
+    ) -> Result<ContactSolution, BoussinesqError> {
+        self.validate(gap, control, guess)?;
+        let (iterations, converged, eps) = self.solve_in_place(gap, control, guess)?;
+        // Final exact displacement, approach, residual.
+        self.conv.apply(&self.p, &mut self.u);
+        self.n_conv += 1;
+        let coarse_iterations = self.last_coarse_iterations;
+        Ok(self.finish(gap, control, iterations, coarse_iterations, converged, eps))
+    }
+
+    /// Polonsky–Keer iteration; leaves the pressure in `self.p` and `u ≈ F p` in `self.u`.
+    /// Returns (iterations, converged, last pressure change).
+    fn solve_in_place(
+        &mut self,
+        gap: &[f64],
+        control: Control,
+        guess: Option<&[f64]>,
+    ) -> Result<(usize, bool, f64), BoussinesqError> {
+        let n = self.grid.len();
+        let ds = self.grid.cell_area();
+        let tol = self.options.tolerance;
+        let f00 = self.table.self_coefficient();
+
+        self.n_conv = 0;
+        self.last_coarse_iterations = self.initial_pressure(gap, control, guess)?;
+        match control {
+            Control::Force(q) => {
+                let sum: f64 = self.p.iter().sum();
+                if q == 0.0 || sum <= 0.0 {
+                    // q = 0 → no pressure; the surfaces just touch at min K.
+                    self.p.fill(0.0);
+                    if q > 0.0 {
+                        // Degenerate guess: load the cell(s) of smallest gap.
+                        let h_min = gap.iter().copied().fold(f64::INFINITY, f64::min);
+                        for (p, &k) in self.p.iter_mut().zip(gap) {
+                            if k == h_min {
+                                *p = 1.0;
+                            }
+                        }
+                        let s = q / (ds * self.p.iter().sum::<f64>());
+                        self.p.iter_mut().for_each(|p| *p *= s);
+                    }
+                } else {
+                    let s = q / (ds * sum);
+                    self.p.iter_mut().for_each(|p| *p *= s);
+                }
+            }
+            Control::Approach(alpha) => {
+                if gap.iter().all(|&k| k - alpha >= 0.0) {
+                    // No interference: no contact.
+                    self.p.fill(0.0);
+                }
+            }
+        }
+        self.conv.apply(&self.p, &mut self.u);
+        self.n_conv += 1;
+
+        let mut g_old = 1.0;
+        let mut delta = 0.0;
+        let mut iterations = 0;
+        let mut converged = false;
+        let mut eps = f64::INFINITY;
+        let mut since_recompute = 0;
+        let is_force = matches!(control, Control::Force(_));
+
+        if self.p.iter().all(|&v| v == 0.0) {
+            // Nothing to iterate (q = 0 or no interference).
+            converged = true;
+            eps = 0.0;
+        }
+
+        while !converged && iterations < self.options.max_iterations {
+            iterations += 1;
+            // Steps 1–2: gap and its mean on the contact set I_c = {p > 0}.
+            let (mut nc, mut gsum) = (0usize, 0.0);
+            for i in 0..n {
+                let gi = self.u[i] + gap[i];
+                self.g[i] = gi;
+                if self.p[i] > 0.0 {
+                    nc += 1;
+                    gsum += gi;
+                }
+            }
+            let gbar = match control {
+                Control::Force(_) => {
+                    if nc > 0 {
+                        gsum / nc as f64
+                    } else {
+                        0.0
+                    }
+                }
+                Control::Approach(alpha) => alpha,
+            };
+            // Steps 3–4: G and the conjugate direction t on I_c.
+            let mut gg = 0.0;
+            for i in 0..n {
+                self.g[i] -= gbar;
+                if self.p[i] > 0.0 {
+                    gg += self.g[i] * self.g[i];
+                }
+            }
+            let beta = if g_old > 0.0 { delta * gg / g_old } else { 0.0 };
+            for i in 0..n {
+                self.t[i] = if self.p[i] > 0.0 {
+                    self.g[i] + beta * self.t[i]
+                } else {
+                    0.0
+                };
+            }
+            g_old = gg;
+            self.p_old.copy_from_slice(&self.p);
+
+            let mut tau = 0.0;
+            if nc > 0 && gg > 0.0 {
+                // Step 5: r = F t (minus its mean on I_c in force mode).
+                self.conv.apply(&self.t, &mut self.r);
+                self.n_conv += 1;
+                let (mut rsum, mut gt, mut rt) = (0.0, 0.0, 0.0);
+                for i in 0..n {
+                    if self.p[i] > 0.0 {
+                        rsum += self.r[i];
+                        gt += self.g[i] * self.t[i];
+                        rt += self.r[i] * self.t[i];
+                    }
+                }
+                if is_force {
+                    let rbar = rsum / nc as f64;
+                    let tsum: f64 = self.t.iter().sum();
+                    rt -= rbar * tsum;
+                }
+                // Step 6: step length.
+                tau = gt / rt;
+                if !tau.is_finite() || rt <= 0.0 {
+                    return Err(BoussinesqError::NumericalBreakdown {
+                        iteration: iterations,
+                    });
+                }
+            }
+
+            // Steps 7–9: update, projection onto p ≥ 0, overlap set I_ol = {p = 0, g < 0}.
+            self.corr.clear();
+            let mut overlap = false;
+            for i in 0..n {
+                if self.p_old[i] > 0.0 {
+                    let v = self.p_old[i] - tau * self.t[i];
+                    if v > 0.0 {
+                        self.p[i] = v;
+                    } else if self.g[i] < 0.0 && tau > 0.0 {
+                        // Clipped but interpenetrating: belongs to I_ol.
+                        overlap = true;
+                        self.p[i] = -tau * self.g[i];
+                        self.corr.push((i, self.p[i] - v));
+                    } else {
+                        self.p[i] = 0.0;
+                        self.corr.push((i, -v));
+                    }
+                } else if self.g[i] < 0.0 {
+                    overlap = true;
+                    let v = -tau * self.g[i];
+                    let v = if tau > 0.0 {
+                        v
+                    } else {
+                        // First iteration with an empty contact set (approach mode): local
+                        // estimate of the pressure needed to close the interference.
+                        -self.g[i] / (4.0 * f00)
+                    };
+                    self.p[i] = v;
+                    self.corr.push((i, v));
+                }
+            }
+            delta = if overlap { 0.0 } else { 1.0 };
+
+            // Step 10: force balance.
+            let mut scale = 1.0;
+            if let Control::Force(q) = control {
+                let sum: f64 = self.p.iter().sum();
+                scale = q / (ds * sum);
+                if !scale.is_finite() {
+                    return Err(BoussinesqError::NumericalBreakdown {
+                        iteration: iterations,
+                    });
+                }
+                if scale != 1.0 {
+                    self.p.iter_mut().for_each(|p| *p *= scale);
+                }
+            }
+
+            // Displacement update u(p): linear part, sparse corrections or full FFT.
+            since_recompute += 1;
+            if since_recompute >= self.options.recompute_interval
+                || self.corr.len() > self.options.sparse_update_max_cells
+                || tau == 0.0
+            {
+                self.conv.apply(&self.p, &mut self.u);
+                self.n_conv += 1;
+                since_recompute = 0;
+            } else {
+                for i in 0..n {
+                    self.u[i] = scale * (self.u[i] - tau * self.r[i]);
+                }
+                let nx = self.grid.nx;
+                for &(k, v) in &self.corr {
+                    accumulate_cell(&self.table, k % nx, k / nx, scale * v, &mut self.u);
+                }
+            }
+
+            // Step 11: convergence on the relative pressure change.
+            let (mut dsum, mut psum) = (0.0, 0.0);
+            for i in 0..n {
+                dsum += (self.p[i] - self.p_old[i]).abs();
+                psum += self.p[i];
+            }
+            eps = if psum > 0.0 { dsum / psum } else { 0.0 };
+            if !eps.is_finite() {
+                return Err(BoussinesqError::NumericalBreakdown {
+                    iteration: iterations,
+                });
+            }
+            if eps < tol {
+                converged = true;
+            }
+        }
+
+        Ok((iterations, converged, eps))
+    }
+
+    fn finish(
+        &self,
+        gap: &[f64],
+        control: Control,
+        iterations: usize,
+        coarse_iterations: usize,
+        converged: bool,
+        eps: f64,
+    ) -> ContactSolution {
+        let grid = self.grid;
+        let (nx, ny) = (grid.nx, grid.ny);
+        let mut nc = 0usize;
+        let mut psum = 0.0;
+        let mut pmax = 0.0_f64;
+        let mut gsum = 0.0;
+        for i in 0..grid.len() {
+            let p = self.p[i];
+            if p > 0.0 {
+                nc += 1;
+                psum += p;
+                pmax = pmax.max(p);
+                gsum += gap[i] + self.u[i];
+            }
+        }
+        let alpha = match control {
+            Control::Approach(a) => a,
+            Control::Force(_) if nc > 0 => gsum / nc as f64,
+            Control::Force(_) => gap.iter().copied().fold(f64::INFINITY, f64::min),
+        };
+        let umax = self.u.iter().copied().fold(0.0_f64, f64::max);
+        let mut res = 0.0_f64;
+        for i in 0..grid.len() {
+            let g = gap[i] - alpha + self.u[i];
+            res = res.max(if self.p[i] > 0.0 {
+                g.abs()
+            } else {
+                (-g).max(0.0)
+            });
+        }
+        let residual = if umax > 0.0 { res / umax } else { res };
+        let in_contact = |i: usize, j: usize| self.p[j * nx + i] > 0.0;
+        let touches_edge_x = (0..ny).any(|j| in_contact(0, j) || in_contact(nx - 1, j));
+        let touches_edge_y = (0..nx).any(|i| in_contact(i, 0) || in_contact(i, ny - 1));
+        ContactSolution {
+            grid,
+            pressure: self.p.clone(),
+            displacement: self.u.clone(),
+            approach_m: alpha,
+            force_n: grid.cell_area() * psum,
+            max_pressure_pa: pmax,
+            cells_in_contact: nc,
+            iterations,
+            convolutions: self.n_conv,
+            coarse_iterations,
+            converged,
+            pressure_change: eps,
+            residual,
+            touches_edge_x,
+            touches_edge_y,
+        }
+    }
+}

@@ -1,0 +1,15 @@
+//! Elastic contact mechanics for roller bearings (SPEC §2, seed 004, seed 000 §2.2).
+//!
+//! * [`hertz`] — Hertz line, point and elliptical contact (SPEC §2.3).
+//! * [`slices`] — slice force–deflection laws for a roller cut into slices (SPEC §2.1).
+//! * [`damping`] — contact damping with the cubic STEP ramp (SPEC §2.2, §3.4).
+//! * [`boussinesq`] — non-Hertzian pressure solver (modified Hartnett, seed 004 / SPEC §2.5),
+//!   FFT-accelerated constrained conjugate gradient with a dense reference.
+//! * [`roller_raceway`] — a roller of a bearing model on its raceway, solved by any of the
+//!   three methods and reported alike.
+
+pub mod boussinesq;
+pub mod damping;
+pub mod hertz;
+pub mod roller_raceway;
+pub mod slices;

@@ -1,0 +1,304 @@
+//! Inverse slice problems (SPEC §2.1): approach for a given force at fixed tilt (1-D) and
+//! approach + tilt for a given force and moment (2-D).
+//!
+//! The 2-D problem is the stationarity condition of the convex potential
+//! `Π(δ0, θ) = Σ U_s(δ_s) − Q δ0 − (M/L_h) θ` with `θ = L_h tan φ` (`L_h = max |x_s|`),
+//! `U_s' = Q_s`: its gradient is the residual `(Q(δ0,φ) − Q, (M(δ0,φ) − M)/L_h)` and its Hessian
+//! the (scaled) Jacobian `Σ k_s' [1 ξ; ξ ξ²]`, `ξ = x_s/L_h`, which is positive semi-definite.
+//! Newton steps are therefore descent directions of `Π`; near-singular Hessians (few loaded
+//! slices) are regularised Levenberg–Marquardt style and every step is safeguarded by
+//! backtracking (accepted when `Π` decreases sufficiently or the residual norm decreases).
+
+use super::SliceError;
+use super::roller::{SliceLoad, SlicedRoller};
+
+/// Options of the inverse solvers.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SolveOptions {
+    /// Relative tolerance on the residual: `|ΔQ| ≤ tol·Q` and `|ΔM|/L_h ≤ tol·Q`
+    /// (`L_h = max |x_s|`). Default `1e-12`.
+    pub tolerance: f64,
+    /// Maximum number of Newton iterations. Default 100.
+    pub max_iterations: usize,
+}
+
+impl Default for SolveOptions {
+    fn default() -> Self {
+        Self {
+            tolerance: 1e-12,
+            max_iterations: 100,
+        }
+    }
+}
+
+/// Solution of an inverse slice problem.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SliceSolution {
+    /// Approach `δ0` (m).
+    pub approach: f64,
+    /// Tilt `φ` (rad).
+    pub tilt: f64,
+    /// Resultants and Jacobian at the solution (with respect to `(δ0, φ)`).
+    pub load: SliceLoad,
+    /// Newton iterations used.
+    pub iterations: usize,
+}
+
+impl SlicedRoller {
+    fn check_tilt(tilt: f64) -> Result<f64, SliceError> {
+        if tilt.is_finite() && tilt.abs() < std::f64::consts::FRAC_PI_2 {
+            Ok(tilt.tan())
+        } else {
+            Err(SliceError::InvalidInput(
+                "tilt must be finite with |φ| < π/2",
+            ))
+        }
+    }
+
+    /// Approach `δ0` (m) at which the total force equals `force` (N) for a fixed tilt `φ`
+    /// (rad). `Q(δ0)` is continuous and non-decreasing (strictly increasing once any slice is
+    /// loaded), so the root is bracketed by `[min_s(z_s − x_s tan φ), max_s(z_s − x_s tan φ) +
+    /// (Q/Σk_s)^{1/n}]` and found by Newton steps from the upper end, with bisection whenever a
+    /// step leaves the bracket.
+    ///
+    /// `force ≤ 0` returns the zero-force solution: the approach at which the first slice
+    /// touches (all slices unloaded).
+    pub fn solve_approach(
+        &self,
+        force: f64,
+        tilt: f64,
+        options: &SolveOptions,
+    ) -> Result<SliceSolution, SliceError> {
+        if force.is_nan() {
+            return Err(SliceError::InvalidInput("force is NaN"));
+        }
+        let t = Self::check_tilt(tilt)?;
+        let (approach, iterations) = self.solve_approach_tan(force, t, options)?;
+        Ok(SliceSolution {
+            approach,
+            tilt,
+            load: self.evaluate_totals(approach, tilt),
+            iterations,
+        })
+    }
+
+    /// 1-D solve in terms of `t = tan φ`. Returns `(δ0, iterations)`.
+    pub(crate) fn solve_approach_tan(
+        &self,
+        force: f64,
+        t: f64,
+        options: &SolveOptions,
+    ) -> Result<(f64, usize), SliceError> {
+        let x = self.positions();
+        let z = self.drops();
+        let mut touch = f64::INFINITY;
+        let mut deepest = f64::NEG_INFINITY;
+        for i in 0..x.len() {
+            let o = z[i] - x[i] * t;
+            touch = touch.min(o);
+            deepest = deepest.max(o);
+        }
+        if force <= 0.0 {
+            return Ok((touch, 0));
+        }
+        if !force.is_finite() {
+            return Err(SliceError::InvalidInput("force must be finite"));
+        }
+        let ksum: f64 = self.coefficients().iter().sum();
+        let n = self.exponent();
+        let mut lo = touch;
+        // at δ0 = hi every slice has δ_s ≥ (Q/Σk)^{1/n}, hence Q(hi) ≥ Q
+        let mut hi = deepest + (force / ksum).powf(1.0 / n);
+        let mut d = hi;
+        let tol = options.tolerance.max(0.0) * force;
+        for it in 1..=options.max_iterations.max(1) {
+            let (load, _) = self.eval_tan::<false, false>(d, t, &mut []);
+            let f = load.force - force;
+            if f.abs() <= tol {
+                return Ok((d, it));
+            }
+            if f > 0.0 {
+                hi = d;
+            } else {
+                lo = d;
+            }
+            let kq = load.dforce_dapproach;
+            let newton = if kq > 0.0 { d - f / kq } else { f64::NAN };
+            let next = if newton > lo && newton < hi {
+                newton
+            } else {
+                0.5 * (lo + hi)
+            };
+            let width_tol = 4.0 * f64::EPSILON * lo.abs().max(hi.abs());
+            if next == d || hi - lo <= width_tol {
+                // bracket at machine resolution: the best representable approach
+                return Ok((d, it));
+            }
+            d = next;
+        }
+        let (load, _) = self.eval_tan::<false, false>(d, t, &mut []);
+        Err(SliceError::NoConvergence {
+            iterations: options.max_iterations,
+            residual: ((load.force - force) / force).abs(),
+        })
+    }
+
+    /// Approach `δ0` (m) and tilt `φ` (rad) at which the slices carry force `force` (N) and
+    /// moment `moment` (N·m, `M = Σ Q_s x_s`, see the sign convention of [`SlicedRoller`]).
+    ///
+    /// 2-D Newton on the analytic Jacobian, started from the uniform-load solution (`φ = 0`,
+    /// `δ0` from [`SlicedRoller::solve_approach`]); Levenberg–Marquardt regularisation when the
+    /// Jacobian is near-singular (only part of the roller loaded), backtracking on the potential
+    /// / residual norm. With `M = 0` and a symmetric profile the start point is already the
+    /// solution and `φ = 0` exactly.
+    ///
+    /// Errors: `force ≤ 0` with `moment ≠ 0` ([`SliceError::MomentWithoutForce`]; `force ≤ 0`
+    /// with `moment = 0` returns the zero-force solution), eccentricity `M/Q` outside the span
+    /// of the slice mid-points ([`SliceError::MomentOutOfRange`]), no convergence.
+    pub fn solve_approach_tilt(
+        &self,
+        force: f64,
+        moment: f64,
+        options: &SolveOptions,
+    ) -> Result<SliceSolution, SliceError> {
+        if force.is_nan() || force == f64::INFINITY || !moment.is_finite() {
+            return Err(SliceError::InvalidInput("force and moment must be finite"));
+        }
+        if force <= 0.0 {
+            if moment != 0.0 {
+                return Err(SliceError::MomentWithoutForce);
+            }
+            return self.solve_approach(0.0, 0.0, options);
+        }
+        let (x_min, x_max) = self.span();
+        let ecc = moment / force;
+        let ls = self.x_scale;
+        if x_min == x_max {
+            // a single slice position: M = Q x is the only reachable moment, tilt is free
+            if (ecc - x_min).abs() <= options.tolerance.max(1e-15) * ls {
+                return self.solve_approach(force, 0.0, options);
+            }
+            return Err(SliceError::MomentOutOfRange {
+                eccentricity: ecc,
+                x_min,
+                x_max,
+            });
+        }
+        if !(ecc > x_min && ecc < x_max) {
+            return Err(SliceError::MomentOutOfRange {
+                eccentricity: ecc,
+                x_min,
+                x_max,
+            });
+        }
+        let tol = options.tolerance.max(0.0);
+        let m_scaled = moment / ls;
+        // unknowns u = (δ0, θ), θ = L_h tan φ
+        let (mut d0, mut iterations) = self.solve_approach_tan(force, 0.0, options)?;
+        let mut theta = 0.0_f64;
+        let mut lambda = 0.0_f64;
+
+        let residual =
+            |load: &SliceLoad| -> (f64, f64) { (load.force - force, load.moment / ls - m_scaled) };
+        let potential = |energy: f64, d0: f64, theta: f64| energy - force * d0 - m_scaled * theta;
+
+        let max_it = options.max_iterations.max(1);
+        let mut it = 0;
+        while it < max_it {
+            it += 1;
+            let (load, energy) = self.eval_tan::<false, true>(d0, theta / ls, &mut []);
+            let (r1, r2) = residual(&load);
+            let res = r1.abs().max(r2.abs()) / force;
+            if res <= tol {
+                return Ok(self.finish(d0, theta, iterations + it - 1));
+            }
+            let h11 = load.dforce_dapproach;
+            let h12 = load.dforce_dtilt / ls;
+            let h22 = load.dmoment_dtilt / (ls * ls);
+            if !(h11 > 0.0) {
+                // nothing loaded (cannot happen after an accepted step from a loaded state,
+                // but be safe): reload at the current tilt
+                let (d, k) = self.solve_approach_tan(force, theta / ls, options)?;
+                d0 = d;
+                iterations += k;
+                continue;
+            }
+            let pi0 = potential(energy, d0, theta);
+            let norm0 = r1.hypot(r2);
+            let floor = 1e-12 * (h11 + h22);
+            let mut accepted = false;
+            for _ in 0..40 {
+                let a11 = h11 + lambda * h11.max(floor);
+                let a22 = h22 + lambda * h22.max(floor);
+                let det = a11 * a22 - h12 * h12;
+                if !(det > 1e-13 * a11 * a22.max(floor)) {
+                    lambda = (10.0 * lambda).max(1e-10);
+                    continue;
+                }
+                let s1 = -(a22 * r1 - h12 * r2) / det;
+                let s2 = -(a11 * r2 - h12 * r1) / det;
+                let slope = r1 * s1 + r2 * s2; // < 0: descent direction of Π
+                let mut alpha = 1.0_f64;
+                for _ in 0..30 {
+                    let dt = d0 + alpha * s1;
+                    let tt = theta + alpha * s2;
+                    let (lt, et) = self.eval_tan::<false, true>(dt, tt / ls, &mut []);
+                    let (q1, q2) = residual(&lt);
+                    let pit = potential(et, dt, tt);
+                    if pit <= pi0 + 1e-4 * alpha * slope
+                        || q1.hypot(q2) <= (1.0 - 1e-4 * alpha) * norm0
+                    {
+                        d0 = dt;
+                        theta = tt;
+                        accepted = true;
+                        break;
+                    }
+                    alpha *= 0.5;
+                }
+                if accepted {
+                    if alpha == 1.0 {
+                        lambda *= 0.1;
+                        if lambda < 1e-12 {
+                            lambda = 0.0;
+                        }
+                    }
+                    break;
+                }
+                lambda = (10.0 * lambda).max(1e-6);
+                if lambda > 1e12 {
+                    break;
+                }
+            }
+            if !accepted {
+                // no representable improvement: accept if already close to the tolerance
+                if res <= tol.max(1e-9) {
+                    return Ok(self.finish(d0, theta, iterations + it));
+                }
+                return Err(SliceError::NoConvergence {
+                    iterations: iterations + it,
+                    residual: res,
+                });
+            }
+        }
+        let (load, _) = self.eval_tan::<false, false>(d0, theta / ls, &mut []);
+        let (r1, r2) = residual(&load);
+        let res = r1.abs().max(r2.abs()) / force;
+        if res <= tol {
+            return Ok(self.finish(d0, theta, iterations + it));
+        }
+        Err(SliceError::NoConvergence {
+            iterations: iterations + it,
+            residual: res,
+        })
+    }
+
+    fn finish(&self, d0: f64, theta: f64, iterations: usize) -> SliceSolution {
+        let tilt = (theta / self.x_scale).atan();
+        SliceSolution {
+            approach: d0,
+            tilt,
+            load: self.evaluate_totals(d0, tilt),
+            iterations,
+        }
+    }
+}

@@ -1,0 +1,24 @@
+//! Bearing geometry: rings, raceways, ribs, rollers and their profiles, cage (SPEC §1).
+//!
+//! Everything here is in SI units and free of file formats: the `rolldyn-model` crate reads
+//! model files and builds these types; analyses consume them.
+
+mod bearing;
+mod cage;
+mod error;
+mod mass;
+mod material;
+mod model;
+pub mod profile;
+mod ring;
+mod roller;
+
+pub use bearing::{Clearance, CylindricalRollerBearing, Misalignment};
+pub use cage::{Cage, CageGuidance};
+pub use error::GeometryError;
+pub use mass::MassProperties;
+pub use material::Material;
+pub use model::{BearingModel, RollerRacewayPair};
+pub use profile::{Chamfer, Profile, ProfileShape};
+pub use ring::{GuidingLand, Rib, RibFace, RibSide, Ring};
+pub use roller::{EndFace, Roller, SliceStack};

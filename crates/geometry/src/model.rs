@@ -1,0 +1,73 @@
+//! What a model file describes: a whole bearing, or a single roller on a raceway.
+
+use crate::bearing::{CylindricalRollerBearing, Misalignment};
+use crate::error::GeometryError;
+use crate::ring::Ring;
+use crate::roller::Roller;
+
+/// A roller on one raceway, for contact studies such as seed 004 (bearing 32206 roller on its
+/// inner raceway), where the rest of the bearing is irrelevant or unknown.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RollerRacewayPair {
+    pub name: String,
+    pub roller: Roller,
+    pub raceway: Ring,
+    /// True for an inner (convex) raceway, false for an outer (concave) one.
+    pub raceway_is_inner: bool,
+    pub misalignment: Misalignment,
+}
+
+/// Everything a model file can describe.
+#[derive(Debug, Clone, PartialEq)]
+pub enum BearingModel {
+    Cylindrical(CylindricalRollerBearing),
+    RollerRaceway(RollerRacewayPair),
+}
+
+impl BearingModel {
+    pub fn name(&self) -> &str {
+        match self {
+            Self::Cylindrical(b) => &b.name,
+            Self::RollerRaceway(p) => &p.name,
+        }
+    }
+
+    pub fn roller(&self) -> &Roller {
+        match self {
+            Self::Cylindrical(b) => &b.roller,
+            Self::RollerRaceway(p) => &p.roller,
+        }
+    }
+
+    pub fn misalignment(&self) -> Misalignment {
+        match self {
+            Self::Cylindrical(b) => b.misalignment,
+            Self::RollerRaceway(p) => p.misalignment,
+        }
+    }
+
+    /// The raceway a roller contact is evaluated on, and whether it is an inner raceway.
+    /// A bearing offers both (`inner` chooses); a pair offers its only raceway.
+    pub fn raceway(&self, inner: bool) -> (&Ring, bool) {
+        match self {
+            Self::Cylindrical(b) if inner => (&b.inner_ring, true),
+            Self::Cylindrical(b) => (&b.outer_ring, false),
+            Self::RollerRaceway(p) => (&p.raceway, p.raceway_is_inner),
+        }
+    }
+
+    pub fn validate(&self) -> Result<(), GeometryError> {
+        match self {
+            Self::Cylindrical(b) => b.validate(),
+            Self::RollerRaceway(p) => {
+                let key = if p.raceway_is_inner {
+                    "inner_ring"
+                } else {
+                    "outer_ring"
+                };
+                p.raceway.validate(key, p.raceway_is_inner)?;
+                p.roller.validate()
+            }
+        }
+    }
+}

@@ -1,0 +1,230 @@
+//! Muraki's simplified thermal visco-elastic (Maxwell–Eyring) traction theory, seed 000 (1.4)–(1.9),
+//! SPEC §4.5.
+//!
+//! μ_hd = τ0 S / p̄ (1.6), S = τ̄/τ0 (1.7) from (1.8) with
+//! σ_i = η_Ni v/(τ0 h), D_i = η_Ni u/(Γ b), Φ = (β0 + κ p̄) ζ τ0² h / η_Ni,
+//! ζ = 0.97 b^½/(π K_m ρ_m c_m u)^½ + h/(12 K_f) (1.9), η_Ni = η_N0 exp(ᾱ p̄) (1.5).
+//!
+//! ### Small shear rates and the elastic limit (F-34)
+//! (1.8) uses L = ln(2σ), the large-σ form of sinh⁻¹σ, and is meaningless for σ ≲ 0.5 (L < 0).
+//! Its isothermal limit S = L − D L²/(4σ) is exactly the mean stress of a fluid element that is
+//! loaded elastically (slope Γγ̇) until it reaches the Eyring plateau τ0 L and then flows; this
+//! holds while the plateau is reached inside the transit time (D L < 2σ). When D L ≥ 2σ the element
+//! never yields and the mean stress is the linear-elastic one, S = σ/D (μ = Γ s b/(h p̄)); the two
+//! branches touch with equal value and slope at D L = 2σ. Default [`SmallShearRate::Asinh`]:
+//! * L = sinh⁻¹σ (identical to ln 2σ to O(σ⁻²), exact Eyring law for all σ, → 0 as σ → 0);
+//! * D L < 2σ: cancellation-free form of (1.8),
+//!   S = L[σ + (2σ + Φσ² − D L)/(r + 1)] / (σ(a + r)), a = 1 + Φσ, r = √(a² − DΦL)
+//!   (the square-root argument is > 1 + Φ²σ² > 0 in this branch, so it never goes negative);
+//! * D L ≥ 2σ: S = 2σ / (D (1 + √(1 + Φ²σ²))) — the elastic branch, equal to the thermal (1.8) at
+//!   the touching point so that S is continuous for every Φ (→ σ/D when Φ → 0).
+//!
+//! The literal SPEC F-34 proposal (linear branch σ/D below σ_min, min(linear, Muraki) above, STEP
+//! blend over [σ_min, 2σ_min], L = ln 2σ) is available as [`SmallShearRate::SpecLinearBranch`]; for
+//! D ≪ 1 (the usual case, e.g. PAO1: D ≈ 5×10⁻³) it produces a large spurious spike μ ≈ Γ s b/(h p̄)
+//! just below σ_min (see the test `spec_f34_literal_branch_spikes`), which is why it is not the default.
+
+use crate::lubricant::SolidThermal;
+use crate::step::step;
+use crate::viscosity::{PiezoViscosity, viscosity_at_pressure};
+
+/// How (1.8) is continued to small dimensionless shear rates (F-34). See the module docs.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub enum SmallShearRate {
+    /// L = sinh⁻¹σ with the exact elastic branch for D·L ≥ 2σ. Default.
+    #[default]
+    Asinh,
+    /// SPEC F-34 literal proposal with L = ln 2σ and the threshold σ_min (SPEC default 1).
+    SpecLinearBranch {
+        /// σ_min
+        sigma_min: f64,
+    },
+}
+
+/// Rheology switch of the Muraki model.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub enum Rheology {
+    /// Full thermal visco-elastic model (1.8). Default.
+    #[default]
+    ViscoElastic,
+    /// Self-heating switched off (Φ = 0): "friction curve without self-heating" (seed 000 Fig. 2.13
+    /// curve 4), S = L − D L²/(4σ).
+    Isothermal,
+    /// Elastic (first) term of (1.4) only, as seed 000 uses for NVI 65: μ_hd = Γ s b/(h p̄), capped at
+    /// `cap` (not in the seeds: the linear law is unbounded; the cap keeps a dynamics run finite
+    /// during transients — default 0.1, the large-slip boundary value of (2.10)).
+    LinearElastic {
+        /// upper bound of μ_hd
+        cap: f64,
+    },
+}
+
+/// Settings of the Muraki model.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct MurakiSettings {
+    /// rheology switch
+    pub rheology: Rheology,
+    /// small-σ continuation (F-34)
+    pub small_shear_rate: SmallShearRate,
+    /// solids' K_m, ρ_m, c_m (default steel with ρ_m = 7830 kg/m³, F-25)
+    pub solid: SolidThermal,
+    /// pressure–viscosity law for η_Ni (default Barus, as (1.5))
+    pub piezo: PiezoViscosity,
+}
+
+/// Inputs of [`muraki`] (SI).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MurakiInputs {
+    /// mean Hertz pressure p̄, Pa
+    pub mean_pressure: f64,
+    /// half-width b in the rolling direction, m
+    pub half_width: f64,
+    /// film thickness h, m (> 0)
+    pub film: f64,
+    /// rolling speed u, m/s (> 0)
+    pub rolling_speed: f64,
+    /// sliding speed |v|, m/s (≥ 0)
+    pub sliding_speed: f64,
+    /// η_N0 at the oil temperature, Pa·s
+    pub eta0: f64,
+    /// ᾱ, 1/Pa
+    pub alpha: f64,
+    /// Roelands Z (only with `PiezoViscosity::Roelands`; `None` → from ᾱ)
+    pub roelands_z: Option<f64>,
+    /// Γ, Pa
+    pub shear_modulus: f64,
+    /// τ0, Pa
+    pub tau0: f64,
+    /// β0, 1/K
+    pub beta0: f64,
+    /// κ, 1/(K·Pa)
+    pub kappa: f64,
+    /// K_f, W/(m·K)
+    pub k_f: f64,
+}
+
+/// Output of [`muraki`].
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct MurakiOutput {
+    /// μ_hd ≥ 0
+    pub mu: f64,
+    /// S = τ̄/τ0
+    pub s: f64,
+    /// σ_i
+    pub sigma: f64,
+    /// D_i
+    pub deborah: f64,
+    /// Φ
+    pub phi: f64,
+    /// η_Ni, Pa·s
+    pub eta_ni: f64,
+    /// the elastic branch (D L ≥ 2σ) was used
+    pub elastic_limited: bool,
+    /// F-34: negative square-root argument met (literal mode only)
+    pub sqrt_negative: bool,
+    /// F-34: σ below the validity of ln 2σ (literal mode, σ < 0.5)
+    pub sigma_invalid: bool,
+}
+
+/// Cancellation-free (1.8) with a given L. Returns (S, sqrt_negative).
+#[inline]
+fn s_thermal(sigma: f64, d: f64, phi: f64, l: f64) -> (f64, bool) {
+    let a = 1.0 + phi * sigma;
+    let arg = a * a - d * phi * l;
+    let neg = arg < 0.0;
+    let r = arg.max(0.0).sqrt();
+    let s =
+        (l / sigma) * (sigma + (2.0 * sigma + phi * sigma * sigma - d * l) / (r + 1.0)) / (a + r);
+    (s, neg)
+}
+
+/// Dimensionless mean shear stress S(σ, D, Φ) with the selected small-σ continuation.
+/// Returns (S, elastic_limited, sqrt_negative, sigma_invalid).
+#[inline]
+pub fn dimensionless_stress(
+    sigma: f64,
+    d: f64,
+    phi: f64,
+    mode: SmallShearRate,
+) -> (f64, bool, bool, bool) {
+    if sigma <= 0.0 {
+        return (0.0, false, false, false);
+    }
+    match mode {
+        SmallShearRate::Asinh => {
+            let l = sigma.asinh();
+            if d * l >= 2.0 * sigma {
+                let x = phi * sigma;
+                (
+                    2.0 * sigma / (d * (1.0 + (1.0 + x * x).sqrt())),
+                    true,
+                    false,
+                    false,
+                )
+            } else {
+                let (s, neg) = s_thermal(sigma, d, phi, l);
+                (s, false, neg, false)
+            }
+        }
+        SmallShearRate::SpecLinearBranch { sigma_min } => {
+            let lin = sigma / d;
+            let invalid = sigma < 0.5;
+            if sigma < sigma_min {
+                return (lin, true, false, invalid);
+            }
+            let (sm, neg) = s_thermal(sigma, d, phi, (2.0 * sigma).ln());
+            let m = lin.min(sm);
+            let s = if sigma < 2.0 * sigma_min {
+                step(sigma, sigma_min, lin, 2.0 * sigma_min, m)
+            } else {
+                m
+            };
+            (s, lin <= sm, neg, invalid)
+        }
+    }
+}
+
+/// Muraki hydrodynamic traction coefficient μ_hd ≥ 0 (magnitude; the caller applies the sign).
+#[inline]
+pub fn muraki(inp: &MurakiInputs, settings: &MurakiSettings) -> MurakiOutput {
+    let p = inp.mean_pressure;
+    let (h, u, v, b) = (
+        inp.film,
+        inp.rolling_speed,
+        inp.sliding_speed,
+        inp.half_width,
+    );
+    if let Rheology::LinearElastic { cap } = settings.rheology {
+        // first term of (1.4) only: τ̄ = Γ v b/(h u)  ⇒  μ = Γ s b/(h p̄)
+        let mu = (inp.shear_modulus * v * b / (h * u * p)).min(cap);
+        return MurakiOutput {
+            mu,
+            elastic_limited: true,
+            ..Default::default()
+        };
+    }
+    let eta_ni = viscosity_at_pressure(settings.piezo, inp.eta0, inp.alpha, inp.roelands_z, p);
+    let tau0 = inp.tau0;
+    let sigma = eta_ni * v / (tau0 * h);
+    let d = eta_ni * u / (inp.shear_modulus * b);
+    let phi = match settings.rheology {
+        Rheology::Isothermal => 0.0,
+        _ => {
+            let zeta = 0.97 * b.sqrt() / (std::f64::consts::PI * settings.solid.krc() * u).sqrt()
+                + h / (12.0 * inp.k_f);
+            (inp.beta0 + inp.kappa * p) * zeta * tau0 * tau0 * h / eta_ni
+        }
+    };
+    let (s, el, neg, inv) = dimensionless_stress(sigma, d, phi, settings.small_shear_rate);
+    MurakiOutput {
+        mu: (tau0 * s / p).max(0.0),
+        s,
+        sigma,
+        deborah: d,
+        phi,
+        eta_ni,
+        elastic_limited: el,
+        sqrt_negative: neg,
+        sigma_invalid: inv,
+    }
+}

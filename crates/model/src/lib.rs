@@ -1,0 +1,93 @@
+//! Bearing model files (TOML) for rolldyn: schema, unit conversion at the boundary and
+//! validation with errors that name the file, line, key and reason.
+//!
+//! ```
+//! let model = rolldyn_model::parse(rolldyn_model::DEFAULT_MODEL, "2002834.toml").unwrap();
+//! assert_eq!(model.name(), "2002834");
+//! ```
+
+mod convert;
+mod error;
+pub mod schema;
+
+pub use convert::DEFAULT_SLICES;
+pub use error::ModelError;
+pub use rolldyn_geometry::BearingModel;
+
+use std::path::Path;
+use toml::de::DeTable;
+
+/// The embedded default model: cylindrical roller bearing 2002834 (SPEC §1.6 a, F-02).
+pub const DEFAULT_MODEL: &str = include_str!("../../../examples/2002834.toml");
+
+/// Reads and validates a model file.
+pub fn load(path: &Path) -> Result<BearingModel, ModelError> {
+    let file = path.display().to_string();
+    let text = std::fs::read_to_string(path).map_err(|e| ModelError {
+        file: file.clone(),
+        position: None,
+        key: String::new(),
+        reason: format!("cannot read the file: {e}"),
+    })?;
+    parse(&text, &file)
+}
+
+/// Parses and validates model text; `file` names it in errors.
+pub fn parse(text: &str, file: &str) -> Result<BearingModel, ModelError> {
+    let at = |key: &str, span: Option<std::ops::Range<usize>>, reason: String| ModelError {
+        file: file.to_string(),
+        position: span.map(|s| error::line_column(text, s.start)),
+        key: key.to_string(),
+        reason,
+    };
+    let document = DeTable::parse(text).map_err(|e| at("", e.span(), syntax_message(&e)))?;
+    let deserializer = toml::de::Deserializer::from(document.clone());
+    let schema: schema::ModelFile =
+        serde_path_to_error::deserialize(deserializer).map_err(|e| {
+            let key = path_key(e.path());
+            let span = error::span_of(&document, &key).or_else(|| e.inner().span());
+            at(&key, span, serde_message(e.inner()))
+        })?;
+    let locate = |e: rolldyn_geometry::GeometryError| {
+        let span = error::span_of(&document, &e.key);
+        at(&e.key, span, e.reason)
+    };
+    let model = convert::build(&schema).map_err(locate)?;
+    model.validate().map_err(locate)?;
+    Ok(model)
+}
+
+fn syntax_message(e: &toml::de::Error) -> String {
+    format!("TOML syntax error: {}", e.message().trim())
+}
+
+/// The message of a deserialisation error without toml's multi-line snippet.
+fn serde_message(e: &toml::de::Error) -> String {
+    let message = e.message().trim().replace('\n', " ");
+    if message.starts_with("missing field") {
+        message.replace("missing field", "missing key")
+    } else if message.starts_with("unknown field") {
+        message.replace("unknown field", "unknown key")
+    } else {
+        message
+    }
+}
+
+/// Dotted key path from serde_path_to_error, e.g. `inner_ring.ribs[0].diameter`.
+fn path_key(path: &serde_path_to_error::Path) -> String {
+    use serde_path_to_error::Segment;
+    let mut key = String::new();
+    for segment in path.iter() {
+        match segment {
+            Segment::Map { key: k } => {
+                if !key.is_empty() {
+                    key.push('.');
+                }
+                key.push_str(k);
+            }
+            Segment::Seq { index } => key.push_str(&format!("[{index}]")),
+            Segment::Enum { .. } | Segment::Unknown => {}
+        }
+    }
+    key
+}

@@ -1,0 +1,216 @@
+//! The model-file schema (TOML), in engineering units. Documented in `docs/model-format.md`;
+//! every struct rejects unknown keys. Converted once into `rolldyn_geometry` types (SI).
+
+use rolldyn_units::{
+    Angle, Density, Dimensionless, Force, Inertia, Length, Mass, PerArea, Pressure, Quantity,
+};
+use serde::Deserialize;
+use std::collections::BTreeMap;
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ModelFile {
+    pub bearing: BearingSection,
+    #[serde(default)]
+    pub materials: BTreeMap<String, MaterialSection>,
+    pub inner_ring: Option<RingSection>,
+    pub outer_ring: Option<RingSection>,
+    pub roller: RollerSection,
+    pub cage: Option<CageSection>,
+    pub clearance: Option<ClearanceSection>,
+    pub misalignment: Option<MisalignmentSection>,
+}
+
+#[derive(Debug, Deserialize, Clone, Copy, PartialEq, Eq)]
+#[serde(rename_all = "kebab-case")]
+pub enum ModelKind {
+    /// A complete single-row cylindrical roller bearing.
+    Cylindrical,
+    /// One roller on one raceway (contact studies).
+    RollerRaceway,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BearingSection {
+    pub name: String,
+    pub kind: ModelKind,
+    pub description: Option<String>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct MaterialSection {
+    pub youngs_modulus: Quantity<Pressure>,
+    pub poisson_ratio: Quantity<Dimensionless>,
+    pub density: Quantity<Density>,
+    pub meyer_hardness: Option<Quantity<Pressure>>,
+}
+
+/// Mass properties given instead of computed from geometry.
+#[derive(Debug, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct MassOverride {
+    pub mass: Option<Quantity<Mass>>,
+    pub axial_inertia: Option<Quantity<Inertia>>,
+    pub transverse_inertia: Option<Quantity<Inertia>>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RingSection {
+    pub raceway_diameter: Quantity<Length>,
+    /// Inner ring only.
+    pub bore_diameter: Option<Quantity<Length>>,
+    /// Outer ring only.
+    pub outside_diameter: Option<Quantity<Length>>,
+    pub width: Quantity<Length>,
+    pub material: Option<String>,
+    pub roughness_ra: Option<Quantity<Length>>,
+    pub rib_spacing: Option<Quantity<Length>>,
+    #[serde(default)]
+    pub ribs: Vec<RibSection>,
+    pub guiding_land: Option<GuidingLandSection>,
+    pub raceway_profile: Option<ProfileSection>,
+    #[serde(default)]
+    pub mass_properties: MassOverride,
+}
+
+#[derive(Debug, Deserialize, Clone, Copy)]
+#[serde(rename_all = "kebab-case")]
+pub enum RibSideName {
+    Left,
+    Right,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RibSection {
+    pub side: RibSideName,
+    pub diameter: Quantity<Length>,
+    #[serde(default)]
+    pub face: RibFaceSection,
+    pub edge_break: Option<Quantity<Length>>,
+}
+
+#[derive(Debug, Deserialize, Default)]
+#[serde(tag = "kind", rename_all = "kebab-case", deny_unknown_fields)]
+pub enum RibFaceSection {
+    #[default]
+    Flat,
+    Cone {
+        angle: Quantity<Angle>,
+    },
+    ConvexTorus {
+        radius: Quantity<Length>,
+        crest_offset: Option<Quantity<Length>>,
+    },
+    ConcaveTorus {
+        radius: Quantity<Length>,
+    },
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct GuidingLandSection {
+    pub width: Quantity<Length>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ChamferSection {
+    pub axial: Quantity<Length>,
+    pub radial: Quantity<Length>,
+    pub radius: Quantity<Length>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(tag = "kind", rename_all = "kebab-case", deny_unknown_fields)]
+pub enum ProfileSection {
+    Straight {
+        chamfer: Option<ChamferSection>,
+    },
+    Crowned {
+        straight_length: Quantity<Length>,
+        drop: Quantity<Length>,
+        crown_radius: Option<Quantity<Length>>,
+        chamfer: Option<ChamferSection>,
+    },
+    Logarithmic {
+        k: Quantity<Length>,
+        c: Quantity<PerArea>,
+        chamfer: Option<ChamferSection>,
+    },
+    JohnsGohar {
+        design_load: Quantity<Force>,
+        chamfer: Option<ChamferSection>,
+    },
+    Polyline {
+        x: Vec<Quantity<Length>>,
+        drop: Vec<Quantity<Length>>,
+        chamfer: Option<ChamferSection>,
+    },
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(tag = "kind", rename_all = "kebab-case", deny_unknown_fields)]
+pub enum EndFaceSection {
+    Flat,
+    Sphere { radius: Quantity<Length> },
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RollerSection {
+    pub count: Option<usize>,
+    pub diameter: Quantity<Length>,
+    pub length: Quantity<Length>,
+    pub slices: Option<usize>,
+    pub material: Option<String>,
+    pub roughness_ra: Option<Quantity<Length>>,
+    pub edge_break: Option<Quantity<Length>>,
+    pub end_face: Option<EndFaceSection>,
+    pub profile: Option<ProfileSection>,
+    #[serde(default)]
+    pub mass_properties: MassOverride,
+}
+
+#[derive(Debug, Deserialize, Clone, Copy)]
+#[serde(rename_all = "kebab-case")]
+pub enum GuidanceName {
+    InnerLand,
+    OuterLand,
+    Rollers,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CageSection {
+    pub guidance: GuidanceName,
+    pub floating_clearance: Option<Quantity<Length>>,
+    pub pocket_circumferential: Quantity<Length>,
+    pub pocket_axial: Quantity<Length>,
+    pub bar_contact_diameter: Quantity<Length>,
+    pub inner_diameter: Quantity<Length>,
+    pub outer_diameter: Quantity<Length>,
+    pub width: Quantity<Length>,
+    pub material: Option<String>,
+    pub roughness_ra: Option<Quantity<Length>>,
+    #[serde(default)]
+    pub mass_properties: MassOverride,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ClearanceSection {
+    pub radial: Option<Quantity<Length>>,
+    pub roller_rib_axial: Option<Quantity<Length>>,
+    #[serde(default)]
+    pub preload: bool,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct MisalignmentSection {
+    pub inner_ring: Quantity<Angle>,
+}

@@ -1,0 +1,72 @@
+//! Every example model loads and validates; derived quantities are what the seeds imply.
+
+use rolldyn_model::{BearingModel, load, parse};
+use std::path::{Path, PathBuf};
+
+fn examples() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples")
+}
+
+#[test]
+fn every_example_loads() {
+    let mut paths = vec![];
+    for dir in [examples(), examples().join("contact")] {
+        for entry in std::fs::read_dir(dir).unwrap() {
+            let path = entry.unwrap().path();
+            if path.extension().is_some_and(|e| e == "toml") {
+                paths.push(path);
+            }
+        }
+    }
+    assert!(paths.len() >= 8, "{paths:?}");
+    for path in paths {
+        load(&path).unwrap_or_else(|e| panic!("{e}"));
+    }
+}
+
+#[test]
+fn default_model_is_2002834_per_spec_f02() {
+    let BearingModel::Cylindrical(b) = parse(rolldyn_model::DEFAULT_MODEL, "default").unwrap()
+    else {
+        panic!("cylindrical expected")
+    };
+    // SPEC F-02: d_m = 180 mm, zero geometric clearance, operating clearance from Table 3.1.
+    assert!((b.pitch_diameter() - 0.180).abs() < 1e-12);
+    assert!(b.geometric_clearance().abs() < 1e-12);
+    assert!((b.clearance.radial - 9e-6).abs() < 1e-15);
+    assert!((b.roller_rib_axial_clearance().unwrap() - 0.0505e-3).abs() < 1e-12);
+    // Epicyclic cage speed at 6371 rpm: ω_i/2 (1 − 15/180) = 305.8 rad/s.
+    let wi = 6371.0 * std::f64::consts::PI / 30.0;
+    assert!((b.epicyclic_cage_speed(wi, 0.0) - 0.5 * wi * (1.0 - 15.0 / 180.0)).abs() < 1e-9);
+    // Guiding land from the cage bore and floating clearance.
+    let land = b.inner_ring.guiding_land.unwrap();
+    assert!((land.diameter - 0.173).abs() < 1e-12);
+}
+
+#[test]
+fn roller_mass_matches_a_cylinder_within_the_chamfer_loss() {
+    let BearingModel::Cylindrical(b) = parse(rolldyn_model::DEFAULT_MODEL, "default").unwrap()
+    else {
+        panic!()
+    };
+    let r = &b.roller;
+    let cylinder = 7830.0 * std::f64::consts::PI * 0.0075f64.powi(2) * 0.011;
+    let m = r.mass_properties.mass;
+    // Chamfers 0.5 mm × 0.6 mm arcs remove ≈ 2–4 % of a 15 × 11 mm roller.
+    assert!(m < cylinder && m > 0.95 * cylinder, "{m} vs {cylinder}");
+    let ia = r.mass_properties.axial_inertia;
+    assert!((ia / (0.5 * m * 0.0075f64.powi(2)) - 1.0).abs() < 0.03);
+}
+
+#[test]
+fn contact_examples_have_the_seed004_profiles() {
+    let drop_at = |name: &str, x: f64| {
+        let m = load(&examples().join("contact").join(name)).unwrap();
+        m.roller().profile.drop(x)
+    };
+    assert_eq!(drop_at("32206-straight.toml", 3.7e-3), 0.0);
+    assert!((drop_at("32206-crowned-3.2um.toml", 3.25e-3) - 3.2e-6).abs() < 1e-12);
+    assert!((drop_at("32206-crowned-6.5um.toml", 3.25e-3) - 6.5e-6).abs() < 1e-12);
+    assert!((drop_at("32206-log-small.toml", 3.25e-3) - 2.05e-6).abs() < 0.01e-6);
+    assert!((drop_at("32206-log-large.toml", 3.25e-3) - 10.3e-6).abs() < 0.05e-6);
+}

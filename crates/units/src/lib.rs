@@ -1,0 +1,32 @@
+//! Physical quantities with engineering units at the boundary, SI inside.
+//!
+//! Model files and command-line flags accept values such as `"165 mm"`, `"15 µm"`, `"6371 rpm"`,
+//! `"4 arcmin"`, `"100 °C"`, `"1167 N"`, `"1 GPa"`, `"2.5 m/s"`, `"0.024 Pa s"`. A plain number
+//! (TOML number or a string without unit) is taken as SI (m, N, Pa, rad, rad/s, K, …).
+//! The value is converted once, on parsing, and the rest of rolldyn works with `f64` in SI.
+//!
+//! ```
+//! use rolldyn_units::{Quantity, Length, Temperature};
+//! let d: Quantity<Length> = "165 mm".parse().unwrap();
+//! assert!((d.si() - 0.165).abs() < 1e-15);
+//! let t: Quantity<Temperature> = "100 C".parse().unwrap();
+//! assert!((t.si() - 373.15).abs() < 1e-12);
+//! assert!("1167 N".parse::<Quantity<Length>>().is_err());
+//! ```
+
+mod dimension;
+mod quantity;
+mod range;
+mod unit_table;
+
+pub use dimension::*;
+pub use quantity::{Quantity, UnitError};
+pub use range::QuantityRange;
+pub use unit_table::Dimension;
+
+/// rpm → rad/s.
+pub const RPM: f64 = std::f64::consts::PI / 30.0;
+/// One arc-minute in rad.
+pub const ARCMIN: f64 = std::f64::consts::PI / 10_800.0;
+/// 0 °C in kelvin.
+pub const CELSIUS_ZERO: f64 = 273.15;

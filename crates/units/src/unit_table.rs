@@ -1,0 +1,309 @@
+//! The unit symbols rolldyn understands, per physical dimension.
+
+use std::fmt;
+
+/// A physical dimension a quantity can have.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Dimension {
+    Dimensionless,
+    Length,
+    Area,
+    Mass,
+    Time,
+    Force,
+    Moment,
+    Pressure,
+    Angle,
+    AngularSpeed,
+    Speed,
+    Acceleration,
+    Temperature,
+    DynamicViscosity,
+    KinematicViscosity,
+    Density,
+    Stiffness,
+    Damping,
+    Power,
+    Energy,
+    Frequency,
+    ThermalConductivity,
+    SpecificHeat,
+    /// Rotational viscous damping, torque per angular speed (N·m·s/rad).
+    RotationalDamping,
+    /// Temperature coefficient of viscosity (1/K).
+    PerTemperature,
+    /// Pressure–viscosity coefficient (1/Pa).
+    PerPressure,
+    /// Inverse area (1/m²), e.g. the `c` of a logarithmic profile.
+    PerArea,
+    /// Mass moment of inertia (kg·m²).
+    Inertia,
+}
+
+impl Dimension {
+    /// Human name used in error messages.
+    pub fn name(self) -> &'static str {
+        use Dimension::*;
+        match self {
+            Dimensionless => "a dimensionless number",
+            Length => "a length",
+            Area => "an area",
+            Mass => "a mass",
+            Time => "a time",
+            Force => "a force",
+            Moment => "a moment",
+            Pressure => "a pressure",
+            Angle => "an angle",
+            AngularSpeed => "an angular speed",
+            Speed => "a speed",
+            Acceleration => "an acceleration",
+            Temperature => "a temperature",
+            DynamicViscosity => "a dynamic viscosity",
+            KinematicViscosity => "a kinematic viscosity",
+            Density => "a density",
+            Stiffness => "a stiffness",
+            Damping => "a damping coefficient",
+            Power => "a power",
+            Energy => "an energy",
+            Frequency => "a frequency",
+            ThermalConductivity => "a thermal conductivity",
+            SpecificHeat => "a specific heat",
+            RotationalDamping => "a rotational damping coefficient",
+            PerTemperature => "a temperature coefficient",
+            PerPressure => "a pressure coefficient",
+            PerArea => "an inverse area",
+            Inertia => "a moment of inertia",
+        }
+    }
+
+    /// SI unit symbol, used when a plain number is given and in messages.
+    pub fn si_symbol(self) -> &'static str {
+        use Dimension::*;
+        match self {
+            Dimensionless => "",
+            Length => "m",
+            Area => "m²",
+            Mass => "kg",
+            Time => "s",
+            Force => "N",
+            Moment => "N m",
+            Pressure => "Pa",
+            Angle => "rad",
+            AngularSpeed => "rad/s",
+            Speed => "m/s",
+            Acceleration => "m/s²",
+            Temperature => "K",
+            DynamicViscosity => "Pa s",
+            KinematicViscosity => "m²/s",
+            Density => "kg/m³",
+            Stiffness => "N/m",
+            Damping => "N s/m",
+            Power => "W",
+            Energy => "J",
+            Frequency => "Hz",
+            ThermalConductivity => "W/(m K)",
+            SpecificHeat => "J/(kg K)",
+            RotationalDamping => "N m s/rad",
+            PerTemperature => "1/K",
+            PerPressure => "1/Pa",
+            PerArea => "1/m²",
+            Inertia => "kg m²",
+        }
+    }
+
+    /// A few accepted spellings, for error messages.
+    pub fn examples(self) -> &'static str {
+        use Dimension::*;
+        match self {
+            Length => "m, mm, µm (or um), nm",
+            Force => "N, kN",
+            Pressure => "Pa, MPa, GPa, bar",
+            Angle => "rad, deg, arcmin, arcsec",
+            AngularSpeed => "rad/s, rpm",
+            Temperature => "K, °C (or C, degC)",
+            Speed => "m/s, mm/s",
+            DynamicViscosity => "Pa s, mPa s, cP",
+            KinematicViscosity => "m2/s, mm2/s, cSt",
+            Mass => "kg, g",
+            Time => "s, ms, us, min, h",
+            Density => "kg/m3, g/cm3",
+            Stiffness => "N/m, N/mm",
+            Damping => "N s/m, N s/mm",
+            RotationalDamping => "N m s/rad, N mm/(rad/ms)",
+            _ => self.si_symbol(),
+        }
+    }
+}
+
+impl fmt::Display for Dimension {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+/// One accepted unit: `si = value * scale + offset`.
+pub(crate) struct Unit {
+    pub symbol: &'static str,
+    pub dimension: Dimension,
+    pub scale: f64,
+    pub offset: f64,
+}
+
+const fn u(symbol: &'static str, dimension: Dimension, scale: f64) -> Unit {
+    Unit {
+        symbol,
+        dimension,
+        scale,
+        offset: 0.0,
+    }
+}
+
+use Dimension as D;
+const PI: f64 = std::f64::consts::PI;
+
+/// Units by normalised symbol (see [`normalise`]).
+pub(crate) static UNITS: &[Unit] = &[
+    u("%", D::Dimensionless, 0.01),
+    u("m", D::Length, 1.0),
+    u("cm", D::Length, 1e-2),
+    u("mm", D::Length, 1e-3),
+    u("um", D::Length, 1e-6),
+    u("micron", D::Length, 1e-6),
+    u("nm", D::Length, 1e-9),
+    u("in", D::Length, 0.0254),
+    u("m2", D::Area, 1.0),
+    u("mm2", D::Area, 1e-6),
+    u("kg", D::Mass, 1.0),
+    u("g", D::Mass, 1e-3),
+    u("s", D::Time, 1.0),
+    u("ms", D::Time, 1e-3),
+    u("us", D::Time, 1e-6),
+    u("min", D::Time, 60.0),
+    u("h", D::Time, 3600.0),
+    u("N", D::Force, 1.0),
+    u("kN", D::Force, 1e3),
+    u("MN", D::Force, 1e6),
+    u("mN", D::Force, 1e-3),
+    u("Nm", D::Moment, 1.0),
+    u("Nmm", D::Moment, 1e-3),
+    u("kNm", D::Moment, 1e3),
+    u("Pa", D::Pressure, 1.0),
+    u("kPa", D::Pressure, 1e3),
+    u("MPa", D::Pressure, 1e6),
+    u("GPa", D::Pressure, 1e9),
+    u("bar", D::Pressure, 1e5),
+    u("N/mm2", D::Pressure, 1e6),
+    u("N/m2", D::Pressure, 1.0),
+    // Meyer/Vickers hardness is often printed in kgf/mm² (SPEC F-45).
+    u("kgf/mm2", D::Pressure, 9.806_65e6),
+    u("rad", D::Angle, 1.0),
+    u("mrad", D::Angle, 1e-3),
+    u("deg", D::Angle, PI / 180.0),
+    u("°", D::Angle, PI / 180.0),
+    u("arcmin", D::Angle, PI / 10_800.0),
+    u("'", D::Angle, PI / 10_800.0),
+    u("arcsec", D::Angle, PI / 648_000.0),
+    u("\"", D::Angle, PI / 648_000.0),
+    u("rad/s", D::AngularSpeed, 1.0),
+    u("rpm", D::AngularSpeed, PI / 30.0),
+    u("r/min", D::AngularSpeed, PI / 30.0),
+    u("rev/min", D::AngularSpeed, PI / 30.0),
+    u("rev/s", D::AngularSpeed, 2.0 * PI),
+    u("m/s", D::Speed, 1.0),
+    u("mm/s", D::Speed, 1e-3),
+    u("km/h", D::Speed, 1.0 / 3.6),
+    u("m/s2", D::Acceleration, 1.0),
+    u("g0", D::Acceleration, 9.806_65),
+    u("K", D::Temperature, 1.0),
+    Unit {
+        symbol: "C",
+        dimension: D::Temperature,
+        scale: 1.0,
+        offset: 273.15,
+    },
+    Unit {
+        symbol: "°C",
+        dimension: D::Temperature,
+        scale: 1.0,
+        offset: 273.15,
+    },
+    Unit {
+        symbol: "degC",
+        dimension: D::Temperature,
+        scale: 1.0,
+        offset: 273.15,
+    },
+    u("Pas", D::DynamicViscosity, 1.0),
+    u("mPas", D::DynamicViscosity, 1e-3),
+    u("cP", D::DynamicViscosity, 1e-3),
+    u("P", D::DynamicViscosity, 0.1),
+    u("m2/s", D::KinematicViscosity, 1.0),
+    u("mm2/s", D::KinematicViscosity, 1e-6),
+    u("cSt", D::KinematicViscosity, 1e-6),
+    u("St", D::KinematicViscosity, 1e-4),
+    u("kg/m3", D::Density, 1.0),
+    u("g/cm3", D::Density, 1e3),
+    u("N/m", D::Stiffness, 1.0),
+    u("N/mm", D::Stiffness, 1e3),
+    u("N/um", D::Stiffness, 1e6),
+    u("Ns/m", D::Damping, 1.0),
+    u("Ns/mm", D::Damping, 1e3),
+    u("W", D::Power, 1.0),
+    u("kW", D::Power, 1e3),
+    u("J", D::Energy, 1.0),
+    u("Hz", D::Frequency, 1.0),
+    u("W/(mK)", D::ThermalConductivity, 1.0),
+    u("W/mK", D::ThermalConductivity, 1.0),
+    u("J/(kgK)", D::SpecificHeat, 1.0),
+    u("J/kgK", D::SpecificHeat, 1.0),
+    u("Nms/rad", D::RotationalDamping, 1.0),
+    u("Nms", D::RotationalDamping, 1.0),
+    // seed 000 §3.6 prints the cage drag coefficient in N·mm/(rad/ms) = 1e-6 N·m·s/rad.
+    u("Nmm/(rad/ms)", D::RotationalDamping, 1e-6),
+    u("1/K", D::PerTemperature, 1.0),
+    u("1/C", D::PerTemperature, 1.0),
+    u("1/Pa", D::PerPressure, 1.0),
+    u("1/GPa", D::PerPressure, 1e-9),
+    u("1/MPa", D::PerPressure, 1e-6),
+    u("m2/N", D::PerPressure, 1.0),
+    u("1/m2", D::PerArea, 1.0),
+    u("1/mm2", D::PerArea, 1e6),
+    u("kgm2", D::Inertia, 1.0),
+    u("kgmm2", D::Inertia, 1e-6),
+    u("gmm2", D::Inertia, 1e-9),
+    u("gcm2", D::Inertia, 1e-7),
+];
+
+/// Normalises a unit spelling: drops white space and the product signs `·`, `*`, `⋅`;
+/// micro signs `µ`/`μ` become `u`; superscripts `²`, `³` become `2`, `3`; the prime `′`
+/// becomes `'` and `″` becomes `"`; `º` becomes `°`.
+pub(crate) fn normalise(symbol: &str) -> String {
+    let mut out = String::with_capacity(symbol.len());
+    for c in symbol.chars() {
+        match c {
+            c if c.is_whitespace() => {}
+            '·' | '*' | '⋅' => {}
+            'µ' | 'μ' => out.push('u'),
+            '²' => out.push('2'),
+            '³' => out.push('3'),
+            '′' => out.push('\''),
+            '″' => out.push('"'),
+            'º' => out.push('°'),
+            _ => out.push(c),
+        }
+    }
+    out
+}
+
+/// Looks a unit up, preferring one of the expected dimension when a symbol is shared.
+pub(crate) fn lookup(symbol: &str, expected: Dimension) -> Option<&'static Unit> {
+    let key = normalise(symbol);
+    let mut matches = UNITS.iter().filter(|unit| unit.symbol == key);
+    let first = matches.next()?;
+    if first.dimension == expected {
+        return Some(first);
+    }
+    matches
+        .find(|unit| unit.dimension == expected)
+        .or(Some(first))
+}

@@ -1,0 +1,94 @@
+//! Unit parsing: every spelling the model files and CLI flags promise.
+
+use rolldyn_units::*;
+
+fn si<D: Dim>(text: &str) -> f64 {
+    Quantity::<D>::parse(text)
+        .unwrap_or_else(|e| panic!("{text}: {e}"))
+        .si()
+}
+
+fn close(a: f64, b: f64) -> bool {
+    (a - b).abs() <= 1e-12 * b.abs().max(1e-300)
+}
+
+#[test]
+fn issue_examples_parse_to_si() {
+    assert!(close(si::<Length>("165 mm"), 0.165));
+    assert!(close(si::<Length>("15 µm"), 15e-6));
+    assert!(close(si::<Length>("15 μm"), 15e-6)); // Greek mu as well as the micro sign
+    assert!(close(si::<Length>("15 um"), 15e-6));
+    assert!(close(
+        si::<AngularSpeed>("6371 rpm"),
+        6371.0 * std::f64::consts::PI / 30.0
+    ));
+    assert!(close(si::<Angle>("4 arcmin"), 4.0 * ARCMIN));
+    assert!(close(si::<Angle>("4′"), 4.0 * ARCMIN));
+    assert!(close(si::<Temperature>("100 °C"), 373.15));
+    assert!(close(si::<Temperature>("100 C"), 373.15));
+    assert!(close(si::<Temperature>("-20 degC"), 253.15));
+    assert!(close(si::<Force>("1167 N"), 1167.0));
+    assert!(close(si::<Pressure>("1 GPa"), 1e9));
+    assert!(close(si::<Speed>("2.5 m/s"), 2.5));
+    assert!(close(si::<DynamicViscosity>("0.024 Pa s"), 0.024));
+    assert!(close(si::<DynamicViscosity>("0.05Pas"), 0.05));
+    assert!(close(si::<DynamicViscosity>("24 mPa·s"), 0.024));
+    assert!(close(si::<KinematicViscosity>("320 cSt"), 320e-6));
+    assert!(close(si::<KinematicViscosity>("320 mm²/s"), 320e-6));
+    assert!(close(
+        si::<RotationalDamping>("0.662 N·mm/(rad/ms)"),
+        6.62e-7
+    ));
+}
+
+#[test]
+fn no_space_and_exponents() {
+    assert!(close(si::<Pressure>("1GPa"), 1e9));
+    assert!(close(si::<Length>("1.5e-3m"), 1.5e-3));
+    assert!(close(si::<Length>("2E2 um"), 2e-4));
+    assert!(close(si::<Length>("-0.006 mm"), -6e-6));
+}
+
+#[test]
+fn plain_numbers_are_si() {
+    assert!(close(si::<Length>("0.165"), 0.165));
+    assert!(close(si::<Temperature>("300"), 300.0));
+    let parsed: std::collections::BTreeMap<String, Quantity<Length>> =
+        toml::from_str("a = 0.01\nb = 2\nc = \"3 mm\"").unwrap();
+    assert!(close(parsed["a"].si(), 0.01));
+    assert!(close(parsed["b"].si(), 2.0));
+    assert!(close(parsed["c"].si(), 0.003));
+}
+
+#[test]
+fn wrong_dimension_is_an_error() {
+    let err = Quantity::<Force>::parse("10 mm").unwrap_err();
+    assert!(matches!(err, UnitError::WrongDimension { .. }), "{err}");
+    assert!(err.to_string().contains("a length"), "{err}");
+    assert!(err.to_string().contains("a force"), "{err}");
+}
+
+#[test]
+fn garbage_is_an_error() {
+    assert!(Quantity::<Length>::parse("").is_err());
+    assert!(Quantity::<Length>::parse("mm").is_err());
+    assert!(Quantity::<Length>::parse("12 furlongs").is_err());
+    assert!(Quantity::<Length>::parse("NaN mm").is_err());
+    assert!(Quantity::<Length>::parse("inf").is_err());
+    let nan: Result<std::collections::BTreeMap<String, Quantity<Length>>, _> =
+        toml::from_str("a = nan");
+    assert!(nan.is_err());
+}
+
+#[test]
+fn ranges() {
+    let r: QuantityRange<AngularSpeed> = "1500rpm..4500rpm:500rpm".parse().unwrap();
+    assert_eq!(r.values.len(), 7);
+    assert!(close(r.values[6].si(), 4500.0 * RPM));
+    let r: QuantityRange<Temperature> = "40C,50C,60C".parse().unwrap();
+    assert_eq!(r.values.len(), 3);
+    let r: QuantityRange<Force> = "700N..100N:50N".parse().unwrap();
+    assert_eq!(r.values.len(), 13);
+    assert!(close(r.values[12].si(), 100.0));
+    assert!("1..2".parse::<QuantityRange<Force>>().is_err());
+}
