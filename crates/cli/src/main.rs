@@ -24,6 +24,8 @@ enum Command {
     Check(commands::check::Args),
     /// Roller–raceway contact pressure: Boussinesq solver, slice model or Hertz.
     Contact(commands::contact::Args),
+    /// Re-run a seed's validation study and write its tables and plots.
+    Study(commands::study::Args),
 }
 
 fn main() -> ExitCode {
@@ -32,6 +34,7 @@ fn main() -> ExitCode {
         Command::Demo(args) => commands::demo::run(args),
         Command::Check(args) => commands::check::run(args),
         Command::Contact(args) => commands::contact::run(args),
+        Command::Study(args) => commands::study::run(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

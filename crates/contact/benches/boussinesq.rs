@@ -82,7 +82,15 @@ fn benches(c: &mut Criterion) {
 /// One `u = f * p` evaluation, both modes (used to choose `AUTO_DIRECT_Y_MAX_NY`).
 fn convolutions(c: &mut Criterion) {
     let compliance = combined_compliance(201e9, 0.3, 201e9, 0.3);
-    for &(nx, ny) in &[(350, 9), (1024, 16), (1024, 24), (1024, 32), (1024, 64)] {
+    for &(nx, ny) in &[
+        (350, 3),
+        (350, 5),
+        (350, 9),
+        (1024, 16),
+        (1024, 24),
+        (1024, 32),
+        (1024, 64),
+    ] {
         let grid = Grid::centered_extent(nx, ny, 7.6e-3, 0.4e-3).unwrap();
         let table = InfluenceTable::new(&grid, compliance);
         let p: Vec<f64> = (0..grid.len()).map(|k| 1e9 * ((k % 7) as f64)).collect();

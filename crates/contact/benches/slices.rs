@@ -36,6 +36,16 @@ fn bench_slices(c: &mut Criterion) {
         crown,
     )
     .unwrap();
+    let hertz15 = SlicedRoller::uniform(
+        SliceLaw::Power {
+            k_p: 3e9,
+            exponent: 1.5,
+        },
+        7.5e-3,
+        30,
+        crown,
+    )
+    .unwrap();
     let mut forces = vec![0.0; 30];
 
     c.bench_function("slices/evaluate_30_full_load", |b| {
@@ -58,6 +68,15 @@ fn bench_slices(c: &mut Criterion) {
     c.bench_function("slices/evaluate_30_iso_ts_16281", |b| {
         b.iter(|| {
             black_box(iso.evaluate(black_box(6e-6), black_box(2e-4), black_box(&mut forces[..])))
+        })
+    });
+    c.bench_function("slices/evaluate_30_power_1_5", |b| {
+        b.iter(|| {
+            black_box(hertz15.evaluate(
+                black_box(6e-6),
+                black_box(2e-4),
+                black_box(&mut forces[..]),
+            ))
         })
     });
 

@@ -186,6 +186,20 @@ pub struct TwoLevelFriction {
     pub v_dynamic: f64,
 }
 
+impl Default for TwoLevelFriction {
+    /// Roller end ↔ rib / cage boundary friction: `μ_s = μ_d = 0.065` (seed 000 §2.1), with a
+    /// regularisation band `v_s = 1 mm/s`, `v_d = 10 mm/s` (proposal, not in the seeds: ⚠ F-21
+    /// gives no values; choose per pair).
+    fn default() -> Self {
+        Self {
+            mu_static: 0.065,
+            mu_dynamic: 0.065,
+            v_static: 1e-3,
+            v_dynamic: 1e-2,
+        }
+    }
+}
+
 impl TwoLevelFriction {
     /// Validated constructor: `0 < v_s < v_d`, `μ_s, μ_d ≥ 0` and finite.
     pub fn new(

@@ -682,6 +682,40 @@ fn inverse_recovers_approach_and_tilt() {
 }
 
 #[test]
+fn inverse_sweep_including_few_loaded_slices() {
+    let opts = SolveOptions::default();
+    let roller = SlicedRoller::uniform(inner_law(), 7.5e-3, 30, crown).unwrap();
+    let mut max_it = 0;
+    let mut cases = 0;
+    for &d0 in &[0.05e-6, 0.3e-6, 1e-6, 5e-6, 20e-6] {
+        for i in -16..=16 {
+            let phi = i as f64 * 5e-4;
+            let fwd = roller.evaluate_totals(d0, phi);
+            if fwd.force <= 0.0 {
+                continue;
+            }
+            let sol = roller
+                .solve_approach_tilt(fwd.force, fwd.moment, &opts)
+                .unwrap_or_else(|e| panic!("δ0 {d0:e} φ {phi:e}: {e}"));
+            assert_rel(sol.load.force, fwd.force, 1e-11);
+            assert!((sol.load.moment - fwd.moment).abs() <= 1e-11 * fwd.force * 3.75e-3);
+            if fwd.loaded_slices >= 2 {
+                // unique solution once two or more slices carry load
+                assert!(
+                    rel(sol.approach, d0) <= 1e-8,
+                    "δ0 {d0:e} φ {phi:e}: {}",
+                    sol.approach
+                );
+                assert!((sol.tilt - phi).abs() <= 1e-8 * phi.abs().max(1e-6));
+            }
+            max_it = max_it.max(sol.iterations);
+            cases += 1;
+        }
+    }
+    println!("sweep: {cases} cases, max {max_it} iterations");
+}
+
+#[test]
 fn symmetric_profile_zero_moment_gives_zero_tilt() {
     let opts = SolveOptions::default();
     let roller = SlicedRoller::uniform(inner_law(), 7.5e-3, 30, crown).unwrap();
@@ -847,5 +881,8 @@ fn two_level_friction() {
         assert!((d - fd).abs() < 1e-5 * d.abs().max(1.0));
     }
     assert!(TwoLevelFriction::new(0.1, 0.05, 0.1, 0.01).is_err());
-    assert!(TwoLevelFriction::constant(0.065, 1e-3, 1e-2).is_ok());
+    assert_eq!(
+        TwoLevelFriction::constant(0.065, 1e-3, 1e-2).unwrap(),
+        TwoLevelFriction::default()
+    );
 }

@@ -166,7 +166,13 @@ pub fn rigid_piezoviscous_line(
     let u_dim = eta0 * u / (e * r);
     let w = q / (e * r * l);
     let a = houpert_a(u_dim, alpha * e, w);
-    let f = if a > 1e-12 { a / -(-a).exp_m1() } else { 1.0 };
+    let f = if a > 40.0 {
+        a // 1 − e^{−A} = 1 to machine precision
+    } else if a > 1e-12 {
+        a / -(-a).exp_m1()
+    } else {
+        1.0
+    };
     4.9 * (f * f).cbrt() * u_dim / w * r
 }
 

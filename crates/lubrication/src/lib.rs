@@ -14,7 +14,7 @@
 //! | [`contact_state`] | [`ContactState`]: the operating point of one contact (slice); Hertz (2.15)/(2.16) | §2.3, §4.6 |
 //! | [`film`] | film-thickness formulas (2.17), (2.19), seed 001, Pan–Hamrock, Hamrock–Dowson | §4.7 |
 //! | [`regime`] | Λ (1.2) / Tallian, G1/G2 (1.10)–(1.11), regime enums | §4.3, §4.7 |
-//! | [`traction`] | **the single entry point [`traction()`]**, Muraki (1.4)–(1.9), mixed (1.3), boundary (2.10), seed 001 asperity + Blok flash model, two-level STEP law | §3.4, §4.4–4.6, §4.9 |
+//! | [`mod@traction`] | **the single entry point [`traction()`]**, Muraki (1.4)–(1.9), mixed (1.3), boundary (2.10), seed 001 asperity + Blok flash model, two-level STEP law | §3.4, §4.4–4.6, §4.9 |
 //! | [`scuffing`] | critical slip s_cr (bracket + Brent), margin, dN/ds diagnostics (2.21)–(2.32) | §4.8 |
 //! | [`mixture`] | air–oil mixture density (seed 001) and seed 000 mixture rules | §4.10, §3.6 |
 //!

@@ -165,3 +165,18 @@ fn hertz_line_2_15_2_16() {
     assert!((b.half_width_m * 1e3 - 0.129).abs() < 0.0005);
     assert_relative_eq!(b.mean_pressure_pa, 2.0 / 3.0 * 1e9, max_relative = 1e-12);
 }
+
+/// Hamrock–Brewe elliptical approximations reduce to the circular Hertz contact for R_y = R_x
+/// within their stated accuracy (k = 1.0339 instead of 1, Ɛ = 1.5971 instead of π/2: ≤ 3 %).
+#[test]
+fn elliptical_hertz_reduces_to_circular() {
+    let mut st = ball_on_disc(1e9, 2.5, 0.0, 40.0);
+    let c = st.hertz();
+    st.geometry = ContactGeometry::Elliptical {
+        transverse_radius_m: st.reduced_radius_m,
+    };
+    let e = st.hertz();
+    assert!((e.max_pressure_pa / c.max_pressure_pa - 1.0).abs() < 0.03);
+    assert!((e.half_width_m / c.half_width_m - 1.0).abs() < 0.03);
+    assert!((e.ellipticity - 1.0339).abs() < 1e-4);
+}

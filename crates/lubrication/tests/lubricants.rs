@@ -188,3 +188,47 @@ fn beta0_derived_from_viscosity_law_when_absent() {
     // η = 0.1432 e^{−0.04θ} ⇒ −d ln η/dT = 0.04 exactly (central difference of an exponential)
     assert_relative_eq!(oil.beta0(320.0).unwrap(), 0.04, max_relative = 1e-9);
 }
+
+/// Tabulated hot-path properties (traction/table.rs) vs the closed forms: every built-in oil with
+/// data, every property, a 0.01 K grid over the valid range. Required ≤ 0.5 % (brief); the bound
+/// h²/8·|f''| predicts ≈ 4×10⁻⁵ for PAO1 viscosity at 40 °C.
+#[test]
+fn property_table_error_below_half_percent() {
+    use rolldyn_lubrication::traction::table::{HotProps, PropertyTable};
+    let mut worst: f64 = 0.0;
+    for name in KNOWN_OILS {
+        let mut oil = lubricant_by_name(name).unwrap();
+        if oil.density.is_none() {
+            oil.density = Some(TempLaw::Constant { value: 870.0 }); // lets ν-only oils be checked
+        }
+        let tab = PropertyTable::new(&oil);
+        let [t0, t1] = oil.temperature_range_k;
+        let n = ((t1 - t0) / 0.01) as usize;
+        for i in 0..=n {
+            let t = (t0 + 0.01 * i as f64).min(t1);
+            let a = tab.get(t).unwrap();
+            let b = HotProps::closed_form(&oil, t);
+            for (x, y) in [
+                (a.eta0, b.eta0),
+                (a.alpha, b.alpha),
+                (a.gamma, b.gamma),
+                (a.tau0, b.tau0),
+                (a.beta0, b.beta0),
+                (a.k_f, b.k_f),
+            ] {
+                if y.is_nan() {
+                    assert!(x.is_nan());
+                    continue;
+                }
+                worst = worst.max((x / y - 1.0).abs());
+            }
+        }
+        assert!(tab.get(t1 + 0.1).is_none() && tab.get(t0 - 0.1).is_none());
+    }
+    eprintln!("worst table interpolation error: {worst:e}");
+    assert!(worst <= 5e-3, "worst relative interpolation error {worst}");
+    assert!(
+        worst <= 1e-4,
+        "expected ≈ 4e-5 from the h²/8 bound, got {worst}"
+    );
+}

@@ -3,3 +3,4 @@
 pub mod check;
 pub mod contact;
 pub mod demo;
+pub mod study;

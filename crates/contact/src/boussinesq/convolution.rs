@@ -80,7 +80,10 @@ pub struct Convolver {
     npairs: usize,
     fft_x: Arc<dyn Fft<f64>>,
     ifft_x: Arc<dyn Fft<f64>>,
-    /// Packed rows, `npairs × nfx`.
+    /// Row stride of `rows`: `nfx` plus a small pad so that the rows do not all map to the
+    /// same cache sets (nfx is often a power of two).
+    rs: usize,
+    /// Packed rows, `npairs × rs` (first `nfx` entries of each row used).
     rows: Vec<C64>,
     /// Separated `x` spectra, `[j][k]` (direct-y) or `[k][j]` with stride `nfy` (2-D).
     spec: Vec<C64>,
@@ -197,7 +200,8 @@ impl Convolver {
             npairs,
             fft_x,
             ifft_x,
-            rows: vec![zero; npairs * nfx],
+            rs: nfx + 4,
+            rows: vec![zero; npairs * (nfx + 4)],
             spec: vec![zero; spec_len],
             scratch: vec![zero; scratch_len],
             along,
@@ -220,14 +224,14 @@ impl Convolver {
     /// # Panics
     /// If `p` or `u` does not have `nx·ny` entries.
     pub fn apply(&mut self, p: &[f64], u: &mut [f64]) {
-        let (nx, ny, nfx, half) = (self.nx, self.ny, self.nfx, self.half);
+        let (nx, ny, nfx, half, rs) = (self.nx, self.ny, self.nfx, self.half, self.rs);
         assert_eq!(p.len(), nx * ny, "pressure length");
         assert_eq!(u.len(), nx * ny, "displacement length");
         let zero = C64::new(0.0, 0.0);
 
         // 1. Pack rows 2m, 2m+1 into z = p_a + i p_b, zero padded to nfx.
         for m in 0..self.npairs {
-            let z = &mut self.rows[m * nfx..(m + 1) * nfx];
+            let z = &mut self.rows[m * rs..m * rs + nfx];
             let a = &p[2 * m * nx..(2 * m + 1) * nx];
             if 2 * m + 1 < ny {
                 let b = &p[(2 * m + 1) * nx..(2 * m + 2) * nx];
@@ -241,8 +245,10 @@ impl Convolver {
             }
             z[nx..].fill(zero);
         }
-        self.fft_x
-            .process_with_scratch(&mut self.rows, &mut self.scratch);
+        for m in 0..self.npairs {
+            self.fft_x
+                .process_with_scratch(&mut self.rows[m * rs..m * rs + nfx], &mut self.scratch);
+        }
 
         // 2. Separate the two real spectra (2·P_a = Z_k + conj Z_{N−k}, 2·P_b = −i(…−…)).
         //    Layout: [j][k] (direct-y, k contiguous) or [k][j] with stride nfy (2-D, columns
@@ -251,17 +257,36 @@ impl Convolver {
             Along::DirectY { .. } => (half, 1),
             Along::Fft2d { nfy, .. } => (1, *nfy),
         };
-        for m in 0..self.npairs {
-            let z = &self.rows[m * nfx..(m + 1) * nfx];
-            let has_b = 2 * m + 1 < ny;
-            for k in 0..half {
-                let zk = z[k];
-                let zc = z[(nfx - k) % nfx].conj();
-                self.spec[k * sk + 2 * m * sj] = zk + zc;
-                if has_b {
-                    let d = zk - zc;
-                    self.spec[k * sk + (2 * m + 1) * sj] = C64::new(d.im, -d.re);
+        if sk == 1 {
+            // [j][k]: pair-major loop, contiguous writes.
+            for m in 0..self.npairs {
+                let z = &self.rows[m * rs..m * rs + nfx];
+                let has_b = 2 * m + 1 < ny;
+                for k in 0..half {
+                    let zk = z[k];
+                    let zc = z[(nfx - k) % nfx].conj();
+                    self.spec[2 * m * sj + k] = zk + zc;
+                    if has_b {
+                        let d = zk - zc;
+                        self.spec[(2 * m + 1) * sj + k] = C64::new(d.im, -d.re);
+                    }
                 }
+            }
+        } else {
+            // [k][j]: frequency-major loop, contiguous writes (and zero padding j ≥ ny).
+            for k in 0..half {
+                let col = &mut self.spec[k * sk..(k + 1) * sk];
+                let kc = (nfx - k) % nfx;
+                for m in 0..self.npairs {
+                    let zk = self.rows[m * rs + k];
+                    let zc = self.rows[m * rs + kc].conj();
+                    col[2 * m] = zk + zc;
+                    if 2 * m + 1 < ny {
+                        let d = zk - zc;
+                        col[2 * m + 1] = C64::new(d.im, -d.re);
+                    }
+                }
+                col[ny..].fill(zero);
             }
         }
 
@@ -285,15 +310,11 @@ impl Convolver {
                 out
             }
             Along::Fft2d {
-                nfy,
                 fft_y,
                 ifft_y,
                 kernel,
+                ..
             } => {
-                let nfy = *nfy;
-                for k in 0..half {
-                    self.spec[k * nfy + ny..(k + 1) * nfy].fill(zero);
-                }
                 fft_y.process_with_scratch(&mut self.spec, &mut self.scratch);
                 for (s, &kv) in self.spec.iter_mut().zip(kernel.iter()) {
                     *s *= kv;
@@ -304,26 +325,51 @@ impl Convolver {
         };
 
         // 4. Repack W = U_a + i U_b (Hermitian halves) and inverse FFT along x.
-        for m in 0..self.npairs {
-            let w = &mut self.rows[m * nfx..(m + 1) * nfx];
-            let has_b = 2 * m + 1 < ny;
+        let repack = |ua: C64, ub: C64| {
+            (
+                C64::new(ua.re - ub.im, ua.im + ub.re),
+                C64::new(ua.re + ub.im, ub.re - ua.im),
+            )
+        };
+        if sk == 1 {
+            for m in 0..self.npairs {
+                let w = &mut self.rows[m * rs..m * rs + nfx];
+                let has_b = 2 * m + 1 < ny;
+                for k in 0..half {
+                    let ua = out[2 * m * sj + k];
+                    let ub = if has_b {
+                        out[(2 * m + 1) * sj + k]
+                    } else {
+                        zero
+                    };
+                    let (lo, hi) = repack(ua, ub);
+                    w[k] = lo;
+                    if k > 0 && 2 * k < nfx {
+                        w[nfx - k] = hi;
+                    }
+                }
+            }
+        } else {
             for k in 0..half {
-                let ua = out[k * sk + 2 * m * sj];
-                let ub = if has_b {
-                    out[k * sk + (2 * m + 1) * sj]
-                } else {
-                    zero
-                };
-                w[k] = C64::new(ua.re - ub.im, ua.im + ub.re);
-                if k > 0 && 2 * k < nfx {
-                    w[nfx - k] = C64::new(ua.re + ub.im, ub.re - ua.im);
+                let col = &out[k * sk..k * sk + ny];
+                let mirror = k > 0 && 2 * k < nfx;
+                for m in 0..self.npairs {
+                    let ua = col[2 * m];
+                    let ub = if 2 * m + 1 < ny { col[2 * m + 1] } else { zero };
+                    let (lo, hi) = repack(ua, ub);
+                    self.rows[m * rs + k] = lo;
+                    if mirror {
+                        self.rows[m * rs + nfx - k] = hi;
+                    }
                 }
             }
         }
-        self.ifft_x
-            .process_with_scratch(&mut self.rows, &mut self.scratch);
         for m in 0..self.npairs {
-            let w = &self.rows[m * nfx..m * nfx + nx];
+            self.ifft_x
+                .process_with_scratch(&mut self.rows[m * rs..m * rs + nfx], &mut self.scratch);
+        }
+        for m in 0..self.npairs {
+            let w = &self.rows[m * rs..m * rs + nx];
             for (ui, wi) in u[2 * m * nx..(2 * m + 1) * nx].iter_mut().zip(w) {
                 *ui = wi.re;
             }

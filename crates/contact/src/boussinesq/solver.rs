@@ -167,6 +167,30 @@ impl ContactSolution {
     }
 }
 
+/// Lane width of the reductions: independent partial sums break the floating-point add
+/// latency chain and let the compiler vectorise.
+const L: usize = 8;
+
+/// `for i in 0..n` with lane index `l = i % L` for partial sums (tail on lane 0).
+macro_rules! for_lanes {
+    ($n:expr, |$i:ident, $l:ident| $body:block) => {{
+        let n = $n;
+        let main = n - n % L;
+        let mut b = 0;
+        while b < main {
+            for $l in 0..L {
+                let $i = b + $l;
+                $body
+            }
+            b += L;
+        }
+        for $i in main..n {
+            let $l = 0;
+            $body
+        }
+    }};
+}
+
 #[derive(Clone, Copy)]
 enum Control {
     Force(f64),
@@ -520,64 +544,69 @@ impl BoussinesqSolver {
 
         while !converged && iterations < self.options.max_iterations {
             iterations += 1;
-            // Steps 1–2: gap and its mean on the contact set I_c = {p > 0}.
-            let (mut nc, mut gsum) = (0usize, 0.0);
-            for i in 0..n {
-                let gi = self.u[i] + gap[i];
-                self.g[i] = gi;
-                if self.p[i] > 0.0 {
-                    nc += 1;
-                    gsum += gi;
-                }
+            // Steps 1–2: gap g = K + u and its mean on the contact set I_c = {p > 0}.
+            let (mut ncl, mut gsl) = ([0.0; L], [0.0; L]);
+            {
+                let (g, u, h, p) = (&mut self.g[..n], &self.u[..n], &gap[..n], &self.p[..n]);
+                for_lanes!(n, |i, l| {
+                    let v = u[i] + h[i];
+                    g[i] = v;
+                    let c = p[i] > 0.0;
+                    gsl[l] += if c { v } else { 0.0 };
+                    ncl[l] += if c { 1.0 } else { 0.0 };
+                });
             }
+            let nc = ncl.iter().sum::<f64>() as usize;
+            let gsum: f64 = gsl.iter().sum();
             let gbar = match control {
-                Control::Force(_) => {
-                    if nc > 0 {
-                        gsum / nc as f64
-                    } else {
-                        0.0
-                    }
-                }
+                Control::Force(_) if nc > 0 => gsum / nc as f64,
+                Control::Force(_) => 0.0,
                 Control::Approach(alpha) => alpha,
             };
-            // Steps 3–4: G and the conjugate direction t on I_c.
-            let mut gg = 0.0;
-            for i in 0..n {
-                self.g[i] -= gbar;
-                if self.p[i] > 0.0 {
-                    gg += self.g[i] * self.g[i];
-                }
+            // Step 3: g ← g − ḡ, G = Σ_{I_c} g².
+            let mut ggl = [0.0; L];
+            {
+                let (g, p) = (&mut self.g[..n], &self.p[..n]);
+                for_lanes!(n, |i, l| {
+                    let v = g[i] - gbar;
+                    g[i] = v;
+                    ggl[l] += if p[i] > 0.0 { v * v } else { 0.0 };
+                });
             }
+            let gg: f64 = ggl.iter().sum();
+            // Step 4: conjugate direction t = g + δ (G/G_old) t on I_c, 0 elsewhere.
             let beta = if g_old > 0.0 { delta * gg / g_old } else { 0.0 };
-            for i in 0..n {
-                self.t[i] = if self.p[i] > 0.0 {
-                    self.g[i] + beta * self.t[i]
-                } else {
-                    0.0
-                };
+            for ((ti, &gi), &pi) in self.t.iter_mut().zip(&self.g).zip(&self.p) {
+                *ti = if pi > 0.0 { gi + beta * *ti } else { 0.0 };
             }
             g_old = gg;
-            self.p_old.copy_from_slice(&self.p);
 
             let mut tau = 0.0;
             if nc > 0 && gg > 0.0 {
                 // Step 5: r = F t (minus its mean on I_c in force mode).
                 self.conv.apply(&self.t, &mut self.r);
                 self.n_conv += 1;
-                let (mut rsum, mut gt, mut rt) = (0.0, 0.0, 0.0);
-                for i in 0..n {
-                    if self.p[i] > 0.0 {
-                        rsum += self.r[i];
-                        gt += self.g[i] * self.t[i];
-                        rt += self.r[i] * self.t[i];
-                    }
+                // Step 6: τ = Σ g t / Σ (r − r̄) t over I_c (t = 0 outside I_c).
+                let (mut rsl, mut tsl, mut gtl, mut rtl) = ([0.0; L], [0.0; L], [0.0; L], [0.0; L]);
+                {
+                    let (r, t, g, p) = (&self.r[..n], &self.t[..n], &self.g[..n], &self.p[..n]);
+                    for_lanes!(n, |i, l| {
+                        let ti = t[i];
+                        gtl[l] += g[i] * ti;
+                        rtl[l] += r[i] * ti;
+                        tsl[l] += ti;
+                        rsl[l] += if p[i] > 0.0 { r[i] } else { 0.0 };
+                    });
                 }
+                let (rsum, tsum, gt) = (
+                    rsl.iter().sum::<f64>(),
+                    tsl.iter().sum::<f64>(),
+                    gtl.iter().sum::<f64>(),
+                );
+                let mut rt: f64 = rtl.iter().sum();
                 if is_force {
-                    let rbar = rsum / nc as f64;
-                    let tsum: f64 = self.t.iter().sum();
-                    rt -= rbar * tsum;
+                    rt -= rsum / nc as f64 * tsum;
                 }
-                // Step 6: step length.
                 tau = gt / rt;
                 if !tau.is_finite() || rt <= 0.0 {
                     return Err(BoussinesqError::NumericalBreakdown {
@@ -586,66 +615,104 @@ impl BoussinesqSolver {
                 }
             }
 
-            // Steps 7–9: update, projection onto p ≥ 0, overlap set I_ol = {p = 0, g < 0}.
+            // Steps 7–9: p ← p − τ t on I_c, projection onto p ≥ 0, overlap set
+            // I_ol = {p = 0, g < 0} gets p = −τ g (and resets the conjugacy, δ = 0).
             self.corr.clear();
             let mut overlap = false;
-            for i in 0..n {
-                if self.p_old[i] > 0.0 {
-                    let v = self.p_old[i] - tau * self.t[i];
-                    if v > 0.0 {
-                        self.p[i] = v;
-                    } else if self.g[i] < 0.0 && tau > 0.0 {
-                        // Clipped but interpenetrating: belongs to I_ol.
+            let mut psl = [0.0; L];
+            {
+                let (p, p_old, g, t) = (
+                    &mut self.p[..n],
+                    &mut self.p_old[..n],
+                    &self.g[..n],
+                    &self.t[..n],
+                );
+                let corr = &mut self.corr;
+                for_lanes!(n, |i, l| {
+                    let po = p[i];
+                    p_old[i] = po;
+                    let gi = g[i];
+                    let pn = if po > 0.0 {
+                        let v = po - tau * t[i];
+                        if v > 0.0 {
+                            v
+                        } else {
+                            let pn = if gi < 0.0 && tau > 0.0 {
+                                overlap = true;
+                                -tau * gi
+                            } else {
+                                0.0
+                            };
+                            corr.push((i, pn - v));
+                            pn
+                        }
+                    } else if gi < 0.0 {
                         overlap = true;
-                        self.p[i] = -tau * self.g[i];
-                        self.corr.push((i, self.p[i] - v));
+                        // With an empty contact set (approach mode, first iteration) τ = 0:
+                        // use a local estimate of the pressure closing the interference.
+                        let pn = if tau > 0.0 {
+                            -tau * gi
+                        } else {
+                            -gi / (4.0 * f00)
+                        };
+                        corr.push((i, pn));
+                        pn
                     } else {
-                        self.p[i] = 0.0;
-                        self.corr.push((i, -v));
-                    }
-                } else if self.g[i] < 0.0 {
-                    overlap = true;
-                    let v = -tau * self.g[i];
-                    let v = if tau > 0.0 {
-                        v
-                    } else {
-                        // First iteration with an empty contact set (approach mode): local
-                        // estimate of the pressure needed to close the interference.
-                        -self.g[i] / (4.0 * f00)
+                        0.0
                     };
-                    self.p[i] = v;
-                    self.corr.push((i, v));
-                }
+                    p[i] = pn;
+                    psl[l] += pn;
+                });
             }
+            let psum: f64 = psl.iter().sum();
             delta = if overlap { 0.0 } else { 1.0 };
 
-            // Step 10: force balance.
-            let mut scale = 1.0;
-            if let Control::Force(q) = control {
-                let sum: f64 = self.p.iter().sum();
-                scale = q / (ds * sum);
-                if !scale.is_finite() {
-                    return Err(BoussinesqError::NumericalBreakdown {
-                        iteration: iterations,
-                    });
-                }
-                if scale != 1.0 {
-                    self.p.iter_mut().for_each(|p| *p *= scale);
-                }
+            // Step 10: force balance p ← p Q / (ΔS Σ p).
+            let scale = match control {
+                Control::Force(q) => q / (ds * psum),
+                Control::Approach(_) => 1.0,
+            };
+            if !scale.is_finite() {
+                return Err(BoussinesqError::NumericalBreakdown {
+                    iteration: iterations,
+                });
             }
 
-            // Displacement update u(p): linear part, sparse corrections or full FFT.
+            // Scale, displacement update (linear part, then sparse corrections or full FFT),
+            // and the pressure change of step 11.
             since_recompute += 1;
-            if since_recompute >= self.options.recompute_interval
+            let full = since_recompute >= self.options.recompute_interval
                 || self.corr.len() > self.options.sparse_update_max_cells
-                || tau == 0.0
-            {
+                || tau == 0.0;
+            let (mut dsl, mut psl) = ([0.0; L], [0.0; L]);
+            if full {
+                {
+                    let (p, p_old) = (&mut self.p[..n], &self.p_old[..n]);
+                    for_lanes!(n, |i, l| {
+                        let v = p[i] * scale;
+                        p[i] = v;
+                        dsl[l] += (v - p_old[i]).abs();
+                        psl[l] += v;
+                    });
+                }
                 self.conv.apply(&self.p, &mut self.u);
                 self.n_conv += 1;
                 since_recompute = 0;
             } else {
-                for i in 0..n {
-                    self.u[i] = scale * (self.u[i] - tau * self.r[i]);
+                {
+                    let (p, p_old, u, r) = (
+                        &mut self.p[..n],
+                        &self.p_old[..n],
+                        &mut self.u[..n],
+                        &self.r[..n],
+                    );
+                    for_lanes!(n, |i, l| {
+                        let v = p[i] * scale;
+                        p[i] = v;
+                        dsl[l] += (v - p_old[i]).abs();
+                        psl[l] += v;
+                        u[i] = scale * (u[i] - tau * r[i]);
+                    });
                 }
                 let nx = self.grid.nx;
                 for &(k, v) in &self.corr {
@@ -654,11 +721,7 @@ impl BoussinesqSolver {
             }
 
             // Step 11: convergence on the relative pressure change.
-            let (mut dsum, mut psum) = (0.0, 0.0);
-            for i in 0..n {
-                dsum += (self.p[i] - self.p_old[i]).abs();
-                psum += self.p[i];
-            }
+            let (dsum, psum) = (dsl.iter().sum::<f64>(), psl.iter().sum::<f64>());
             eps = if psum > 0.0 { dsum / psum } else { 0.0 };
             if !eps.is_finite() {
                 return Err(BoussinesqError::NumericalBreakdown {
@@ -667,6 +730,12 @@ impl BoussinesqSolver {
             }
             if eps < tol {
                 converged = true;
+            }
+            if std::env::var_os("BQ_DEBUG").is_some() {
+                eprintln!(
+                    "DBG n={n} it={iterations} eps={eps:.3e} nc={nc} corr={} overlap={overlap} tau={tau:.3e}",
+                    self.corr.len()
+                );
             }
         }
 

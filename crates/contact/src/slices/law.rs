@@ -22,7 +22,7 @@ pub const ISO_TS_16281_CONSTANT: f64 = 35948.0;
 /// force), `L_s` the slice length (m).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum SliceLaw {
-    /// Inner ring, seed 000 eq. (2.3) (literature ref. [54] of the seed):
+    /// Inner ring, seed 000 eq. (2.3) (literature ref. \[54\] of the seed):
     /// `δ_i = 3.17 (d_m/2)^0.08 (Q(1−ν²)/(E L_s))^0.92` in N, mm, MPa (⚠ F-15: dimensionally
     /// inhomogeneous, evaluated in seed units). Inverted exactly as the power law (2.9) with
     /// `α_i = 1/0.92`, `c_i = 3.17 (d_m/2)^0.08 ((1−ν²)/E)^0.92`.

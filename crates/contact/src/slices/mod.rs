@@ -11,7 +11,6 @@
 //! their seed units (N, mm, MPa; ⚠ F-15) and converted.
 
 pub mod law;
-mod pow;
 pub mod roller;
 pub mod solve;
 

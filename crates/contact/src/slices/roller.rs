@@ -21,10 +21,6 @@
 
 use super::SliceError;
 use super::law::SliceLaw;
-use super::pow::pow_pos;
-
-/// Slices per chunk of the vectorised evaluation loop.
-const CHUNK: usize = 8;
 
 /// Resultants of one slice-set evaluation and their Jacobian with respect to `(δ0, φ)`.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -233,12 +229,35 @@ impl SlicedRoller {
 
     /// Core loop in terms of `t = tan φ`: returns the resultants with derivatives with respect
     /// to `(δ0, t)` and, when `POTENTIAL`, the elastic energy `Σ Q_s δ_s/(n+1)`.
+    ///
+    /// Exponents with an exact cheaper form (1, 1.5, 2) avoid `powf` (e.g. Hertz point-contact
+    /// laws `K δ^1.5`); the seed/ISO exponents (1/0.92, 1/0.91, 10/9) use `powf`.
     #[inline(always)]
     pub(crate) fn eval_tan<const STORE: bool, const POTENTIAL: bool>(
         &self,
         approach: f64,
         t: f64,
         forces: &mut [f64],
+    ) -> (SliceLoad, f64) {
+        let n = self.exponent;
+        if n == 1.0 {
+            self.eval_loop::<STORE, POTENTIAL>(approach, t, forces, |d| d)
+        } else if n == 1.5 {
+            self.eval_loop::<STORE, POTENTIAL>(approach, t, forces, |d| d * d.sqrt())
+        } else if n == 2.0 {
+            self.eval_loop::<STORE, POTENTIAL>(approach, t, forces, |d| d * d)
+        } else {
+            self.eval_loop::<STORE, POTENTIAL>(approach, t, forces, |d| d.powf(n))
+        }
+    }
+
+    #[inline(always)]
+    fn eval_loop<const STORE: bool, const POTENTIAL: bool>(
+        &self,
+        approach: f64,
+        t: f64,
+        forces: &mut [f64],
+        pow: impl Fn(f64) -> f64,
     ) -> (SliceLoad, f64) {
         let n = self.exponent;
         let x = &self.positions[..];
@@ -251,43 +270,29 @@ impl SlicedRoller {
         let mut s2 = 0.0; // Σ k' x²
         let mut energy = 0.0;
         let mut loaded = 0usize;
-        // Chunks of CHUNK slices: the deflections and the powers δ^n are computed branch-free
-        // (vectorised by LLVM), then the loaded slices are accumulated.
-        let len = x.len();
-        let mut i0 = 0;
-        while i0 < len {
-            let w = (len - i0).min(CHUNK);
-            let mut d = [1.0_f64; CHUNK];
-            for j in 0..w {
-                d[j] = approach + x[i0 + j] * t - z[i0 + j];
-            }
-            let mut p = [0.0_f64; CHUNK];
-            for j in 0..CHUNK {
-                p[j] = pow_pos(d[j].max(f64::MIN_POSITIVE), n);
-            }
-            for j in 0..w {
-                let i = i0 + j;
-                let dj = d[j];
-                let mut f = 0.0;
-                if dj > 0.0 {
-                    f = k[i] * p[j];
-                    let kp = n * f / dj;
-                    let xi = x[i];
-                    q += f;
-                    m += f * xi;
-                    s0 += kp;
-                    s1 += kp * xi;
-                    s2 += kp * xi * xi;
-                    if POTENTIAL {
-                        energy += f * dj;
-                    }
-                    loaded += 1;
+        // `powf` is kept: a branch-free, vectorisable exp/ln replacement (tried, ≈1e-15
+        // accurate) was no faster on baseline x86-64 (SSE2) and only ≈1.7× faster with
+        // AVX2/FMA, while the whole 30-slice evaluation already fits the 1 µs budget.
+        for i in 0..x.len() {
+            let d = approach + x[i] * t - z[i];
+            let mut f = 0.0;
+            if d > 0.0 {
+                f = k[i] * pow(d);
+                let kp = n * f / d;
+                let xi = x[i];
+                q += f;
+                m += f * xi;
+                s0 += kp;
+                s1 += kp * xi;
+                s2 += kp * xi * xi;
+                if POTENTIAL {
+                    energy += f * d;
                 }
-                if STORE {
-                    forces[i] = f;
-                }
+                loaded += 1;
             }
-            i0 += w;
+            if STORE {
+                forces[i] = f;
+            }
         }
         (
             SliceLoad {

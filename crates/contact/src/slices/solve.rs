@@ -215,7 +215,7 @@ impl SlicedRoller {
             let h11 = load.dforce_dapproach;
             let h12 = load.dforce_dtilt / ls;
             let h22 = load.dmoment_dtilt / (ls * ls);
-            if !(h11 > 0.0) {
+            if h11.is_nan() || h11 <= 0.0 {
                 // nothing loaded (cannot happen after an accepted step from a loaded state,
                 // but be safe): reload at the current tilt
                 let (d, k) = self.solve_approach_tan(force, theta / ls, options)?;
@@ -231,7 +231,7 @@ impl SlicedRoller {
                 let a11 = h11 + lambda * h11.max(floor);
                 let a22 = h22 + lambda * h22.max(floor);
                 let det = a11 * a22 - h12 * h12;
-                if !(det > 1e-13 * a11 * a22.max(floor)) {
+                if det.is_nan() || det <= 1e-13 * a11 * a22.max(floor) {
                     lambda = (10.0 * lambda).max(1e-10);
                     continue;
                 }

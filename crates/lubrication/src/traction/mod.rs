@@ -2,7 +2,7 @@
 //! dynamics (per slice, per integrator stage), the quasi-static model and the scuffing check.
 //!
 //! Laws ([`FrictionLaw`]):
-//! * [`FrictionLaw::Lubricated`] (seed 000): μ_hd from Muraki (1.4)–(1.9) ([`muraki`]) or a constant,
+//! * [`FrictionLaw::Lubricated`] (seed 000): μ_hd from Muraki (1.4)–(1.9) ([`mod@muraki`]) or a constant,
 //!   μ_bd from Kragelsky (2.10) ([`boundary`]) or a constant, blended by Λ (1.3) ([`mixed`]);
 //! * [`FrictionLaw::Seed001`]: asperity fraction + film shear + Blok flash temperature ([`flash`]);
 //! * [`FrictionLaw::TwoLevel`]: the regularised two-level law of SPEC §3.4 ([`two_level`]).
@@ -21,6 +21,7 @@ pub mod boundary;
 pub mod flash;
 pub mod mixed;
 pub mod muraki;
+pub mod table;
 pub mod two_level;
 
 pub use boundary::{BoundaryFriction, kragelsky};
@@ -34,6 +35,7 @@ use crate::error::LubError;
 use crate::film::{FilmFormula, FilmInputs, FilmSettings, film_core, resolve_formula};
 use crate::lubricant::{Lubricant, Property};
 use crate::regime::{FrictionRegime, LambdaDefinition};
+use table::{HotProps, PropertyTable};
 
 /// Hydrodynamic (full-film) friction law.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -90,7 +92,7 @@ pub struct TractionConfig {
 pub struct TractionModel {
     cfg: TractionConfig,
     lambda_def: LambdaDefinition,
-    muraki_needs_kf: bool,
+    table: Option<PropertyTable>,
 }
 
 /// Bit set of warnings raised by one evaluation (SPEC §9.2 "emit a warning with the flag id").
@@ -172,7 +174,7 @@ pub struct Traction {
     pub half_width_m: f64,
     /// contact oil temperature after the flash iteration (seed 001) or the input temperature, K
     pub contact_temperature_k: f64,
-    /// film formula used
+    /// film formula used (`None` when the caller imposed the film or for `TwoLevel`)
     pub film_formula: Option<FilmFormula>,
     /// warnings
     pub warnings: Warnings,
@@ -188,7 +190,6 @@ impl TractionModel {
     pub fn new(cfg: TractionConfig) -> Result<TractionModel, LubError> {
         use Property::*;
         let mut needs: Vec<Property> = Vec::new();
-        let mut muraki_needs_kf = false;
         match &cfg.law {
             FrictionLaw::Lubricated(lf) => {
                 needs.extend([Viscosity, Alpha]);
@@ -205,7 +206,6 @@ impl TractionModel {
                         Rheology::Isothermal => needs.push(Tau0),
                         Rheology::ViscoElastic => {
                             needs.extend([Tau0, Beta0, Kappa, Kf]);
-                            muraki_needs_kf = true;
                         }
                     }
                     if let SmallShearRate::SpecLinearBranch { sigma_min } = m.small_shear_rate
@@ -254,10 +254,11 @@ impl TractionModel {
             FrictionLaw::Seed001(_) => LambdaDefinition::Tallian,
             _ => LambdaDefinition::Seed000,
         });
+        let table = cfg.oil.as_ref().map(PropertyTable::new);
         Ok(TractionModel {
             cfg,
             lambda_def,
-            muraki_needs_kf,
+            table,
         })
     }
 
@@ -287,6 +288,19 @@ impl TractionModel {
     /// The configuration.
     pub fn config(&self) -> &TractionConfig {
         &self.cfg
+    }
+
+    /// Oil properties used by the hot path at `t_k`: tabulated inside the oil's range (see
+    /// [`table`]), closed form outside. Missing properties are NaN.
+    #[inline]
+    pub fn hot_properties(&self, t_k: f64) -> Option<HotProps> {
+        let oil = self.cfg.oil.as_ref()?;
+        Some(
+            self.table
+                .as_ref()
+                .and_then(|tb| tb.get(t_k))
+                .unwrap_or_else(|| HotProps::closed_form(oil, t_k)),
+        )
     }
 
     /// Λ definition in use.
@@ -439,8 +453,12 @@ pub fn traction(state: &ContactState, model: &TractionModel) -> Traction {
     };
 
     // --- oil properties at the (clamped) oil temperature
-    let eta0 = oil.dynamic_viscosity(t).unwrap_or(f64::NAN);
-    let alpha = oil.pressure_viscosity(t).unwrap_or(f64::NAN);
+    let pr = model
+        .table
+        .as_ref()
+        .and_then(|tb| tb.get(t))
+        .unwrap_or_else(|| HotProps::closed_form(oil, t));
+    let (eta0, alpha) = (pr.eta0, pr.alpha);
 
     // --- film
     let (formula, mismatch) = resolve_formula(cfg.film.formula, &hz);
@@ -450,20 +468,11 @@ pub fn traction(state: &ContactState, model: &TractionModel) -> Traction {
     let (hc, hm) = match state.film_thickness_m {
         Some(h) => (h, h),
         None => {
-            let seed001 = formula == FilmFormula::Seed001;
             let inp = FilmInputs {
                 eta0,
                 alpha,
-                beta0: if seed001 {
-                    oil.beta0(t).unwrap_or(f64::NAN)
-                } else {
-                    0.0
-                },
-                k_f: if seed001 {
-                    oil.thermal_conductivity(t).unwrap_or(f64::NAN)
-                } else {
-                    1.0
-                },
+                beta0: pr.beta0,
+                k_f: pr.k_f,
                 u: u_abs,
                 q,
                 e: state.reduced_modulus_pa,
@@ -493,15 +502,11 @@ pub fn traction(state: &ContactState, model: &TractionModel) -> Traction {
                     eta0,
                     alpha,
                     roelands_z: oil.roelands_z,
-                    shear_modulus: oil.shear_modulus(t).unwrap_or(f64::NAN),
-                    tau0: oil.eyring_stress(t).unwrap_or(1.0),
-                    beta0: oil.beta0(t).unwrap_or(0.0),
+                    shear_modulus: pr.gamma,
+                    tau0: pr.tau0,
+                    beta0: pr.beta0,
                     kappa: oil.kappa_per_k_pa.unwrap_or(0.0),
-                    k_f: if model.muraki_needs_kf {
-                        oil.thermal_conductivity(t).unwrap_or(f64::NAN)
-                    } else {
-                        1.0
-                    },
+                    k_f: pr.k_f,
                 },
                 ms,
             );
@@ -539,11 +544,11 @@ pub fn traction(state: &ContactState, model: &TractionModel) -> Traction {
         max_pressure_pa: hz.max_pressure_pa,
         half_width_m: hz.half_width_m,
         contact_temperature_k: t_in,
-        film_formula: Some(if state.film_thickness_m.is_some() {
-            FilmFormula::Auto
+        film_formula: if state.film_thickness_m.is_some() {
+            None
         } else {
-            formula
-        }),
+            Some(formula)
+        },
         warnings: Warnings(w),
     }
 }

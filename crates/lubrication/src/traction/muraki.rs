@@ -152,7 +152,9 @@ pub fn dimensionless_stress(
     }
     match mode {
         SmallShearRate::Asinh => {
-            let l = sigma.asinh();
+            // sinh⁻¹σ = ln(1 + σ + σ²/(1 + √(1 + σ²))) (cheaper than std's hypot-based asinh,
+            // no cancellation for small σ)
+            let l = (sigma + sigma * sigma / (1.0 + (1.0 + sigma * sigma).sqrt())).ln_1p();
             if d * l >= 2.0 * sigma {
                 let x = phi * sigma;
                 (
@@ -210,7 +212,7 @@ pub fn muraki(inp: &MurakiInputs, settings: &MurakiSettings) -> MurakiOutput {
     let phi = match settings.rheology {
         Rheology::Isothermal => 0.0,
         _ => {
-            let zeta = 0.97 * b.sqrt() / (std::f64::consts::PI * settings.solid.krc() * u).sqrt()
+            let zeta = 0.97 * (b / (std::f64::consts::PI * settings.solid.krc() * u)).sqrt()
                 + h / (12.0 * inp.k_f);
             (inp.beta0 + inp.kappa * p) * zeta * tau0 * tau0 * h / eta_ni
         }

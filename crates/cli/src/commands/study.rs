@@ -1,0 +1,336 @@
+//! `rolldyn study seed004 [--out DIR]`: re-runs a seed's validation study, prints its tables
+//! (Markdown, as in VALIDATION.md) and writes CSV tables and SVG plots.
+
+use crate::failure::Failure;
+use crate::output::{out_dir, write_csv};
+use rolldyn_plot::{Field, Labels, Series, heat_map, line_plot};
+use rolldyn_validation::seed004::{self, LOADS_N, PROFILES, TILTS_ARCMIN};
+use std::path::{Path, PathBuf};
+
+#[derive(Clone, Copy, clap::ValueEnum)]
+pub enum Study {
+    /// Seed 004: grid study (V-01), profile study (V-02), slices vs Boussinesq.
+    Seed004,
+}
+
+#[derive(clap::Args)]
+pub struct Args {
+    #[arg(value_enum)]
+    pub study: Study,
+    /// Folder for CSV tables and SVG plots.
+    #[arg(long, default_value = "docs/validation")]
+    pub out: PathBuf,
+}
+
+pub fn run(args: Args) -> Result<(), Failure> {
+    let dir = out_dir(&args.out)?;
+    match args.study {
+        Study::Seed004 => seed004_study(&dir),
+    }
+}
+
+fn mm_mpa(points: &[(f64, f64)]) -> Vec<(f64, f64)> {
+    points.iter().map(|p| (p.0 * 1e3, p.1 * 1e-6)).collect()
+}
+
+fn seed004_study(dir: &Path) -> Result<(), Failure> {
+    grid_study(dir)?;
+    profile_study(dir)?;
+    concentration_study(dir)?;
+    slices_study(dir)
+}
+
+fn grid_study(dir: &Path) -> Result<(), Failure> {
+    println!("## V-01 seed 004 Table 2 at 1167 N (crowned 3.2 µm, no skew)\n");
+    println!(
+        "| grid | seed approach mm | rolldyn | err | seed p_max MPa | rolldyn | err | seed p_mid MPa | rolldyn | err | iterations | solve ms |"
+    );
+    println!("|---|---|---|---|---|---|---|---|---|---|---|---|");
+    let rows = seed004::grid_study(1167.0);
+    let err = |a: f64, b: f64| 100.0 * (a - b) / b;
+    let mut series = Vec::new();
+    for (seed, r) in &rows {
+        println!(
+            "| {}/{} | {:.6} | {:.6} | {:+.1} % | {:.0} | {:.0} | {:+.1} % | {:.0} | {:.0} | {:+.1} % | {} | {:.2} |",
+            seed.cells_along,
+            seed.cells_across,
+            seed.approach_mm,
+            r.approach_m * 1e3,
+            err(r.approach_m * 1e3, seed.approach_mm),
+            seed.max_pressure_mpa,
+            r.max_pressure_pa * 1e-6,
+            err(r.max_pressure_pa * 1e-6, seed.max_pressure_mpa),
+            seed.mid_pressure_mpa,
+            r.mid_pressure_pa * 1e-6,
+            err(r.mid_pressure_pa * 1e-6, seed.mid_pressure_mpa),
+            r.iterations,
+            r.solve_time_s * 1e3
+        );
+        series.push((
+            format!("{}/{}", seed.cells_along, seed.cells_across),
+            mm_mpa(&r.central_line),
+        ));
+    }
+    write_csv(
+        &dir.join("v01-grid-study.csv"),
+        &[
+            "cells_along",
+            "cells_across",
+            "seed_approach_m",
+            "approach_m",
+            "seed_max_pressure_pa",
+            "max_pressure_pa",
+            "seed_mid_pressure_pa",
+            "mid_pressure_pa",
+            "iterations",
+        ],
+        rows.iter().map(|(s, r)| {
+            vec![
+                s.cells_along as f64,
+                s.cells_across as f64,
+                s.approach_mm * 1e-3,
+                r.approach_m,
+                s.max_pressure_mpa * 1e6,
+                r.max_pressure_pa,
+                s.mid_pressure_mpa * 1e6,
+                r.mid_pressure_pa,
+                r.iterations as f64,
+            ]
+        }),
+    )?;
+    let plotted: Vec<Series> = series
+        .iter()
+        .map(|(l, p)| Series {
+            label: l,
+            points: p,
+        })
+        .collect();
+    line_plot(
+        &dir.join("v01-grid-study.svg"),
+        &Labels {
+            title: "Seed 004 Table 2 grids, crowned 3.2 µm, 1167 N: pressure along the contact line",
+            x: "x along the roller, mm",
+            y: "pressure, MPa",
+        },
+        &plotted,
+    )?;
+    let finest = &rows.last().expect("seven grids").1;
+    if let Some(map) = &finest.map {
+        let (x0, x1, y0, y1) = map.extent;
+        let mpa: Vec<f64> = map.pressure.iter().map(|p| p * 1e-6).collect();
+        heat_map(
+            &dir.join("v01-pressure-map-350x9.svg"),
+            &Labels {
+                title: "Pressure map, 350 × 9 cells, 1167 N, MPa",
+                x: "x along the roller, mm",
+                y: "y, mm",
+            },
+            &Field {
+                values: &mpa,
+                nx: map.nx,
+                ny: map.ny,
+                extent: (x0 * 1e3, x1 * 1e3, y0 * 1e3, y1 * 1e3),
+            },
+        )?;
+    }
+    let stated = seed004::solve(seed004::TABLE2_PROFILE, 0.0, 2334.0, 150, 3);
+    println!(
+        "\nAt the stated 2334 N (150/3): approach {:.5} mm, p_max {:.0} MPa, p_mid {:.0} MPa.\n",
+        stated.approach_m * 1e3,
+        stated.max_pressure_pa * 1e-6,
+        stated.mid_pressure_pa * 1e-6
+    );
+    Ok(())
+}
+
+fn profile_study(dir: &Path) -> Result<(), Failure> {
+    let cases = seed004::profile_study(150, 15, 0.45e-3);
+    println!("## V-02 profile study (150 × 15 cells over 7.5 × 0.45 mm)\n");
+    println!("| profile | load N | skew ′ | p_max MPa | p_mid MPa | K | edge ratio |");
+    println!("|---|---|---|---|---|---|---|");
+    for c in &cases {
+        println!(
+            "| {} | {:.0} | {:.0} | {:.0} | {:.0} | {:.3} | {:.3} |",
+            PROFILES[c.profile].1,
+            c.load_n,
+            c.tilt_arcmin,
+            c.report.max_pressure_pa * 1e-6,
+            c.report.mid_pressure_pa * 1e-6,
+            c.report.concentration_factor,
+            c.edge_ratio(0.3)
+        );
+    }
+    write_csv(
+        &dir.join("v02-profile-study.csv"),
+        &[
+            "profile",
+            "load_n",
+            "skew_arcmin",
+            "max_pressure_pa",
+            "mid_pressure_pa",
+            "concentration_factor",
+            "edge_ratio",
+        ],
+        cases.iter().map(|c| {
+            vec![
+                (c.profile + 1) as f64,
+                c.load_n,
+                c.tilt_arcmin,
+                c.report.max_pressure_pa,
+                c.report.mid_pressure_pa,
+                c.report.concentration_factor,
+                c.edge_ratio(0.3),
+            ]
+        }),
+    )?;
+    for load in LOADS_N {
+        for tilt in TILTS_ARCMIN {
+            let curves: Vec<(&str, Vec<(f64, f64)>)> = cases
+                .iter()
+                .filter(|c| c.load_n == load && c.tilt_arcmin == tilt)
+                .map(|c| (PROFILES[c.profile].1, mm_mpa(&c.report.central_line)))
+                .collect();
+            let series: Vec<Series> = curves
+                .iter()
+                .map(|(l, p)| Series {
+                    label: l,
+                    points: p,
+                })
+                .collect();
+            line_plot(
+                &dir.join(format!("v02-profiles-{load:.0}N-{tilt:.0}arcmin.svg")),
+                &Labels {
+                    title: &format!(
+                        "Seed 004 profiles, {load:.0} N, skew {tilt:.0}′: pressure along the contact line"
+                    ),
+                    x: "x along the roller, mm",
+                    y: "pressure, MPa",
+                },
+                &series,
+            )?;
+        }
+    }
+    println!();
+    Ok(())
+}
+
+fn concentration_study(dir: &Path) -> Result<(), Failure> {
+    let loads: Vec<f64> = (2..=24).map(|k| 125.0 * k as f64).collect();
+    let k = seed004::concentration_vs_load(&loads, 300, 61, 0.45e-3);
+    println!("## V-02 concentration factor K = p_max/p̄ vs load, no skew (300 × 61 cells)\n");
+    print!("| load N |");
+    PROFILES.iter().for_each(|p| print!(" {} |", p.1));
+    println!("\n|---|---|---|---|---|---|");
+    for (i, q) in loads.iter().enumerate() {
+        print!("| {q:.0} |");
+        k.iter().for_each(|rows| print!(" {:.3} |", rows[i].1));
+        println!();
+    }
+    write_csv(
+        &dir.join("v02-concentration-factor.csv"),
+        &[
+            "load_n",
+            "k_straight",
+            "k_crowned_3_2um",
+            "k_crowned_6_5um",
+            "k_log_small",
+            "k_log_large",
+        ],
+        loads.iter().enumerate().map(|(i, &q)| {
+            let mut row = vec![q];
+            row.extend(k.iter().map(|rows| rows[i].1));
+            row
+        }),
+    )?;
+    let series: Vec<Series> = k
+        .iter()
+        .zip(PROFILES.iter())
+        .map(|(rows, p)| Series {
+            label: p.1,
+            points: rows,
+        })
+        .collect();
+    line_plot(
+        &dir.join("v02-concentration-factor.svg"),
+        &Labels {
+            title: "Seed 004: stress concentration factor K = p_max / p_mean, no skew",
+            x: "roller load, N",
+            y: "K",
+        },
+        &series,
+    )?;
+    println!();
+    Ok(())
+}
+
+fn slices_study(dir: &Path) -> Result<(), Failure> {
+    println!(
+        "## Slices (ISO/TS 16281 laminae, 30 slices) vs Boussinesq (150 × 15), 1167 N, no skew\n"
+    );
+    println!(
+        "| profile | approach slices µm | Boussinesq µm | diff | p_max slices MPa | Boussinesq MPa | diff |"
+    );
+    println!("|---|---|---|---|---|---|---|");
+    let mut rows = Vec::new();
+    for (index, profile) in PROFILES.iter().enumerate() {
+        let s = seed004::slices_vs_boussinesq(index, 1167.0, 150, 15, 0.45e-3);
+        let diff = |a: f64, b: f64| 100.0 * (a - b) / b;
+        println!(
+            "| {} | {:.3} | {:.3} | {:+.1} % | {:.0} | {:.0} | {:+.1} % |",
+            profile.1,
+            s.slices.approach_m * 1e6,
+            s.boussinesq.approach_m * 1e6,
+            diff(s.slices.approach_m, s.boussinesq.approach_m),
+            s.slices.max_pressure_pa * 1e-6,
+            s.boussinesq.max_pressure_pa * 1e-6,
+            diff(s.slices.max_pressure_pa, s.boussinesq.max_pressure_pa)
+        );
+        rows.push(vec![
+            (index + 1) as f64,
+            s.slices.approach_m,
+            s.boussinesq.approach_m,
+            s.slices.max_pressure_pa,
+            s.boussinesq.max_pressure_pa,
+        ]);
+        let to_n_per_mm = |p: &[(f64, f64)]| {
+            p.iter()
+                .map(|q| (q.0 * 1e3, q.1 * 1e-3))
+                .collect::<Vec<_>>()
+        };
+        let (a, b) = (
+            to_n_per_mm(&s.slice_line_load),
+            to_n_per_mm(&s.boussinesq_line_load),
+        );
+        line_plot(
+            &dir.join(format!("slices-vs-boussinesq-{}.svg", index + 1)),
+            &Labels {
+                title: &format!("Load per length along the roller, {}, 1167 N", profile.1),
+                x: "x along the roller, mm",
+                y: "load per length, N/mm",
+            },
+            &[
+                Series {
+                    label: "slices (ISO/TS 16281)",
+                    points: &a,
+                },
+                Series {
+                    label: "Boussinesq",
+                    points: &b,
+                },
+            ],
+        )?;
+    }
+    write_csv(
+        &dir.join("slices-vs-boussinesq.csv"),
+        &[
+            "profile",
+            "approach_slices_m",
+            "approach_boussinesq_m",
+            "max_pressure_slices_pa",
+            "max_pressure_boussinesq_pa",
+        ],
+        rows.into_iter(),
+    )?;
+    println!("\nPlots and CSV tables written to {}", dir.display());
+    Ok(())
+}

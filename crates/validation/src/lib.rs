@@ -1,0 +1,6 @@
+//! The seeds' validation studies, run on rolldyn's example models.
+//!
+//! Each module reproduces one seed's study and returns plain data; `rolldyn study` prints and
+//! plots it, and the tests in `tests/` compare it with the seed's numbers (VALIDATION.md).
+
+pub mod seed004;
