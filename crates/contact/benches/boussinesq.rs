@@ -10,6 +10,7 @@ use rolldyn_contact::boussinesq::{
     combined_compliance,
 };
 use std::hint::black_box;
+use std::time::Duration;
 
 const R_RED: f64 = 3.139e-3; // R' roller Ø7.5 mm / inner raceway Ø38.5 mm (SPEC V-04)
 
@@ -37,14 +38,13 @@ fn case(c: &mut Criterion, name: &str, grid: Grid, q: f64) {
     let mut solver = BoussinesqSolver::new(grid, compliance, BoussinesqOptions::default()).unwrap();
     let sol = solver.solve_force(&gap, q).unwrap();
     println!(
-        "{name}: {}x{} cells, mode {:?}, nfx {}, iterations {} (+{} coarse), convolutions {}, converged {}, residual {:.1e}, \
+        "{name}: {}x{} cells, mode {:?}, nfx {}, iterations {}, convolutions {}, converged {}, residual {:.1e}, \
          approach {:.5} mm, p_max {:.0} MPa, p_mid {:.0} MPa, contact cells {}",
         grid.nx,
         grid.ny,
         solver.convolution_mode(),
         solver_fft_len(&solver),
         sol.iterations,
-        sol.coarse_iterations,
         sol.convolutions,
         sol.converged,
         sol.residual,
@@ -106,7 +106,10 @@ fn convolutions(c: &mut Criterion) {
 
 criterion_group! {
     name = group;
-    config = Criterion::default().sample_size(10);
+    config = Criterion::default()
+        .sample_size(10)
+        .warm_up_time(Duration::from_secs(1))
+        .measurement_time(Duration::from_secs(3));
     targets = benches, convolutions
 }
 criterion_main!(group);

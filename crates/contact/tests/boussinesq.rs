@@ -9,6 +9,34 @@ use rolldyn_contact::boussinesq::{
     combined_compliance, direct_convolution, influence_coefficient,
 };
 
+/// Counts heap allocations of the current thread (tests run in parallel threads).
+struct CountingAlloc;
+
+thread_local! {
+    static ALLOCS: std::cell::Cell<usize> = const { std::cell::Cell::new(0) };
+}
+
+unsafe impl std::alloc::GlobalAlloc for CountingAlloc {
+    unsafe fn alloc(&self, layout: std::alloc::Layout) -> *mut u8 {
+        let _ = ALLOCS.try_with(|c| c.set(c.get() + 1));
+        unsafe { std::alloc::System.alloc(layout) }
+    }
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: std::alloc::Layout) {
+        unsafe { std::alloc::System.dealloc(ptr, layout) }
+    }
+    unsafe fn realloc(&self, ptr: *mut u8, layout: std::alloc::Layout, size: usize) -> *mut u8 {
+        let _ = ALLOCS.try_with(|c| c.set(c.get() + 1));
+        unsafe { std::alloc::System.realloc(ptr, layout, size) }
+    }
+}
+
+#[global_allocator]
+static GLOBAL: CountingAlloc = CountingAlloc;
+
+fn allocations() -> usize {
+    ALLOCS.with(|c| c.get())
+}
+
 const E: f64 = 201e9;
 const NU: f64 = 0.3;
 
@@ -69,9 +97,11 @@ fn influence_asinh_equals_seed_log_form_and_is_symmetric() {
         (3.7e-4, 1.1e-4),
         (1.0e-3, 2.5e-5),
     ];
+    let mut worst = 0.0_f64;
     for &(x, y) in &pts {
         let f = influence_coefficient(x, y, b, a, c);
         let fl = influence_coefficient_log(x, y, b, a, c);
+        worst = worst.max(((f - fl) / fl).abs());
         // Same closed form, different grouping of logs: agreement to round-off. The far
         // point (1 mm ≈ 70 cells) loses ~3 digits to cancellation in the corner sum, so
         // 1e-11 relative is the justified bound (observed ≤ 1e-13 near, ~1e-12 far).
@@ -86,6 +116,7 @@ fn influence_asinh_equals_seed_log_form_and_is_symmetric() {
         }
         assert!(f.is_finite() && f > 0.0);
     }
+    println!("asinh vs log form: max rel. difference {worst:.1e}");
     // Self term finite and equal to Johnson's closed form for a rectangle:
     // f(0,0) = 2C [b asinh(a/b) + a asinh(b/a)]·2.
     let f00 = influence_coefficient(0.0, 0.0, b, a, c);
@@ -101,6 +132,7 @@ fn influence_asinh_equals_seed_log_form_and_is_symmetric() {
 fn fft_convolution_equals_direct_sum() {
     let c = compliance();
     let mut seed = 42;
+    let mut worst = 0.0_f64;
     for &(nx, ny) in &[
         (1, 1),
         (7, 1),
@@ -123,11 +155,13 @@ fn fft_convolution_equals_direct_sum() {
             // Twice to check that no state leaks between calls.
             conv.apply(&p, &mut u);
             let e = rel_max_diff(&u, &u_dir);
+            worst = worst.max(e);
             // FFT round-off is O(ε log N) ≈ 1e-15; the linear (zero-padded) convolution is
             // exact, so any wrap-around error would show up as O(1e-2).
             assert!(e < 1e-12, "{nx}x{ny} {mode:?}: rel. error {e:e}");
         }
     }
+    println!("FFT vs direct convolution: max rel. error {worst:.1e}");
 }
 
 fn small_grid(nx: usize, ny: usize) -> Grid {
@@ -229,21 +263,32 @@ fn hertz_line_contact_mid_length() {
     let p_hertz = (q_mid * e_prime / (2.0 * std::f64::consts::PI * R_RED)).sqrt();
     let b_hertz = (8.0 * q_mid * R_RED / (std::f64::consts::PI * e_prime)).sqrt();
     let p_nominal = (q / len * e_prime / (2.0 * std::f64::consts::PI * R_RED)).sqrt();
+    let rows_in_contact = (0..grid.ny)
+        .filter(|&j| sol.pressure_at(ic, j) > 0.0)
+        .count();
+    let half_width_mid = 0.5 * rows_in_contact as f64 * grid.dy;
+    let eb = half_width_mid / b_hertz - 1.0;
     let ep = sol.pressure_at_middle() / p_hertz - 1.0;
     println!(
-        "line: it {} p_mid {:.2} MPa, Hertz(q_mid) {:.2} MPa ({ep:+.2e}), Hertz(Q/L) {:.2} MPa, q_mid/(Q/L) {:.4}, half-width {:.4} vs {:.4} mm",
+        "line: it {} p_mid {:.2} MPa, Hertz(q_mid) {:.2} MPa ({ep:+.2e}), Hertz(Q/L) {:.2} MPa, \
+         q_mid/(Q/L) {:.4}, mid half-width {:.4} vs Hertz {:.4} mm ({eb:+.2e}), max half-width {:.4} mm",
         sol.iterations,
         sol.pressure_at_middle() * 1e-6,
         p_hertz * 1e-6,
         p_nominal * 1e-6,
         q_mid / (q / len),
-        sol.max_half_width_m() * 1e3,
-        b_hertz * 1e3
+        half_width_mid * 1e3,
+        b_hertz * 1e3,
+        sol.max_half_width_m() * 1e3
     );
     // 31 cells across the Hertz width: collocation error of the peak well below 1 %;
     // the end effect on the *local* relation p(q_mid) is O((b/L)²) ≈ 3e-4.
     assert!(ep.abs() < 0.01);
+    // Half-width from whole cells: ±1 cell (dy/b ≈ 6.5 %).
+    assert!(eb.abs() < 0.07);
     assert!(!sol.touches_edge_y);
+    // The ends of a straight roller carry more load (edge peaks): q_mid < Q/L.
+    assert!(q_mid < q / len);
 }
 
 #[test]
@@ -267,4 +312,118 @@ fn force_and_approach_modes_are_mutual_inverses() {
     // And back: the force solve reproduces the approach.
     let f2 = s.solve_force(&gap, a.force_n).unwrap();
     assert!((f2.approach_m / f.approach_m - 1.0).abs() < 1e-7);
+}
+
+#[test]
+fn convolution_modes_give_same_solution_and_warm_start() {
+    let grid = Grid::centered_extent(96, 11, 7.6e-3, 0.2e-3).unwrap();
+    let gap = grid.eval(roller_gap);
+    let mut sols = Vec::new();
+    for mode in [ConvolutionMode::Fft2d, ConvolutionMode::FftXDirectY] {
+        let opt = BoussinesqOptions {
+            convolution: mode,
+            ..Default::default()
+        };
+        let mut s = BoussinesqSolver::new(grid, compliance(), opt).unwrap();
+        assert_eq!(s.convolution_mode(), mode);
+        let sol = s.solve_force(&gap, 1167.0).unwrap();
+        assert!(sol.converged);
+        // Warm start from the converged field: the solution is already a fixed point.
+        let warm = s
+            .solve_force_with_guess(&gap, 1167.0, &sol.pressure)
+            .unwrap();
+        assert!(
+            warm.converged && warm.iterations <= 3,
+            "warm: {}",
+            warm.iterations
+        );
+        // Both at ε < 1e-10 on the same LCP.
+        assert!(rel_max_diff(&warm.pressure, &sol.pressure) < 1e-8);
+        sols.push(sol);
+    }
+    // Two evaluations of the same linear operator (differences ~1e-15): solutions agree to
+    // the CG tolerance.
+    assert!(rel_max_diff(&sols[0].pressure, &sols[1].pressure) < 1e-8);
+    let s = &sols[0];
+    // Derived outputs are consistent.
+    assert!((s.mean_pressure_pa() * s.contact_area_m2() - 1167.0).abs() < 1e-9 * 1167.0);
+    assert!(s.concentration_factor() > 1.0);
+    assert_eq!(s.central_line().len(), grid.nx);
+    assert!(s.contact_length_m() > 6.0e-3 && s.contact_length_m() <= 7.6e-3);
+    assert!(s.max_half_width_m() > 0.05e-3 && s.max_half_width_m() < 0.1e-3);
+    assert!(!s.touches_edge_x && !s.touches_edge_y);
+}
+
+#[test]
+fn degenerate_inputs_and_non_convergence_are_reported() {
+    let grid = Grid::centered_extent(32, 9, 7.6e-3, 0.2e-3).unwrap();
+    let gap = grid.eval(roller_gap);
+    let mut s = BoussinesqSolver::new(grid, compliance(), BoussinesqOptions::default()).unwrap();
+    // No load / no interference: zero pressure, converged.
+    let z = s.solve_force(&gap, 0.0).unwrap();
+    assert!(z.converged && z.force_n == 0.0 && z.cells_in_contact == 0);
+    let z = s.solve_approach(&gap, -1e-6).unwrap();
+    assert!(z.converged && z.force_n == 0.0);
+    // Invalid inputs are errors, not NaN.
+    assert!(s.solve_force(&gap[1..], 100.0).is_err());
+    assert!(s.solve_force(&gap, f64::NAN).is_err());
+    assert!(s.solve_force(&gap, -1.0).is_err());
+    let mut bad = gap.clone();
+    bad[5] = f64::NAN;
+    assert!(s.solve_approach(&bad, 1e-6).is_err());
+    assert!(BoussinesqSolver::new(grid, -1.0, BoussinesqOptions::default()).is_err());
+    let opt = BoussinesqOptions {
+        tolerance: 0.0,
+        ..Default::default()
+    };
+    assert!(BoussinesqSolver::new(grid, compliance(), opt).is_err());
+    // Iteration limit: flagged, finite, force still balanced.
+    let opt = BoussinesqOptions {
+        max_iterations: 3,
+        ..Default::default()
+    };
+    let mut s = BoussinesqSolver::new(grid, compliance(), opt).unwrap();
+    let r = s.solve_force(&gap, 1167.0).unwrap();
+    assert!(!r.converged && r.iterations == 3);
+    assert!(r.pressure.iter().all(|p| p.is_finite() && *p >= 0.0));
+    assert!(r.approach_m.is_finite() && r.residual.is_finite());
+    assert!((r.force_n / 1167.0 - 1.0).abs() < 1e-12);
+}
+
+#[test]
+fn iteration_loop_does_not_allocate() {
+    let grid = Grid::centered_extent(64, 20, 7.6e-3, 0.2e-3).unwrap();
+    let gap = grid.eval(roller_gap);
+    let table = InfluenceTable::new(&grid, compliance());
+    for mode in [ConvolutionMode::Fft2d, ConvolutionMode::FftXDirectY] {
+        let mut conv = Convolver::new(&table, mode);
+        let p = vec![1e9; grid.len()];
+        let mut u = vec![0.0; grid.len()];
+        conv.apply(&p, &mut u);
+        let before = allocations();
+        for _ in 0..3 {
+            conv.apply(&p, &mut u);
+        }
+        assert_eq!(
+            allocations(),
+            before,
+            "{mode:?}: Convolver::apply allocated"
+        );
+    }
+    // A solve allocates only its result: the count must not depend on the iterations done
+    // (tolerance unreachable, so both runs stop at max_iterations).
+    let mut counts = Vec::new();
+    for max_iterations in [5, 40] {
+        let opt = BoussinesqOptions {
+            tolerance: 1e-300,
+            max_iterations,
+            ..Default::default()
+        };
+        let mut s = BoussinesqSolver::new(grid, compliance(), opt).unwrap();
+        let before = allocations();
+        let r = s.solve_force(&gap, 1167.0).unwrap();
+        counts.push(allocations() - before);
+        assert_eq!(r.iterations, max_iterations);
+    }
+    assert_eq!(counts[0], counts[1], "allocations per solve: {counts:?}");
 }

@@ -1,6 +1,6 @@
 //! The cage (SPEC §1.5).
 
-use crate::error::{GeometryError, positive};
+use crate::error::{GeometryError, require_positive};
 use crate::mass::MassProperties;
 use crate::material::Material;
 
@@ -58,11 +58,11 @@ impl Cage {
     }
 
     pub fn validate(&self) -> Result<(), GeometryError> {
-        positive("cage.pocket_circumferential", self.pocket_circumferential)?;
-        positive("cage.pocket_axial", self.pocket_axial)?;
-        positive("cage.bar_contact_diameter", self.bar_contact_diameter)?;
-        positive("cage.inner_diameter", self.inner_diameter)?;
-        positive("cage.width", self.width)?;
+        require_positive("cage.pocket_circumferential", self.pocket_circumferential)?;
+        require_positive("cage.pocket_axial", self.pocket_axial)?;
+        require_positive("cage.bar_contact_diameter", self.bar_contact_diameter)?;
+        require_positive("cage.inner_diameter", self.inner_diameter)?;
+        require_positive("cage.width", self.width)?;
         if self.outer_diameter <= self.inner_diameter {
             return Err(GeometryError::new(
                 "cage.outer_diameter",

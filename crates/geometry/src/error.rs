@@ -18,8 +18,8 @@ impl GeometryError {
     }
 }
 
-/// Checks that a length-like value is finite and strictly positive.
-pub(crate) fn positive(key: &str, value: f64) -> Result<(), GeometryError> {
+/// Checks that a value is finite and strictly positive; the error names `key`.
+pub fn require_positive(key: &str, value: f64) -> Result<(), GeometryError> {
     if value.is_finite() && value > 0.0 {
         Ok(())
     } else {

@@ -15,7 +15,7 @@ mod roller;
 
 pub use bearing::{Clearance, CylindricalRollerBearing, Misalignment};
 pub use cage::{Cage, CageGuidance};
-pub use error::GeometryError;
+pub use error::{GeometryError, require_positive};
 pub use mass::MassProperties;
 pub use material::Material;
 pub use model::{BearingModel, RollerRacewayPair};

@@ -246,7 +246,9 @@ mod tests {
             chamfer: None,
             half_length: 2e-3,
         };
-        assert!((p.drop(-0.5e-3) - 0.5e-6).abs() < 1e-15);
+        assert!((p.drop(0.5e-3) - 0.5e-6).abs() < 1e-15);
+        // Signed x: left of the first point the first drop is held (asymmetric wear allowed).
+        assert_eq!(p.drop(-0.5e-3), 0.0);
         assert!((p.drop(1.5e-3) - 3e-6).abs() < 1e-15);
     }
 }

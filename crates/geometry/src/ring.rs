@@ -1,6 +1,6 @@
 //! Bearing rings: raceway, ribs (flanges) and guiding lands (SPEC §1.2).
 
-use crate::error::{GeometryError, positive};
+use crate::error::{GeometryError, require_positive};
 use crate::mass::MassProperties;
 use crate::material::Material;
 use crate::profile::Profile;
@@ -90,14 +90,14 @@ impl Ring {
 
     /// Validates the ring; `key` is `inner_ring` or `outer_ring`, `inner` tells which.
     pub fn validate(&self, key: &str, inner: bool) -> Result<(), GeometryError> {
-        positive(&format!("{key}.raceway_diameter"), self.raceway_diameter)?;
-        positive(&format!("{key}.width"), self.width)?;
+        require_positive(&format!("{key}.raceway_diameter"), self.raceway_diameter)?;
+        require_positive(&format!("{key}.width"), self.width)?;
         let body_key = if inner {
             "bore_diameter"
         } else {
             "outside_diameter"
         };
-        positive(&format!("{key}.{body_key}"), self.body_diameter)?;
+        require_positive(&format!("{key}.{body_key}"), self.body_diameter)?;
         let body_ok = if inner {
             self.body_diameter < self.raceway_diameter
         } else {
@@ -116,7 +116,7 @@ impl Ring {
         }
         for (i, rib) in self.ribs.iter().enumerate() {
             let rib_key = format!("{key}.ribs[{i}]");
-            positive(&format!("{rib_key}.diameter"), rib.diameter)?;
+            require_positive(&format!("{rib_key}.diameter"), rib.diameter)?;
             let stands_proud = if inner {
                 rib.diameter > self.raceway_diameter
             } else {
@@ -136,7 +136,7 @@ impl Ring {
             }
             match rib.face {
                 RibFace::ConvexTorus { radius, .. } | RibFace::ConcaveTorus { radius } => {
-                    positive(&format!("{rib_key}.face.radius"), radius)?
+                    require_positive(&format!("{rib_key}.face.radius"), radius)?
                 }
                 RibFace::Cone { angle } if angle.abs() >= std::f64::consts::FRAC_PI_4 => {
                     return Err(GeometryError::new(
@@ -148,7 +148,7 @@ impl Ring {
             }
         }
         if let Some(spacing) = self.rib_spacing {
-            positive(&format!("{key}.rib_spacing"), spacing)?;
+            require_positive(&format!("{key}.rib_spacing"), spacing)?;
             if spacing > self.width {
                 return Err(GeometryError::new(
                     format!("{key}.rib_spacing"),
@@ -157,7 +157,7 @@ impl Ring {
             }
         }
         if let Some(land) = self.guiding_land {
-            positive(&format!("{key}.guiding_land.width"), land.width)?;
+            require_positive(&format!("{key}.guiding_land.width"), land.width)?;
         }
         if self.roughness_ra < 0.0 {
             return Err(GeometryError::new(

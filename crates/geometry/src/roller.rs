@@ -1,6 +1,6 @@
 //! Rollers: body, end faces, profile, slices and mass properties (SPEC §1.3).
 
-use crate::error::{GeometryError, positive};
+use crate::error::{GeometryError, require_positive};
 use crate::mass::MassProperties;
 use crate::material::Material;
 use crate::profile::Profile;
@@ -84,8 +84,8 @@ impl Roller {
 
     /// Validates sizes and the profile; `key` prefixes are model-file paths.
     pub fn validate(&self) -> Result<(), GeometryError> {
-        positive("roller.diameter", self.diameter)?;
-        positive("roller.length", self.length)?;
+        require_positive("roller.diameter", self.diameter)?;
+        require_positive("roller.length", self.length)?;
         if self.slice_count == 0 || self.slice_count > 1000 {
             return Err(GeometryError::new(
                 "roller.slices",
@@ -124,8 +124,8 @@ pub(crate) fn validate_profile(
     use crate::profile::ProfileShape::*;
     let half = profile.half_length;
     if let Some(c) = profile.chamfer {
-        positive(&format!("{key}.chamfer.axial"), c.axial_length)?;
-        positive(&format!("{key}.chamfer.radius"), c.radius)?;
+        require_positive(&format!("{key}.chamfer.axial"), c.axial_length)?;
+        require_positive(&format!("{key}.chamfer.radius"), c.radius)?;
         if c.radial_height < 0.0 || !c.radial_height.is_finite() {
             return Err(GeometryError::new(
                 format!("{key}.chamfer.radial"),
@@ -167,7 +167,7 @@ pub(crate) fn validate_profile(
                     ),
                 ));
             }
-            positive(&format!("{key}.drop"), *drop)?;
+            require_positive(&format!("{key}.drop"), *drop)?;
             if *drop >= 0.5 * diameter {
                 return Err(GeometryError::new(
                     format!("{key}.drop"),
@@ -179,12 +179,12 @@ pub(crate) fn validate_profile(
                 ));
             }
             if let Some(r) = crown_radius {
-                positive(&format!("{key}.crown_radius"), *r)?;
+                require_positive(&format!("{key}.crown_radius"), *r)?;
             }
         }
         Logarithmic { k, c } => {
-            positive(&format!("{key}.k"), *k)?;
-            positive(&format!("{key}.c"), *c)?;
+            require_positive(&format!("{key}.k"), *k)?;
+            require_positive(&format!("{key}.c"), *c)?;
             if c * xe * xe >= 1.0 {
                 return Err(GeometryError::new(
                     format!("{key}.c"),
@@ -208,10 +208,10 @@ pub(crate) fn validate_profile(
             reduced_modulus,
             hertz_half_width,
         } => {
-            positive(&format!("{key}.design_load"), *design_load)?;
-            positive(&format!("{key}.effective_length"), *effective_length)?;
-            positive(&format!("{key}.reduced_modulus"), *reduced_modulus)?;
-            positive(&format!("{key}.hertz_half_width"), *hertz_half_width)?;
+            require_positive(&format!("{key}.design_load"), *design_load)?;
+            require_positive(&format!("{key}.effective_length"), *effective_length)?;
+            require_positive(&format!("{key}.reduced_modulus"), *reduced_modulus)?;
+            require_positive(&format!("{key}.hertz_half_width"), *hertz_half_width)?;
         }
         Polyline { points } => {
             if points.len() < 2 {

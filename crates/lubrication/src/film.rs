@@ -191,16 +191,29 @@ pub fn piezoviscous_elastic_point(
     if u <= 0.0 {
         return (0.0, true);
     }
-    let u_dim = eta0 * u / (e * rx);
-    let w = q / (e * rx * rx);
-    let g = alpha * e;
-    let u2 = u_dim * u_dim;
-    let g_v = g * w * w * w / u2;
-    let g_e = w.powf(8.0 / 3.0) / u2;
-    let uw = u_dim / w;
-    let h = 3.42 * rx * uw * uw * g_v.powf(0.49) * g_e.powf(0.17) * (1.0 - (-0.68 * k).exp());
-    (h, regime::pve_condition(g_v, g_e))
+    // Evaluated in logarithms (one exp instead of three powf): with g_V = G W³/U², g_E = W^{8/3}/U²,
+    // (U/W)² g_V^0.49 g_E^0.17 = G^0.49 U^0.68 W^(−2 + 1.47 + 0.17·8/3) exactly.
+    let ln_u = (eta0 * u / (e * rx)).ln();
+    let ln_w = (q / (e * rx * rx)).ln();
+    let ln_g = (alpha * e).ln();
+    let ln_gv = ln_g + 3.0 * ln_w - 2.0 * ln_u;
+    let ln_ge = 8.0 / 3.0 * ln_w - 2.0 * ln_u;
+    let ell = if k == 1.0 {
+        ONE_MINUS_EXP_068
+    } else {
+        1.0 - (-0.68 * k).exp()
+    };
+    let h = 3.42
+        * rx
+        * (0.49 * ln_g + 0.68 * ln_u + (-2.0 + 1.47 + 0.17 * 8.0 / 3.0) * ln_w).exp()
+        * ell;
+    // (2.20) lg g_V < 1.78 + 0.95 lg g_E
+    let ok = ln_gv < 1.78 * std::f64::consts::LN_10 + 0.95 * ln_ge;
+    (h, ok)
 }
+
+/// 1 − e^{−0.68} (circular contact, k = 1).
+const ONE_MINUS_EXP_068: f64 = 0.493_383_007_634_410_45;
 
 /// Pan–Hamrock line contact (standard form, not in the seeds): H_c = 2.922 W'^−0.166 U^0.692 G^0.470,
 /// H_min = 1.714 W'^−0.128 U^0.694 G^0.568, H = h/R_x, W' = (Q/l)/(E'R_x). Returns (h_c, h_min).

@@ -26,8 +26,8 @@ impl Materials {
                 density: m.density.si(),
                 meyer_hardness: m.meyer_hardness.map(|h| h.si()),
             };
-            positive(&key("youngs_modulus"), material.youngs_modulus)?;
-            positive(&key("density"), material.density)?;
+            require_positive(&key("youngs_modulus"), material.youngs_modulus)?;
+            require_positive(&key("density"), material.density)?;
             if !(0.0..0.5).contains(&material.poisson_ratio) {
                 return Err(GeometryError::new(
                     key("poisson_ratio"),
@@ -35,7 +35,7 @@ impl Materials {
                 ));
             }
             if let Some(h) = material.meyer_hardness {
-                positive(&key("meyer_hardness"), h)?;
+                require_positive(&key("meyer_hardness"), h)?;
             }
             map.insert(name.clone(), material);
         }
@@ -54,17 +54,6 @@ impl Materials {
     }
 }
 
-fn positive(key: &str, value: f64) -> Result<()> {
-    if value.is_finite() && value > 0.0 {
-        Ok(())
-    } else {
-        Err(GeometryError::new(
-            key,
-            format!("must be positive, got {value}"),
-        ))
-    }
-}
-
 fn mass_properties(
     computed: MassProperties,
     given: &MassOverride,
@@ -79,7 +68,7 @@ fn mass_properties(
         }
         return Ok(computed);
     };
-    positive(&format!("{key}.mass"), mass)?;
+    require_positive(&format!("{key}.mass"), mass)?;
     let scaled = computed.scaled(mass / computed.mass);
     Ok(MassProperties {
         mass,
@@ -137,7 +126,7 @@ fn profile(
             chamfer,
         } => {
             let load = design_load.si();
-            positive(&format!("{key}.design_load"), load)?;
+            require_positive(&format!("{key}.design_load"), load)?;
             let effective_length =
                 2.0 * (half_length - chamfer.as_ref().map_or(0.0, |c| c.axial.si()));
             let hertz = rolldyn_contact::hertz::LineContact {
@@ -278,8 +267,8 @@ fn roller(
         roughness_ra: section.roughness_ra.map_or(0.0, |r| r.si()),
         mass_properties: MassProperties::default(),
     };
-    positive("roller.diameter", roller.diameter)?;
-    positive("roller.length", roller.length)?;
+    require_positive("roller.diameter", roller.diameter)?;
+    require_positive("roller.length", roller.length)?;
     roller.mass_properties = mass_properties(
         roller.computed_mass_properties(),
         &section.mass_properties,

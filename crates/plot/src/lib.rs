@@ -18,6 +18,19 @@ pub struct Series<'a> {
     pub points: &'a [(f64, f64)],
 }
 
+impl<'a> Series<'a> {
+    /// Borrows `(label, points)` pairs as series.
+    pub fn from_pairs<S: AsRef<str>>(curves: &'a [(S, Vec<(f64, f64)>)]) -> Vec<Series<'a>> {
+        curves
+            .iter()
+            .map(|(label, points)| Series {
+                label: label.as_ref(),
+                points,
+            })
+            .collect()
+    }
+}
+
 /// Axis labels and title of a plot.
 pub struct Labels<'a> {
     pub title: &'a str,

@@ -2,115 +2,40 @@
 
 use std::fmt;
 
-/// A physical dimension a quantity can have.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum Dimension {
-    Dimensionless,
-    Length,
-    Area,
-    Mass,
-    Time,
-    Force,
-    Moment,
-    Pressure,
-    Angle,
-    AngularSpeed,
-    Speed,
-    Acceleration,
-    Temperature,
-    DynamicViscosity,
-    KinematicViscosity,
-    Density,
-    Stiffness,
-    Damping,
-    Power,
-    Energy,
-    Frequency,
-    ThermalConductivity,
-    SpecificHeat,
-    /// Rotational viscous damping, torque per angular speed (N·m·s/rad).
-    RotationalDamping,
-    /// Temperature coefficient of viscosity (1/K).
-    PerTemperature,
-    /// Pressure–viscosity coefficient (1/Pa).
-    PerPressure,
-    /// Inverse area (1/m²), e.g. the `c` of a logarithmic profile.
-    PerArea,
-    /// Mass moment of inertia (kg·m²).
-    Inertia,
+use crate::dimension::Dim;
+
+crate::dimension::dimensions! {
+    Dimensionless => "a dimensionless number", "";
+    Length => "a length", "m";
+    Area => "an area", "m²";
+    Mass => "a mass", "kg";
+    Time => "a time", "s";
+    Force => "a force", "N";
+    Moment => "a moment", "N m";
+    Pressure => "a pressure", "Pa";
+    Angle => "an angle", "rad";
+    AngularSpeed => "an angular speed", "rad/s";
+    Speed => "a speed", "m/s";
+    Acceleration => "an acceleration", "m/s²";
+    Temperature => "a temperature", "K";
+    DynamicViscosity => "a dynamic viscosity", "Pa s";
+    KinematicViscosity => "a kinematic viscosity", "m²/s";
+    Density => "a density", "kg/m³";
+    Stiffness => "a stiffness", "N/m";
+    Damping => "a damping coefficient", "N s/m";
+    Power => "a power", "W";
+    Energy => "an energy", "J";
+    Frequency => "a frequency", "Hz";
+    ThermalConductivity => "a thermal conductivity", "W/(m K)";
+    SpecificHeat => "a specific heat", "J/(kg K)";
+    RotationalDamping => "a rotational damping coefficient", "N m s/rad";
+    PerTemperature => "a temperature coefficient", "1/K";
+    PerPressure => "a pressure coefficient", "1/Pa";
+    PerArea => "an inverse area", "1/m²";
+    Inertia => "a moment of inertia", "kg m²";
 }
 
 impl Dimension {
-    /// Human name used in error messages.
-    pub fn name(self) -> &'static str {
-        use Dimension::*;
-        match self {
-            Dimensionless => "a dimensionless number",
-            Length => "a length",
-            Area => "an area",
-            Mass => "a mass",
-            Time => "a time",
-            Force => "a force",
-            Moment => "a moment",
-            Pressure => "a pressure",
-            Angle => "an angle",
-            AngularSpeed => "an angular speed",
-            Speed => "a speed",
-            Acceleration => "an acceleration",
-            Temperature => "a temperature",
-            DynamicViscosity => "a dynamic viscosity",
-            KinematicViscosity => "a kinematic viscosity",
-            Density => "a density",
-            Stiffness => "a stiffness",
-            Damping => "a damping coefficient",
-            Power => "a power",
-            Energy => "an energy",
-            Frequency => "a frequency",
-            ThermalConductivity => "a thermal conductivity",
-            SpecificHeat => "a specific heat",
-            RotationalDamping => "a rotational damping coefficient",
-            PerTemperature => "a temperature coefficient",
-            PerPressure => "a pressure coefficient",
-            PerArea => "an inverse area",
-            Inertia => "a moment of inertia",
-        }
-    }
-
-    /// SI unit symbol, used when a plain number is given and in messages.
-    pub fn si_symbol(self) -> &'static str {
-        use Dimension::*;
-        match self {
-            Dimensionless => "",
-            Length => "m",
-            Area => "m²",
-            Mass => "kg",
-            Time => "s",
-            Force => "N",
-            Moment => "N m",
-            Pressure => "Pa",
-            Angle => "rad",
-            AngularSpeed => "rad/s",
-            Speed => "m/s",
-            Acceleration => "m/s²",
-            Temperature => "K",
-            DynamicViscosity => "Pa s",
-            KinematicViscosity => "m²/s",
-            Density => "kg/m³",
-            Stiffness => "N/m",
-            Damping => "N s/m",
-            Power => "W",
-            Energy => "J",
-            Frequency => "Hz",
-            ThermalConductivity => "W/(m K)",
-            SpecificHeat => "J/(kg K)",
-            RotationalDamping => "N m s/rad",
-            PerTemperature => "1/K",
-            PerPressure => "1/Pa",
-            PerArea => "1/m²",
-            Inertia => "kg m²",
-        }
-    }
-
     /// A few accepted spellings, for error messages.
     pub fn examples(self) -> &'static str {
         use Dimension::*;

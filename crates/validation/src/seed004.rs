@@ -123,8 +123,9 @@ pub struct ProfileCase {
 
 impl ProfileCase {
     /// Largest central-line pressure in the outer `fraction` of each half of the roller,
-    /// divided by the pressure at the middle: > 1 means an edge peak.
-    pub fn edge_ratio(&self, fraction: f64) -> f64 {
+    /// divided by the pressure at the middle: > 1 means an edge peak. `None` when the middle
+    /// of the roller is unloaded (large skew at small load).
+    pub fn edge_ratio(&self, fraction: f64) -> Option<f64> {
         let half = self
             .report
             .central_line
@@ -136,7 +137,7 @@ impl ProfileCase {
             .iter()
             .filter(|p| p.0.abs() >= (1.0 - fraction) * half)
             .fold(0.0f64, |m, p| m.max(p.1));
-        edge / self.report.mid_pressure_pa
+        (self.report.mid_pressure_pa > 0.0).then(|| edge / self.report.mid_pressure_pa)
     }
 }
 

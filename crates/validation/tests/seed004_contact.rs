@@ -92,7 +92,7 @@ fn v02_profile_study_trends() {
             p[0] < p[1] && p[1] < p[2],
             "straight p_max vs skew at {q} N: {p:?}"
         );
-        assert!(case(&cases, straight, q, 0.0).edge_ratio(0.3) > 1.5);
+        assert!(case(&cases, straight, q, 0.0).edge_ratio(0.3).unwrap() > 1.5);
     }
     // Crowned 3.2 µm: noticeably smaller peaks than straight, every load and skew.
     for q in LOADS_N {
@@ -112,12 +112,12 @@ fn v02_profile_study_trends() {
         );
     }
     // Logarithmic k = 0.000443 mm: no edge peak at the small load.
-    assert!(case(&cases, log_small, 583.0, 0.0).edge_ratio(0.3) <= 1.0);
+    assert!(case(&cases, log_small, 583.0, 0.0).edge_ratio(0.3).unwrap() <= 1.0);
     // Logarithmic k = 0.002217 mm: no edge peak at any load without skew, the lowest maximum
     // of all profiles at the high load and 8′, and a higher mid pressure than k = 0.000443 mm.
     for q in LOADS_N {
         assert!(
-            case(&cases, log_large, q, 0.0).edge_ratio(0.3) <= 1.0,
+            case(&cases, log_large, q, 0.0).edge_ratio(0.3).unwrap() <= 1.0,
             "{q} N"
         );
         assert!(

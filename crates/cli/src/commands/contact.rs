@@ -4,7 +4,7 @@ use crate::failure::Failure;
 use crate::output::{load_model, out_dir, print_json, write_csv};
 use rolldyn_contact::boussinesq::BoussinesqOptions;
 use rolldyn_contact::roller_raceway::{
-    ContactMethod, ContactReport, RollerRacewayContact, SliceLawChoice,
+    ContactMethod, ContactReport, PressureMap, RollerRacewayContact, SliceLawChoice,
 };
 use rolldyn_plot::{Field, Labels, Series, heat_map, line_plot};
 use rolldyn_units::{Angle, Force, Length, Quantity};
@@ -262,21 +262,28 @@ pub fn write_outputs(dir: &Path, r: &ContactReport) -> Result<(), Failure> {
                 })
             }),
         )?;
-        let mpa: Vec<f64> = map.pressure.iter().map(|p| p * 1e-6).collect();
-        heat_map(
-            &dir.join("pressure_map.svg"),
-            &Labels {
-                title: "Contact pressure, MPa",
-                x: "x along the roller, mm",
-                y: "y rolling direction, mm",
-            },
-            &Field {
-                values: &mpa,
-                nx: map.nx,
-                ny: map.ny,
-                extent: (x0 * 1e3, x1 * 1e3, y0 * 1e3, y1 * 1e3),
-            },
-        )?;
+        plot_pressure_map(&dir.join("pressure_map.svg"), "Contact pressure, MPa", map)?;
     }
+    Ok(())
+}
+
+/// SVG heat map of a pressure field in MPa over mm axes.
+pub fn plot_pressure_map(path: &Path, title: &str, map: &PressureMap) -> Result<(), Failure> {
+    let (x0, x1, y0, y1) = map.extent;
+    let mpa: Vec<f64> = map.pressure.iter().map(|p| p * 1e-6).collect();
+    heat_map(
+        path,
+        &Labels {
+            title,
+            x: "x along the roller, mm",
+            y: "y rolling direction, mm",
+        },
+        &Field {
+            values: &mpa,
+            nx: map.nx,
+            ny: map.ny,
+            extent: (x0 * 1e3, x1 * 1e3, y0 * 1e3, y1 * 1e3),
+        },
+    )?;
     Ok(())
 }

@@ -1,9 +1,10 @@
 //! `rolldyn study seed004 [--out DIR]`: re-runs a seed's validation study, prints its tables
 //! (Markdown, as in VALIDATION.md) and writes CSV tables and SVG plots.
 
+use super::contact::plot_pressure_map;
 use crate::failure::Failure;
 use crate::output::{out_dir, write_csv};
-use rolldyn_plot::{Field, Labels, Series, heat_map, line_plot};
+use rolldyn_plot::{Labels, Series, line_plot};
 use rolldyn_validation::seed004::{self, LOADS_N, PROFILES, TILTS_ARCMIN};
 use std::path::{Path, PathBuf};
 
@@ -98,13 +99,7 @@ fn grid_study(dir: &Path) -> Result<(), Failure> {
             ]
         }),
     )?;
-    let plotted: Vec<Series> = series
-        .iter()
-        .map(|(l, p)| Series {
-            label: l,
-            points: p,
-        })
-        .collect();
+    let plotted = Series::from_pairs(&series);
     line_plot(
         &dir.join("v01-grid-study.svg"),
         &Labels {
@@ -116,21 +111,10 @@ fn grid_study(dir: &Path) -> Result<(), Failure> {
     )?;
     let finest = &rows.last().expect("seven grids").1;
     if let Some(map) = &finest.map {
-        let (x0, x1, y0, y1) = map.extent;
-        let mpa: Vec<f64> = map.pressure.iter().map(|p| p * 1e-6).collect();
-        heat_map(
+        plot_pressure_map(
             &dir.join("v01-pressure-map-350x9.svg"),
-            &Labels {
-                title: "Pressure map, 350 × 9 cells, 1167 N, MPa",
-                x: "x along the roller, mm",
-                y: "y, mm",
-            },
-            &Field {
-                values: &mpa,
-                nx: map.nx,
-                ny: map.ny,
-                extent: (x0 * 1e3, x1 * 1e3, y0 * 1e3, y1 * 1e3),
-            },
+            "Pressure map, 350 × 9 cells, 1167 N, MPa",
+            map,
         )?;
     }
     let stated = seed004::solve(seed004::TABLE2_PROFILE, 0.0, 2334.0, 150, 3);
@@ -150,7 +134,7 @@ fn profile_study(dir: &Path) -> Result<(), Failure> {
     println!("|---|---|---|---|---|---|---|");
     for c in &cases {
         println!(
-            "| {} | {:.0} | {:.0} | {:.0} | {:.0} | {:.3} | {:.3} |",
+            "| {} | {:.0} | {:.0} | {:.0} | {:.0} | {:.3} | {} |",
             PROFILES[c.profile].1,
             c.load_n,
             c.tilt_arcmin,
@@ -158,6 +142,7 @@ fn profile_study(dir: &Path) -> Result<(), Failure> {
             c.report.mid_pressure_pa * 1e-6,
             c.report.concentration_factor,
             c.edge_ratio(0.3)
+                .map_or("middle unloaded".to_string(), |r| format!("{r:.3}"))
         );
     }
     write_csv(
@@ -179,7 +164,7 @@ fn profile_study(dir: &Path) -> Result<(), Failure> {
                 c.report.max_pressure_pa,
                 c.report.mid_pressure_pa,
                 c.report.concentration_factor,
-                c.edge_ratio(0.3),
+                c.edge_ratio(0.3).unwrap_or(f64::NAN),
             ]
         }),
     )?;
@@ -190,13 +175,7 @@ fn profile_study(dir: &Path) -> Result<(), Failure> {
                 .filter(|c| c.load_n == load && c.tilt_arcmin == tilt)
                 .map(|c| (PROFILES[c.profile].1, mm_mpa(&c.report.central_line)))
                 .collect();
-            let series: Vec<Series> = curves
-                .iter()
-                .map(|(l, p)| Series {
-                    label: l,
-                    points: p,
-                })
-                .collect();
+            let series = Series::from_pairs(&curves);
             line_plot(
                 &dir.join(format!("v02-profiles-{load:.0}N-{tilt:.0}arcmin.svg")),
                 &Labels {

@@ -33,14 +33,6 @@ pub struct BoussinesqOptions {
     /// Recompute `u = F p` by FFT every this many iterations to stop round-off drift of the
     /// linear update. Default 50.
     pub recompute_interval: usize,
-    /// Nested-iteration start: solve the same problem on a grid coarsened ×2 (along each
-    /// direction with at least 16 cells; recursively) and start from its prolonged pressure.
-    /// Used only without a user guess. Default true.
-    pub multilevel: bool,
-    /// A coarser level is created only if it has at least this many cells. Default 1024.
-    pub multilevel_min_cells: usize,
-    /// Pressure-change tolerance of the coarse-level solves. Default 1e-5.
-    pub coarse_tolerance: f64,
 }
 
 impl Default for BoussinesqOptions {
@@ -51,9 +43,6 @@ impl Default for BoussinesqOptions {
             convolution: ConvolutionMode::Auto,
             sparse_update_max_cells: 32,
             recompute_interval: 50,
-            multilevel: true,
-            multilevel_min_cells: 1024,
-            coarse_tolerance: 1e-5,
         }
     }
 }
@@ -80,8 +69,6 @@ pub struct ContactSolution {
     /// FFT convolutions performed on this grid (about one per iteration plus full `u`
     /// recomputations).
     pub convolutions: usize,
-    /// Iterations spent on the coarser levels of the multilevel start (each 2–4× cheaper).
-    pub coarse_iterations: usize,
     /// Whether `pressure_change < tolerance` was reached.
     pub converged: bool,
     /// Final relative pressure change `ε` of the last iteration.
@@ -216,19 +203,6 @@ pub struct BoussinesqSolver {
     corr: Vec<(usize, f64)>,
     /// Convolutions of the current solve.
     n_conv: usize,
-    /// Next coarser level of the multilevel start.
-    coarse: Option<Box<Coarse>>,
-    /// Iterations spent on coarser levels in the last solve.
-    last_coarse_iterations: usize,
-}
-
-/// Coarser level: grid coarsened by `fx × fy` cells (1 or 2 each).
-#[derive(Debug)]
-struct Coarse {
-    solver: BoussinesqSolver,
-    fx: usize,
-    fy: usize,
-    gap: Vec<f64>,
 }
 
 impl BoussinesqSolver {
@@ -254,41 +228,9 @@ impl BoussinesqSolver {
                 "max_iterations and recompute_interval must be positive".into(),
             ));
         }
-        if !(options.coarse_tolerance.is_finite() && options.coarse_tolerance > 0.0) {
-            return Err(BoussinesqError::InvalidOption(format!(
-                "coarse_tolerance {}",
-                options.coarse_tolerance
-            )));
-        }
         let table = InfluenceTable::new(&grid, compliance);
         let conv = Convolver::new(&table, options.convolution);
         let n = grid.len();
-        let mut coarse = None;
-        if options.multilevel {
-            let fx = if grid.nx >= 16 { 2 } else { 1 };
-            let fy = if grid.ny >= 16 { 2 } else { 1 };
-            let (cnx, cny) = (grid.nx.div_ceil(fx), grid.ny.div_ceil(fy));
-            if fx * fy > 1 && cnx * cny >= options.multilevel_min_cells {
-                let cgrid = Grid::new(
-                    cnx,
-                    cny,
-                    grid.dx * fx as f64,
-                    grid.dy * fy as f64,
-                    grid.x_min,
-                    grid.y_min,
-                )?;
-                let copt = BoussinesqOptions {
-                    tolerance: options.coarse_tolerance,
-                    ..options.clone()
-                };
-                coarse = Some(Box::new(Coarse {
-                    solver: BoussinesqSolver::new(cgrid, compliance, copt)?,
-                    fx,
-                    fy,
-                    gap: vec![0.0; cnx * cny],
-                }));
-            }
-        }
         Ok(Self {
             grid,
             options,
@@ -302,8 +244,6 @@ impl BoussinesqSolver {
             r: vec![0.0; n],
             corr: Vec::with_capacity(n),
             n_conv: 0,
-            coarse,
-            last_coarse_iterations: 0,
         })
     }
 
@@ -390,60 +330,26 @@ impl BoussinesqSolver {
             Control::Approach(a) if !a.is_finite() => return Err(BoussinesqError::InvalidLoad(a)),
             _ => {}
         }
-        if let Some(g) = guess {
-            if g.len() != n {
-                return Err(BoussinesqError::LengthMismatch {
-                    expected: n,
-                    got: g.len(),
-                });
-            }
+        if let Some(g) = guess
+            && g.len() != n
+        {
+            return Err(BoussinesqError::LengthMismatch {
+                expected: n,
+                got: g.len(),
+            });
         }
         Ok(())
     }
 
-    /// Initial pressure (before force scaling): `guess` if given and non-trivial, else the
-    /// prolonged coarse-level solution (multilevel), else a Hertz-like `√(c − K)` field.
-    /// Returns the iterations spent on coarser levels.
-    fn initial_pressure(
-        &mut self,
-        gap: &[f64],
-        control: Control,
-        guess: Option<&[f64]>,
-    ) -> Result<usize, BoussinesqError> {
+    /// Initial pressure (before force scaling): `guess` if given and non-trivial, else a
+    /// Hertz-like `√(c − K)` field (force mode) or a local estimate (approach mode).
+    fn initial_pressure(&mut self, gap: &[f64], control: Control, guess: Option<&[f64]>) {
         if let Some(g) = guess {
             for (p, &v) in self.p.iter_mut().zip(g) {
                 *p = if v.is_finite() && v > 0.0 { v } else { 0.0 };
             }
             if self.p.iter().any(|&v| v > 0.0) {
-                return Ok(0);
-            }
-        }
-        if let Some(c) = self.coarse.as_deref_mut() {
-            // Restriction: coarse gap = mean of the fine gaps of its (existing) children.
-            let (nx, ny) = (self.grid.nx, self.grid.ny);
-            let (cnx, cny) = (c.solver.grid.nx, c.solver.grid.ny);
-            for cj in 0..cny {
-                for ci in 0..cnx {
-                    let (mut sum, mut cnt) = (0.0, 0usize);
-                    for j in cj * c.fy..((cj + 1) * c.fy).min(ny) {
-                        for i in ci * c.fx..((ci + 1) * c.fx).min(nx) {
-                            sum += gap[j * nx + i];
-                            cnt += 1;
-                        }
-                    }
-                    c.gap[cj * cnx + ci] = sum / cnt as f64;
-                }
-            }
-            let (it, _, _) = c.solver.solve_in_place(&c.gap, control, None)?;
-            let coarse_it = it + c.solver.last_coarse_iterations;
-            // Prolongation by injection.
-            for j in 0..ny {
-                for i in 0..nx {
-                    self.p[j * nx + i] = c.solver.p[(j / c.fy) * cnx + i / c.fx];
-                }
-            }
-            if self.p.iter().any(|&v| v > 0.0) {
-                return Ok(coarse_it);
+                return;
             }
         }
         let f00 = self.table.self_coefficient();
@@ -463,7 +369,6 @@ impl BoussinesqSolver {
                 }
             }
         }
-        Ok(0)
     }
 
     fn run(
@@ -477,8 +382,7 @@ impl BoussinesqSolver {
         // Final exact displacement, approach, residual.
         self.conv.apply(&self.p, &mut self.u);
         self.n_conv += 1;
-        let coarse_iterations = self.last_coarse_iterations;
-        Ok(self.finish(gap, control, iterations, coarse_iterations, converged, eps))
+        Ok(self.finish(gap, control, iterations, converged, eps))
     }
 
     /// Polonsky–Keer iteration; leaves the pressure in `self.p` and `u ≈ F p` in `self.u`.
@@ -495,7 +399,7 @@ impl BoussinesqSolver {
         let f00 = self.table.self_coefficient();
 
         self.n_conv = 0;
-        self.last_coarse_iterations = self.initial_pressure(gap, control, guess)?;
+        self.initial_pressure(gap, control, guess);
         match control {
             Control::Force(q) => {
                 let sum: f64 = self.p.iter().sum();
@@ -731,12 +635,6 @@ impl BoussinesqSolver {
             if eps < tol {
                 converged = true;
             }
-            if std::env::var_os("BQ_DEBUG").is_some() {
-                eprintln!(
-                    "DBG n={n} it={iterations} eps={eps:.3e} nc={nc} corr={} overlap={overlap} tau={tau:.3e}",
-                    self.corr.len()
-                );
-            }
         }
 
         Ok((iterations, converged, eps))
@@ -747,7 +645,6 @@ impl BoussinesqSolver {
         gap: &[f64],
         control: Control,
         iterations: usize,
-        coarse_iterations: usize,
         converged: bool,
         eps: f64,
     ) -> ContactSolution {
@@ -757,13 +654,12 @@ impl BoussinesqSolver {
         let mut psum = 0.0;
         let mut pmax = 0.0_f64;
         let mut gsum = 0.0;
-        for i in 0..grid.len() {
-            let p = self.p[i];
+        for ((&p, &h), &u) in self.p.iter().zip(gap).zip(&self.u) {
             if p > 0.0 {
                 nc += 1;
                 psum += p;
                 pmax = pmax.max(p);
-                gsum += gap[i] + self.u[i];
+                gsum += h + u;
             }
         }
         let alpha = match control {
@@ -773,13 +669,9 @@ impl BoussinesqSolver {
         };
         let umax = self.u.iter().copied().fold(0.0_f64, f64::max);
         let mut res = 0.0_f64;
-        for i in 0..grid.len() {
-            let g = gap[i] - alpha + self.u[i];
-            res = res.max(if self.p[i] > 0.0 {
-                g.abs()
-            } else {
-                (-g).max(0.0)
-            });
+        for ((&p, &h), &u) in self.p.iter().zip(gap).zip(&self.u) {
+            let g = h - alpha + u;
+            res = res.max(if p > 0.0 { g.abs() } else { (-g).max(0.0) });
         }
         let residual = if umax > 0.0 { res / umax } else { res };
         let in_contact = |i: usize, j: usize| self.p[j * nx + i] > 0.0;
@@ -795,7 +687,6 @@ impl BoussinesqSolver {
             cells_in_contact: nc,
             iterations,
             convolutions: self.n_conv,
-            coarse_iterations,
             converged,
             pressure_change: eps,
             residual,

@@ -1,0 +1,152 @@
+//! End-to-end checks of the `rolldyn` binary: JSON answers and bad-input exit codes.
+
+use std::path::PathBuf;
+use std::process::{Command, Output};
+
+fn rolldyn(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_rolldyn"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .expect("rolldyn runs")
+}
+
+fn example(name: &str) -> String {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("../../examples")
+        .join(name)
+        .display()
+        .to_string()
+}
+
+fn json(output: &Output) -> serde_json::Value {
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    serde_json::from_slice(&output.stdout).expect("stdout is JSON")
+}
+
+#[test]
+fn contact_json_has_the_documented_fields() {
+    for cells in ["150x3", "350x9"] {
+        let out = rolldyn(&[
+            "contact",
+            &example("contact/32206-crowned-3.2um.toml"),
+            "--load",
+            "1167N",
+            "--cells",
+            cells,
+            "--json",
+        ]);
+        let v = json(&out);
+        for key in [
+            "approach_m",
+            "max_pressure_pa",
+            "mid_pressure_pa",
+            "mean_pressure_pa",
+            "concentration_factor",
+            "contact_length_m",
+            "max_half_width_m",
+            "cells_in_contact",
+            "iterations",
+            "solve_time_s",
+        ] {
+            assert!(v[key].is_number(), "{cells}: {key} missing in {v}");
+        }
+        // SPEC F-08: ≈ 5.93 µm at 1167 N for these grids.
+        let approach = v["approach_m"].as_f64().unwrap();
+        assert!((approach / 5.93e-6 - 1.0).abs() < 0.01, "{approach}");
+    }
+}
+
+#[test]
+fn contact_methods_and_outputs() {
+    let dir = std::env::temp_dir().join(format!("rolldyn-cli-test-{}", std::process::id()));
+    for method in ["slices", "hertz", "boussinesq"] {
+        let out = rolldyn(&[
+            "contact",
+            &example("2002834.toml"),
+            "--load",
+            "2kN",
+            "--tilt",
+            "4arcmin",
+            "--method",
+            method,
+            "--json",
+            "--out",
+            dir.to_str().unwrap(),
+        ]);
+        assert_eq!(json(&out)["method"], method);
+    }
+    for file in [
+        "central_line.csv",
+        "central_line.svg",
+        "pressure_map.csv",
+        "pressure_map.svg",
+    ] {
+        assert!(dir.join(file).is_file(), "{file}");
+    }
+    std::fs::remove_dir_all(dir).ok();
+}
+
+#[test]
+fn check_prints_derived_quantities() {
+    let v = json(&rolldyn(&[
+        "check",
+        &example("2002834.toml"),
+        "--speed",
+        "6371rpm",
+        "--json",
+    ]));
+    assert!((v["pitch_diameter_m"].as_f64().unwrap() - 0.18).abs() < 1e-12);
+    let cage = v["epicyclic_cage_speed_rad_s"].as_f64().unwrap();
+    assert!((cage - 305.79).abs() < 0.01, "{cage}");
+}
+
+#[test]
+fn bad_model_exits_2_with_one_line_naming_file_line_key() {
+    let dir = std::env::temp_dir().join(format!("rolldyn-bad-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let good = std::fs::read_to_string(example("2002834.toml")).unwrap();
+    let cases = [
+        ("slices = 30", "slices = 30\nspeed = 1", "roller.speed"),
+        (
+            "diameter = \"15 mm\"",
+            "diameter = \"15 N\"",
+            "roller.diameter",
+        ),
+        ("count = 18", "count = 40", "roller.count"),
+        ("length = \"11 mm\"", "length = nan", "roller.length"),
+        (
+            "pocket_axial = \"11.25 mm\"",
+            "pocket_axial = \"-1 mm\"",
+            "cage.pocket_axial",
+        ),
+    ];
+    for (k, (from, to, key)) in cases.iter().enumerate() {
+        let path = dir.join(format!("bad{k}.toml"));
+        std::fs::write(&path, good.replacen(from, to, 1)).unwrap();
+        let out = rolldyn(&["check", path.to_str().unwrap()]);
+        assert_eq!(out.status.code(), Some(2), "{key}");
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(stderr.trim_end().lines().count(), 1, "{stderr}");
+        assert!(
+            stderr.contains(&format!("bad{k}.toml:")) && stderr.contains(key),
+            "{stderr}"
+        );
+    }
+    std::fs::remove_dir_all(dir).ok();
+}
+
+#[test]
+fn missing_file_and_bad_flags_exit_2() {
+    let out = rolldyn(&["check", "no/such/model.toml"]);
+    assert_eq!(out.status.code(), Some(2));
+    let out = rolldyn(&["contact", &example("2002834.toml"), "--load", "10mm"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("a force"));
+    let out = rolldyn(&["contact", &example("2002834.toml"), "--load", "-5N"]);
+    assert_eq!(out.status.code(), Some(2));
+}
