@@ -24,6 +24,12 @@ enum Command {
     Check(commands::check::Args),
     /// Roller–raceway contact pressure: Boussinesq solver, slice model or Hertz.
     Contact(commands::contact::Args),
+    /// Lubricant library: properties of every built-in oil at a temperature.
+    Oils(commands::oils::Args),
+    /// Traction curve, critical slip (scuffing criterion) and film of a lubricated contact.
+    Traction(commands::traction::Args),
+    /// Film thickness, film parameter Λ and lubrication regime of a contact.
+    Film(commands::film::Args),
     /// Re-run a seed's validation study and write its tables and plots.
     Study(commands::study::Args),
 }
@@ -35,6 +41,9 @@ fn main() -> ExitCode {
         Command::Check(args) => commands::check::run(args),
         Command::Contact(args) => commands::contact::run(args),
         Command::Study(args) => commands::study::run(args),
+        Command::Oils(args) => commands::oils::run(args),
+        Command::Traction(args) => commands::traction::run(args),
+        Command::Film(args) => commands::film::run(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -4,11 +4,14 @@ use crate::failure::Failure;
 use serde::Serialize;
 use std::path::{Path, PathBuf};
 
-/// Prints `value` as pretty JSON on stdout.
+/// Prints `value` as pretty JSON on stdout; a closed pipe (`| head`) is not an error.
 pub fn print_json<T: Serialize>(value: &T) -> Result<(), Failure> {
+    use std::io::Write;
     let text = serde_json::to_string_pretty(value).map_err(|e| Failure::Run(e.to_string()))?;
-    println!("{text}");
-    Ok(())
+    match writeln!(std::io::stdout().lock(), "{text}") {
+        Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => Err(e.into()),
+        _ => Ok(()),
+    }
 }
 
 /// Creates the output folder (and parents) and returns it.

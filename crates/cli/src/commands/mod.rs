@@ -3,4 +3,9 @@
 pub mod check;
 pub mod contact;
 pub mod demo;
+pub mod film;
+mod oil_args;
+pub mod oils;
+mod rig_args;
 pub mod study;
+pub mod traction;
