@@ -257,3 +257,40 @@ fn oils_list_and_bad_oil_input() {
             .all(|p| p["traction"].is_number())
     );
 }
+
+#[test]
+fn user_oil_file_is_listed_and_usable() {
+    let file = example("oils/iso-vg68-mineral.toml");
+    let v = json(&rolldyn(&[
+        "oils",
+        "--oil-file",
+        &file,
+        "--temperature",
+        "40C",
+        "--json",
+    ]));
+    let user = v
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|o| o["name"] == "iso-vg68-mineral")
+        .unwrap();
+    // Walther fit through the catalogue point 68 mm²/s at 40 °C.
+    let nu = user["kinematic_viscosity_m2_s"].as_f64().unwrap();
+    assert!((nu / 68e-6 - 1.0).abs() < 1e-3, "{nu}");
+    let t = json(&rolldyn(&[
+        "traction",
+        "--oil-file",
+        &file,
+        "--temperature",
+        "60C",
+        "--json",
+    ]));
+    assert!(t["curve"].as_array().unwrap().len() == 101);
+    let bad = std::env::temp_dir().join(format!("rolldyn-bad-oil-{}.toml", std::process::id()));
+    std::fs::write(&bad, "name = \"x\"\ncolour = 1\n").unwrap();
+    let out = rolldyn(&["oils", "--oil-file", bad.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("colour"));
+    std::fs::remove_file(bad).ok();
+}

@@ -1,0 +1,224 @@
+//! Streaming tables of `f64` columns written as CSV and/or Parquet.
+//!
+//! A [`TableWriter`] receives one row at a time and never holds more than one Parquet row group
+//! (default 4096 rows) in memory, so a long simulation streams to disk. Rows written before a
+//! failure stay readable: call [`TableWriter::finish`] on the error path too (it writes the
+//! Parquet footer); dropping an unfinished writer also finishes it, best effort.
+
+use parquet::basic::Compression;
+use parquet::data_type::DoubleType;
+use parquet::file::properties::WriterProperties;
+use parquet::file::writer::SerializedFileWriter;
+use parquet::schema::parser::parse_message_type;
+use std::fs::File;
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+
+/// Writing a table failed.
+#[derive(Debug, thiserror::Error)]
+#[error("cannot write {path}: {reason}")]
+pub struct OutputError {
+    pub path: String,
+    pub reason: String,
+}
+
+fn fail(path: &Path, e: impl std::fmt::Display) -> OutputError {
+    OutputError {
+        path: path.display().to_string(),
+        reason: e.to_string(),
+    }
+}
+
+/// Which files a [`TableWriter`] produces.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Formats {
+    pub csv: bool,
+    pub parquet: bool,
+}
+
+impl Default for Formats {
+    fn default() -> Self {
+        Self {
+            csv: true,
+            parquet: true,
+        }
+    }
+}
+
+struct ParquetSink {
+    path: PathBuf,
+    writer: SerializedFileWriter<File>,
+    /// Column-major buffer of the current row group.
+    columns: Vec<Vec<f64>>,
+}
+
+impl ParquetSink {
+    fn flush(&mut self) -> Result<(), OutputError> {
+        if self.columns.first().is_none_or(|c| c.is_empty()) {
+            return Ok(());
+        }
+        let path = self.path.clone();
+        let mut group = self.writer.next_row_group().map_err(|e| fail(&path, e))?;
+        let mut k = 0;
+        while let Some(mut column) = group.next_column().map_err(|e| fail(&path, e))? {
+            column
+                .typed::<DoubleType>()
+                .write_batch(&self.columns[k], None, None)
+                .map_err(|e| fail(&path, e))?;
+            column.close().map_err(|e| fail(&path, e))?;
+            self.columns[k].clear();
+            k += 1;
+        }
+        group.close().map_err(|e| fail(&path, e))?;
+        Ok(())
+    }
+}
+
+/// A table of named `f64` columns streamed to `<stem>.csv` and/or `<stem>.parquet`.
+pub struct TableWriter {
+    names: Vec<String>,
+    csv: Option<(PathBuf, csv::Writer<File>)>,
+    parquet: Option<ParquetSink>,
+    row_group_rows: usize,
+    rows: usize,
+    finished: bool,
+}
+
+/// A Parquet-safe column name: letters, digits and `_` only.
+fn column_name(name: &str) -> String {
+    let mut out: String = name
+        .chars()
+        .map(|c| {
+            if c.is_ascii_alphanumeric() || c == '_' {
+                c
+            } else {
+                '_'
+            }
+        })
+        .collect();
+    if out.is_empty() || out.starts_with(|c: char| c.is_ascii_digit()) {
+        out.insert(0, 'c');
+    }
+    out
+}
+
+impl TableWriter {
+    /// Creates `<dir>/<stem>.csv` and/or `<dir>/<stem>.parquet` with the given column names.
+    pub fn create(
+        dir: &Path,
+        stem: &str,
+        names: &[String],
+        formats: Formats,
+    ) -> Result<Self, OutputError> {
+        let names: Vec<String> = names.iter().map(|n| column_name(n)).collect();
+        let csv = if formats.csv {
+            let path = dir.join(format!("{stem}.csv"));
+            let mut writer = csv::Writer::from_path(&path).map_err(|e| fail(&path, e))?;
+            writer.write_record(&names).map_err(|e| fail(&path, e))?;
+            Some((path, writer))
+        } else {
+            None
+        };
+        let parquet = if formats.parquet {
+            let path = dir.join(format!("{stem}.parquet"));
+            let fields: String = names
+                .iter()
+                .map(|n| format!("REQUIRED DOUBLE {n}; "))
+                .collect();
+            let schema = parse_message_type(&format!(
+                "message {stem_name} {{ {fields}}}",
+                stem_name = column_name(stem)
+            ))
+            .map_err(|e| fail(&path, e))?;
+            let props = WriterProperties::builder()
+                .set_compression(Compression::SNAPPY)
+                .build();
+            let file = File::create(&path).map_err(|e| fail(&path, e))?;
+            let writer = SerializedFileWriter::new(file, Arc::new(schema), Arc::new(props))
+                .map_err(|e| fail(&path, e))?;
+            Some(ParquetSink {
+                path,
+                writer,
+                columns: vec![Vec::new(); names.len()],
+            })
+        } else {
+            None
+        };
+        Ok(Self {
+            names,
+            csv,
+            parquet,
+            row_group_rows: 4096,
+            rows: 0,
+            finished: false,
+        })
+    }
+
+    /// Column names as written (sanitised for Parquet).
+    pub fn names(&self) -> &[String] {
+        &self.names
+    }
+
+    /// Rows written so far.
+    pub fn rows(&self) -> usize {
+        self.rows
+    }
+
+    /// Appends one row; `values.len()` must equal the number of columns.
+    pub fn write_row(&mut self, values: &[f64]) -> Result<(), OutputError> {
+        if values.len() != self.names.len() {
+            let path = self.csv.as_ref().map(|c| c.0.clone()).unwrap_or_default();
+            return Err(fail(
+                &path,
+                format!(
+                    "row of {} values for {} columns",
+                    values.len(),
+                    self.names.len()
+                ),
+            ));
+        }
+        if let Some((path, writer)) = &mut self.csv {
+            writer
+                .write_record(values.iter().map(|v| format!("{v:e}")))
+                .map_err(|e| fail(path, e))?;
+        }
+        if let Some(sink) = &mut self.parquet {
+            for (column, v) in sink.columns.iter_mut().zip(values) {
+                column.push(*v);
+            }
+            if sink.columns[0].len() >= self.row_group_rows {
+                sink.flush()?;
+            }
+        }
+        self.rows += 1;
+        Ok(())
+    }
+
+    /// Flushes the last row group, writes the Parquet footer and closes the files.
+    pub fn finish(mut self) -> Result<(), OutputError> {
+        self.close()
+    }
+
+    fn close(&mut self) -> Result<(), OutputError> {
+        if self.finished {
+            return Ok(());
+        }
+        self.finished = true;
+        if let Some((path, writer)) = &mut self.csv {
+            writer.flush().map_err(|e| fail(path, e))?;
+        }
+        if let Some(mut sink) = self.parquet.take() {
+            sink.flush()?;
+            let path = sink.path.clone();
+            sink.writer.close().map_err(|e| fail(&path, e))?;
+        }
+        Ok(())
+    }
+}
+
+impl Drop for TableWriter {
+    fn drop(&mut self) {
+        // Best effort: an error on this path has no one to report to; finish() reports it.
+        let _ = self.close();
+    }
+}
