@@ -210,6 +210,51 @@ impl Lubricant {
         }
     }
 
+    /// Checks that the data are physical: an ordered temperature range above 0 K, every defined
+    /// property finite and positive at both ends and the middle of the range (κ and β0 may be
+    /// zero), and 0 ≤ Λ_bd < Λ_hd. User oils are checked on load; the built-in library passes.
+    pub fn validate(&self) -> Result<(), LubError> {
+        let bad = |what: String| Err(LubError::InvalidInput(format!("oil '{}': {what}", self.name)));
+        let [lo, hi] = self.temperature_range_k;
+        if !(lo > 0.0 && hi >= lo && hi.is_finite()) {
+            return bad(format!("temperature_range_k [{lo}, {hi}] must be ordered kelvin values above 0"));
+        }
+        for t in [lo, 0.5 * (lo + hi), hi] {
+            let p = self.properties(t);
+            let positive = [
+                ("density", p.density),
+                ("viscosity", p.dynamic_viscosity),
+                ("pressure_viscosity", p.pressure_viscosity),
+                ("shear_modulus", p.shear_modulus),
+                ("eyring_stress", p.eyring_stress),
+                ("thermal_conductivity", p.thermal_conductivity),
+            ];
+            for (name, value) in positive {
+                if let Some(v) = value {
+                    if !(v.is_finite() && v > 0.0) {
+                        return bad(format!("{name} is {v} at {:.1} K; it must be finite and positive", t));
+                    }
+                }
+            }
+            for (name, value) in [("beta0", p.beta0), ("kappa", p.kappa)] {
+                if let Some(v) = value {
+                    if !v.is_finite() || v < -1e-12 {
+                        return bad(format!("{name} is {v} at {t:.1} K; it must be finite and not negative"));
+                    }
+                }
+            }
+        }
+        if let Some(m) = self.mixed_friction {
+            if !(m.lambda_bd >= 0.0 && m.lambda_hd > m.lambda_bd) {
+                return bad(format!(
+                    "mixed_friction needs 0 ≤ lambda_bd < lambda_hd, got {} and {}",
+                    m.lambda_bd, m.lambda_hd
+                ));
+            }
+        }
+        Ok(())
+    }
+
     /// Is `t_k` inside the documented temperature range?
     pub fn in_range(&self, t_k: f64) -> bool {
         t_k >= self.temperature_range_k[0] && t_k <= self.temperature_range_k[1]

@@ -232,3 +232,24 @@ fn property_table_error_below_half_percent() {
         "expected ≈ 4e-5 from the h²/8 bound, got {worst}"
     );
 }
+
+/// Every built-in oil passes the physical checks applied to user oils; a negative viscosity
+/// or an inverted Λ range does not.
+#[test]
+fn library_oils_are_physical_and_bad_user_oils_are_rejected() {
+    for name in rolldyn_lubrication::KNOWN_OILS {
+        let oil = rolldyn_lubrication::lubricant_by_name(name).unwrap();
+        oil.validate().unwrap_or_else(|e| panic!("{name}: {e}"));
+    }
+    let bad: rolldyn_lubrication::Lubricant = toml::from_str(
+        "name = \"x\"\ntemperature_range_k = [300.0, 400.0]\n\
+         viscosity = { kind = \"dynamic\", law = { kind = \"constant\", value = -0.01 } }\n",
+    )
+    .unwrap();
+    assert!(bad.validate().unwrap_err().to_string().contains("viscosity"));
+    let bad: rolldyn_lubrication::Lubricant = toml::from_str(
+        "name = \"x\"\ntemperature_range_k = [300.0, 400.0]\nmixed_friction = { lambda_bd = 3.0, lambda_hd = 1.0 }\n",
+    )
+    .unwrap();
+    assert!(bad.validate().is_err());
+}
