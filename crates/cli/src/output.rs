@@ -44,7 +44,7 @@ pub fn write_csv(
 }
 
 /// Loads a model file, or the embedded default model when `path` is `None`.
-pub fn load_model(path: Option<&Path>) -> Result<rolldyn_model::BearingModel, Failure> {
+pub fn load_model(path: Option<&Path>) -> Result<rolldyn_model::Model, Failure> {
     Ok(match path {
         Some(path) => rolldyn_model::load(path)?,
         None => rolldyn_model::parse(rolldyn_model::DEFAULT_MODEL, "<embedded 2002834.toml>")?,

@@ -214,10 +214,17 @@ impl Lubricant {
     /// property finite and positive at both ends and the middle of the range (κ and β0 may be
     /// zero), and 0 ≤ Λ_bd < Λ_hd. User oils are checked on load; the built-in library passes.
     pub fn validate(&self) -> Result<(), LubError> {
-        let bad = |what: String| Err(LubError::InvalidInput(format!("oil '{}': {what}", self.name)));
+        let bad = |what: String| {
+            Err(LubError::InvalidInput(format!(
+                "oil '{}': {what}",
+                self.name
+            )))
+        };
         let [lo, hi] = self.temperature_range_k;
         if !(lo > 0.0 && hi >= lo && hi.is_finite()) {
-            return bad(format!("temperature_range_k [{lo}, {hi}] must be ordered kelvin values above 0"));
+            return bad(format!(
+                "temperature_range_k [{lo}, {hi}] must be ordered kelvin values above 0"
+            ));
         }
         for t in [lo, 0.5 * (lo + hi), hi] {
             let p = self.properties(t);
@@ -232,14 +239,19 @@ impl Lubricant {
             for (name, value) in positive {
                 if let Some(v) = value {
                     if !(v.is_finite() && v > 0.0) {
-                        return bad(format!("{name} is {v} at {:.1} K; it must be finite and positive", t));
+                        return bad(format!(
+                            "{name} is {v} at {:.1} K; it must be finite and positive",
+                            t
+                        ));
                     }
                 }
             }
             for (name, value) in [("beta0", p.beta0), ("kappa", p.kappa)] {
                 if let Some(v) = value {
                     if !v.is_finite() || v < -1e-12 {
-                        return bad(format!("{name} is {v} at {t:.1} K; it must be finite and not negative"));
+                        return bad(format!(
+                            "{name} is {v} at {t:.1} K; it must be finite and not negative"
+                        ));
                     }
                 }
             }

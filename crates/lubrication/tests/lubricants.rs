@@ -246,7 +246,12 @@ fn library_oils_are_physical_and_bad_user_oils_are_rejected() {
          viscosity = { kind = \"dynamic\", law = { kind = \"constant\", value = -0.01 } }\n",
     )
     .unwrap();
-    assert!(bad.validate().unwrap_err().to_string().contains("viscosity"));
+    assert!(
+        bad.validate()
+            .unwrap_err()
+            .to_string()
+            .contains("viscosity")
+    );
     let bad: rolldyn_lubrication::Lubricant = toml::from_str(
         "name = \"x\"\ntemperature_range_k = [300.0, 400.0]\nmixed_friction = { lambda_bd = 3.0, lambda_hd = 1.0 }\n",
     )

@@ -3,16 +3,28 @@
 //!
 //! ```
 //! let model = rolldyn_model::parse(rolldyn_model::DEFAULT_MODEL, "2002834.toml").unwrap();
-//! assert_eq!(model.name(), "2002834");
+//! assert_eq!(model.bearing.name(), "2002834");
 //! ```
 
 mod convert;
 mod error;
+mod operation;
 pub mod schema;
 
 pub use convert::DEFAULT_SLICES;
 pub use error::ModelError;
+pub use operation::{Lubrication, Operating, Temperatures};
 pub use rolldyn_geometry::BearingModel;
+
+/// Everything a model file describes.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Model {
+    pub bearing: BearingModel,
+    /// `[lubricant]`, if given.
+    pub lubrication: Option<Lubrication>,
+    /// `[operating]` (every value optional).
+    pub operating: Operating,
+}
 
 use std::path::Path;
 use toml::de::DeTable;
@@ -21,7 +33,7 @@ use toml::de::DeTable;
 pub const DEFAULT_MODEL: &str = include_str!("../../../examples/2002834.toml");
 
 /// Reads and validates a model file.
-pub fn load(path: &Path) -> Result<BearingModel, ModelError> {
+pub fn load(path: &Path) -> Result<Model, ModelError> {
     let file = path.display().to_string();
     let text = std::fs::read_to_string(path).map_err(|e| ModelError {
         file: file.clone(),
@@ -33,7 +45,7 @@ pub fn load(path: &Path) -> Result<BearingModel, ModelError> {
 }
 
 /// Parses and validates model text; `file` names it in errors.
-pub fn parse(text: &str, file: &str) -> Result<BearingModel, ModelError> {
+pub fn parse(text: &str, file: &str) -> Result<Model, ModelError> {
     let at = |key: &str, span: Option<std::ops::Range<usize>>, reason: String| ModelError {
         file: file.to_string(),
         position: span.map(|s| error::line_column(text, s.start)),
@@ -52,9 +64,13 @@ pub fn parse(text: &str, file: &str) -> Result<BearingModel, ModelError> {
         let span = error::span_of(&document, &e.key);
         at(&e.key, span, e.reason)
     };
-    let model = convert::build(&schema).map_err(locate)?;
-    model.validate().map_err(locate)?;
-    Ok(model)
+    let bearing = convert::build(&schema).map_err(locate)?;
+    bearing.validate().map_err(locate)?;
+    Ok(Model {
+        bearing,
+        lubrication: operation::lubrication(schema.lubricant.as_ref(), file).map_err(locate)?,
+        operating: operation::operating(schema.operating.as_ref()).map_err(locate)?,
+    })
 }
 
 fn syntax_message(e: &toml::de::Error) -> String {

@@ -2,7 +2,8 @@
 //! every struct rejects unknown keys. Converted once into `rolldyn_geometry` types (SI).
 
 use rolldyn_units::{
-    Angle, Density, Dimensionless, Force, Inertia, Length, Mass, PerArea, Pressure, Quantity,
+    Angle, AngularSpeed, Density, Dimensionless, Force, Inertia, KinematicViscosity, Length, Mass,
+    PerArea, PerPressure, Pressure, Quantity, Temperature, ThermalConductivity,
 };
 use serde::Deserialize;
 use std::collections::BTreeMap;
@@ -19,6 +20,8 @@ pub struct ModelFile {
     pub cage: Option<CageSection>,
     pub clearance: Option<ClearanceSection>,
     pub misalignment: Option<MisalignmentSection>,
+    pub lubricant: Option<LubricantSection>,
+    pub operating: Option<OperatingSection>,
 }
 
 #[derive(Debug, Deserialize, Clone, Copy, PartialEq, Eq)]
@@ -213,4 +216,72 @@ pub struct ClearanceSection {
 #[serde(deny_unknown_fields)]
 pub struct MisalignmentSection {
     pub inner_ring: Quantity<Angle>,
+}
+
+/// `[lubricant]`: the oil, and values the seeds do not give (SPEC F-27) as overrides.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LubricantSection {
+    /// Built-in oil name (see `rolldyn oils`).
+    pub oil: Option<String>,
+    /// User oil file (TOML, docs/lubricants.md), relative to the model file.
+    pub file: Option<String>,
+    /// Kinematic viscosity at two temperatures → Walther/ASTM D341 law.
+    pub kinematic_viscosity: Option<ViscosityPoints>,
+    pub density: Option<Quantity<Density>>,
+    pub pressure_viscosity: Option<Quantity<PerPressure>>,
+    pub shear_modulus: Option<Quantity<Pressure>>,
+    pub eyring_stress: Option<Quantity<Pressure>>,
+    pub thermal_conductivity: Option<Quantity<ThermalConductivity>>,
+    pub lambda_boundary: Option<f64>,
+    pub lambda_hydrodynamic: Option<f64>,
+    pub rheology: Option<RheologyName>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ViscosityPoints {
+    pub temperatures: [Quantity<Temperature>; 2],
+    pub values: [Quantity<KinematicViscosity>; 2],
+}
+
+#[derive(Debug, Deserialize, Clone, Copy, PartialEq, Eq)]
+#[serde(rename_all = "kebab-case")]
+pub enum RheologyName {
+    ViscoElastic,
+    Isothermal,
+    LinearElastic,
+}
+
+/// `[operating]`: speeds, loads and temperatures of one operating point.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct OperatingSection {
+    pub inner_speed: Option<Quantity<AngularSpeed>>,
+    pub outer_speed: Option<Quantity<AngularSpeed>>,
+    pub radial_load: Option<Quantity<Force>>,
+    pub axial_load: Option<Quantity<Force>>,
+    /// `fixed` (in space) or `rotating` (with the inner ring, e.g. unbalance; 2002834).
+    pub load_direction: Option<LoadDirection>,
+    #[serde(default)]
+    pub temperatures: TemperatureSection,
+}
+
+#[derive(Debug, Deserialize, Clone, Copy, PartialEq, Eq)]
+#[serde(rename_all = "kebab-case")]
+pub enum LoadDirection {
+    Fixed,
+    Rotating,
+}
+
+#[derive(Debug, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct TemperatureSection {
+    pub oil: Option<Quantity<Temperature>>,
+    pub inner_ring: Option<Quantity<Temperature>>,
+    pub outer_ring: Option<Quantity<Temperature>>,
+    pub rollers: Option<Quantity<Temperature>>,
+    pub cage: Option<Quantity<Temperature>>,
+    pub shaft: Option<Quantity<Temperature>>,
+    pub housing: Option<Quantity<Temperature>>,
 }

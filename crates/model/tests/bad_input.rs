@@ -167,3 +167,16 @@ fn wrong_profile_kind_is_named() {
     let m = error_after("kind = \"crowned\"", "kind = \"banana\"");
     assert!(m.contains("roller.profile") && m.contains("banana"), "{m}");
 }
+
+#[test]
+fn lubricant_errors_name_the_key() {
+    let m = error_after("oil = \"vnii-np-50-1-4u\"", "oil = \"castor\"");
+    assert!(
+        m.contains("lubricant.oil") && m.contains("pao1-vg320"),
+        "{m}"
+    );
+    let m = error_after("density = \"930 kg/m3\"", "density = \"-930 kg/m3\"");
+    assert!(m.contains("lubricant") && m.contains("density"), "{m}");
+    let m = error_after("radial_load = \"1000 N\"", "radial_load = \"1000 mm\"");
+    assert!(m.contains("operating.radial_load"), "{m}");
+}

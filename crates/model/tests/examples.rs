@@ -26,7 +26,9 @@ fn every_example_loads() {
 
 #[test]
 fn default_model_is_2002834_per_spec_f02() {
-    let BearingModel::Cylindrical(b) = parse(rolldyn_model::DEFAULT_MODEL, "default").unwrap()
+    let BearingModel::Cylindrical(b) = parse(rolldyn_model::DEFAULT_MODEL, "default")
+        .unwrap()
+        .bearing
     else {
         panic!("cylindrical expected")
     };
@@ -45,7 +47,9 @@ fn default_model_is_2002834_per_spec_f02() {
 
 #[test]
 fn roller_mass_matches_a_cylinder_within_the_chamfer_loss() {
-    let BearingModel::Cylindrical(b) = parse(rolldyn_model::DEFAULT_MODEL, "default").unwrap()
+    let BearingModel::Cylindrical(b) = parse(rolldyn_model::DEFAULT_MODEL, "default")
+        .unwrap()
+        .bearing
     else {
         panic!()
     };
@@ -62,11 +66,31 @@ fn roller_mass_matches_a_cylinder_within_the_chamfer_loss() {
 fn contact_examples_have_the_seed004_profiles() {
     let drop_at = |name: &str, x: f64| {
         let m = load(&examples().join("contact").join(name)).unwrap();
-        m.roller().profile.drop(x)
+        m.bearing.roller().profile.drop(x)
     };
     assert_eq!(drop_at("32206-straight.toml", 3.7e-3), 0.0);
     assert!((drop_at("32206-crowned-3.2um.toml", 3.25e-3) - 3.2e-6).abs() < 1e-12);
     assert!((drop_at("32206-crowned-6.5um.toml", 3.25e-3) - 6.5e-6).abs() < 1e-12);
     assert!((drop_at("32206-log-small.toml", 3.25e-3) - 2.05e-6).abs() < 0.01e-6);
     assert!((drop_at("32206-log-large.toml", 3.25e-3) - 10.3e-6).abs() < 0.05e-6);
+}
+
+#[test]
+fn operating_and_lubricant_sections() {
+    let m = load(&examples().join("obrien-taylor.toml")).unwrap();
+    let op = m.operating;
+    assert!((op.inner_speed.unwrap() - 4000.0 * std::f64::consts::PI / 30.0).abs() < 1e-9);
+    assert_eq!(op.radial_load, Some(201.0));
+    assert!(!op.load_rotates);
+    assert!((op.temperatures.oil.unwrap() - 327.65).abs() < 1e-9);
+    let lub = m.lubrication.unwrap();
+    assert_eq!(lub.oil.name, "nvi65");
+    lub.traction_model()
+        .expect("NVI 65 with the linear-elastic law is complete");
+    // 2002834: the seed's VNII NP 50-1-4u completed by the ASSUMED data-sheet values.
+    let m = parse(rolldyn_model::DEFAULT_MODEL, "default").unwrap();
+    assert!(m.operating.load_rotates);
+    let oil = m.lubrication.unwrap().oil;
+    let nu = oil.kinematic_viscosity(373.15).unwrap();
+    assert!((nu / 3.2e-6 - 1.0).abs() < 1e-9, "{nu}");
 }

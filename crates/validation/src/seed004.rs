@@ -88,7 +88,9 @@ pub const TABLE2: [Table2Row; 7] = [
 /// `tilt` [rad].
 pub fn contact(index: usize, tilt: f64) -> RollerRacewayContact {
     let (file, _, text) = PROFILES[index];
-    let model = rolldyn_model::parse(text, file).expect("example models are valid");
+    let model = rolldyn_model::parse(text, file)
+        .expect("example models are valid")
+        .bearing;
     RollerRacewayContact::from_model(&model, true, tilt).expect("example geometry is valid")
 }
 

@@ -188,7 +188,7 @@ pub fn describe(s: &Summary) -> Vec<String> {
 }
 
 pub fn run(args: Args) -> Result<(), Failure> {
-    let model = load_model(args.model.as_deref())?;
+    let model = load_model(args.model.as_deref())?.bearing;
     let summary = summarise(&model, args.speed.si(), args.outer_speed.si());
     if args.json {
         print_json(&summary)

@@ -147,7 +147,7 @@ pub fn solve(
 }
 
 pub fn run(args: Args) -> Result<(), Failure> {
-    let model = load_model(args.model.as_deref())?;
+    let model = load_model(args.model.as_deref())?.bearing;
     let tilt = args.tilt.si() + model.misalignment().inner_ring_tilt;
     let contact =
         RollerRacewayContact::from_model(&model, matches!(args.raceway, Raceway::Inner), tilt)

@@ -27,7 +27,7 @@ const TILTS_ARCMIN: [f64; 3] = [0.0, 4.0, 8.0];
 const CELLS: (usize, usize) = (150, 9);
 
 pub fn run(args: Args) -> Result<(), Failure> {
-    let model = load_model(None)?;
+    let model = load_model(None)?.bearing;
     let summary = summarise(&model, SPEED_RPM * RPM, 0.0);
     if !args.json {
         describe(&summary).iter().for_each(|l| println!("{l}"));
