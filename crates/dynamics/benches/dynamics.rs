@@ -1,0 +1,95 @@
+#![allow(clippy::field_reassign_with_default, clippy::needless_range_loop)]
+//! Dynamics benchmarks (2002834, 18 rollers × 10 slices, 6371 rpm, 500 N, EHL traction with the
+//! PAO VG 320 Muraki model): right-hand-side cost with EHL traction and with a trivial
+//! two-level law (the difference is the traction share), and simulated time per wall time.
+
+use criterion::{Criterion, criterion_group, criterion_main};
+use rolldyn_dynamics::*;
+use rolldyn_lubrication::traction::{FrictionLaw, TractionConfig, TwoLevelLaw};
+use rolldyn_lubrication::{TractionModel, lubricant_by_name};
+use std::hint::black_box;
+
+fn bearing() -> rolldyn_geometry::CylindricalRollerBearing {
+    let rolldyn_model::BearingModel::Cylindrical(mut b) =
+        rolldyn_model::parse(rolldyn_model::DEFAULT_MODEL, "2002834.toml")
+            .unwrap()
+            .bearing
+    else {
+        panic!("2002834 is a bearing")
+    };
+    b.roller.slice_count = 10;
+    b
+}
+
+fn sim(traction: TractionModel) -> Simulation {
+    let b = bearing();
+    let mut cond = OperatingConditions::new(6371.0 * std::f64::consts::TAU / 60.0, 500.0);
+    cond.cage_drag_n_m_s = CAGE_DRAG_2002834_100C;
+    let mut set = DynamicsSettings::default();
+    set.output_step_s = 0.0;
+    Simulation::new(
+        &b,
+        cond,
+        ContactParameters::for_bearing(&b),
+        set,
+        RacewayTraction::same(traction),
+    )
+    .unwrap()
+}
+
+fn ehl() -> TractionModel {
+    TractionModel::muraki(lubricant_by_name("pao1-vg320").unwrap()).unwrap()
+}
+
+fn bench(c: &mut Criterion) {
+    let mut s = sim(ehl());
+    // leave the exact start state: 2 ms of running
+    s.run_until(2e-3, &mut NullSink, &mut |_| {}).unwrap();
+    let mut dy = vec![0.0; s.state().len()];
+    c.bench_function("rhs_2002834_18x10_ehl", |b| {
+        b.iter(|| s.evaluate_derivative(black_box(&mut dy)))
+    });
+    let two = TractionModel::new(TractionConfig {
+        oil: None,
+        law: FrictionLaw::TwoLevel(TwoLevelLaw {
+            mu_s: 0.05,
+            mu_d: 0.05,
+            v_s: 1e-2,
+            v_d: 2e-2,
+        }),
+        ..TractionConfig::default()
+    })
+    .unwrap();
+    let mut s2 = sim(two);
+    s2.run_until(2e-3, &mut NullSink, &mut |_| {}).unwrap();
+    c.bench_function("rhs_2002834_18x10_two_level", |b| {
+        b.iter(|| s2.evaluate_derivative(black_box(&mut dy)))
+    });
+    let mut g = c.benchmark_group("simulate");
+    g.sample_size(10);
+    g.bench_function("2002834_6371rpm_10ms", |b| {
+        b.iter(|| {
+            let mut s = sim(ehl());
+            let r = s.run_until(0.01, &mut NullSink, &mut |_| {}).unwrap();
+            black_box(r.steps)
+        })
+    });
+    g.finish();
+    // one longer run for the headline figure
+    let mut s = sim(ehl());
+    let r = s.run_until(0.04, &mut NullSink, &mut |_| {}).unwrap();
+    println!(
+        "2002834 6371 rpm, 0.04 s simulated: wall {:.2} s → simulated/wall = {:.3}; {} steps ({} rejected), {} RHS, mean step {:.2} µs, most limiting: {:?}",
+        r.wall_time_s,
+        r.simulated_time_s / r.wall_time_s,
+        r.steps,
+        r.rejected_steps,
+        r.rhs_evaluations,
+        1e6 * r.simulated_time_s / r.steps as f64,
+        s.most_limiting_component()
+    );
+    println!("summary: {r:?}");
+}
+
+criterion_group!(benches, bench);
+criterion_main!(benches);

@@ -1,0 +1,95 @@
+//! Layout of the flat state vector (see the crate docs, "Coordinates").
+//!
+//! * roller `j` (12 values from `12 j`): `θ, r, z, a_x, a_y, a_z, θ̇, ṙ, ż, L_x, L_y, L_z`
+//! * cage (13 values): `x, y, z, φ, a_x, a_y, a_z, v_x, v_y, v_z, L_x, L_y, L_z`
+//! * inner ring (6 values): `x, y, z, v_x, v_y, v_z`
+
+/// Values per roller.
+pub const ROLLER_DOF: usize = 12;
+/// Values of the cage.
+pub const CAGE_DOF: usize = 13;
+/// Values of the inner ring.
+pub const INNER_DOF: usize = 6;
+
+/// Index arithmetic of the state vector.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Layout {
+    /// number of rollers
+    pub rollers: usize,
+}
+
+impl Layout {
+    /// Length of the state vector.
+    pub fn len(&self) -> usize {
+        ROLLER_DOF * self.rollers + CAGE_DOF + INNER_DOF
+    }
+    /// Never empty.
+    pub fn is_empty(&self) -> bool {
+        false
+    }
+    /// First index of roller `j`.
+    #[inline]
+    pub fn roller(&self, j: usize) -> usize {
+        ROLLER_DOF * j
+    }
+    /// First index of the cage.
+    #[inline]
+    pub fn cage(&self) -> usize {
+        ROLLER_DOF * self.rollers
+    }
+    /// First index of the inner ring.
+    #[inline]
+    pub fn inner(&self) -> usize {
+        ROLLER_DOF * self.rollers + CAGE_DOF
+    }
+
+    /// Human-readable name of state component `i` (diagnoses).
+    pub fn describe(&self, i: usize) -> String {
+        const R: [&str; ROLLER_DOF] = [
+            "azimuth θ",
+            "radius r",
+            "axial position z",
+            "axis a_x",
+            "axis a_y",
+            "axis a_z",
+            "orbital speed θ̇",
+            "radial velocity ṙ",
+            "axial velocity ż",
+            "angular momentum L_x",
+            "angular momentum L_y",
+            "angular momentum L_z (spin)",
+        ];
+        const C: [&str; CAGE_DOF] = [
+            "centre x",
+            "centre y",
+            "centre z",
+            "angle φ",
+            "axis a_x",
+            "axis a_y",
+            "axis a_z",
+            "velocity v_x",
+            "velocity v_y",
+            "velocity v_z",
+            "angular momentum L_x",
+            "angular momentum L_y",
+            "angular momentum L_z (spin)",
+        ];
+        const I: [&str; INNER_DOF] = [
+            "centre x",
+            "centre y",
+            "centre z",
+            "velocity v_x",
+            "velocity v_y",
+            "velocity v_z",
+        ];
+        if i < self.cage() {
+            format!("roller {} {}", i / ROLLER_DOF, R[i % ROLLER_DOF])
+        } else if i < self.inner() {
+            format!("cage {}", C[i - self.cage()])
+        } else if i < self.len() {
+            format!("inner ring {}", I[i - self.inner()])
+        } else {
+            format!("state component {i}")
+        }
+    }
+}

@@ -1,0 +1,490 @@
+//! The right-hand side `ẏ = f(t, y)`: contact detection and forces for every roller slice on
+//! both raceways (SPEC §2.1–2.2, §3.3), roller ↔ cage bars, cage ↔ land, cage drag (§3.6),
+//! loads and gravity, and the Newton–Euler equations (seed 000 eqs. (2.1), (2.2)).
+//!
+//! Allocation-free: all scratch lives in [`Diagnostics`], allocated once.
+
+use crate::land::LandKinematics;
+use crate::layout::{CAGE_DOF, INNER_DOF, ROLLER_DOF};
+use crate::model::{Model, RacewaySlices};
+use crate::vec3::{V3, add, axpy, cross, dot, norm, perp, scale, sub, unit_or};
+use rolldyn_contact::damping::SliceDamping;
+use rolldyn_lubrication::{ContactGeometry, ContactState, traction};
+
+/// Per-roller contact quantities of one raceway (struct of arrays). Speeds, film, Λ and μ are
+/// load-weighted means over the loaded slices; force and power are sums.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct ContactTable {
+    pub force: Vec<f64>,
+    pub sliding: Vec<f64>,
+    pub rolling: Vec<f64>,
+    pub film: Vec<f64>,
+    pub lambda: Vec<f64>,
+    pub mu: Vec<f64>,
+    pub power: Vec<f64>,
+    /// contact state of the most loaded slice (scuffing check)
+    pub worst: Vec<Option<ContactState>>,
+    worst_q: Vec<f64>,
+}
+
+impl ContactTable {
+    fn new(z: usize) -> Self {
+        Self {
+            force: vec![0.0; z],
+            sliding: vec![0.0; z],
+            rolling: vec![0.0; z],
+            film: vec![0.0; z],
+            lambda: vec![0.0; z],
+            mu: vec![0.0; z],
+            power: vec![0.0; z],
+            worst: vec![None; z],
+            worst_q: vec![0.0; z],
+        }
+    }
+    #[inline]
+    fn reset(&mut self, j: usize) {
+        self.force[j] = 0.0;
+        self.sliding[j] = 0.0;
+        self.rolling[j] = 0.0;
+        self.film[j] = 0.0;
+        self.lambda[j] = 0.0;
+        self.mu[j] = 0.0;
+        self.power[j] = 0.0;
+        self.worst[j] = None;
+        self.worst_q[j] = 0.0;
+    }
+    #[inline]
+    fn finish(&mut self, j: usize) {
+        let q = self.force[j];
+        if q > 0.0 {
+            let w = 1.0 / q;
+            self.sliding[j] *= w;
+            self.rolling[j] *= w;
+            self.film[j] *= w;
+            self.lambda[j] *= w;
+            self.mu[j] *= w;
+        } else {
+            self.film[j] = f64::NAN;
+            self.lambda[j] = f64::NAN;
+        }
+    }
+}
+
+/// Which body pierced what (divergence diagnosis).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Violation {
+    pub what: &'static str,
+    pub index: usize,
+    pub penetration: f64,
+}
+
+/// Scratch and per-evaluation results of the right-hand side.
+#[derive(Debug, Clone)]
+pub(crate) struct Diagnostics {
+    pub inner: ContactTable,
+    pub outer: ContactTable,
+    /// roller–cage bar normal force per roller (sum of the evaluation points), N
+    pub bar: Vec<f64>,
+    pub bar_power: Vec<f64>,
+    /// cage–land normal force (sum of stations), N
+    pub land_force: f64,
+    pub land_power: f64,
+    /// prescribed ring speeds at the evaluation time
+    pub inner_speed: f64,
+    pub outer_speed: f64,
+    pub violation: Option<Violation>,
+}
+
+impl Diagnostics {
+    pub fn new(z: usize) -> Self {
+        Self {
+            inner: ContactTable::new(z),
+            outer: ContactTable::new(z),
+            bar: vec![0.0; z],
+            bar_power: vec![0.0; z],
+            land_force: 0.0,
+            land_power: 0.0,
+            inner_speed: 0.0,
+            outer_speed: 0.0,
+            violation: None,
+        }
+    }
+}
+
+/// Angular velocity of an axisymmetric body from its angular momentum `L` and unit axis `a`:
+/// `ω = L/I_t + (1/I_a − 1/I_t)(a·L) a` (inverse of `L = I ω` with `I = I_t(E − aaᵀ) + I_a aaᵀ`).
+#[inline]
+pub fn axisymmetric_omega(l: V3, a: V3, ia: f64, it: f64) -> V3 {
+    axpy(scale(l, 1.0 / it), (1.0 / ia - 1.0 / it) * dot(a, l), a)
+}
+
+#[inline]
+fn rd(y: &[f64], i: usize) -> V3 {
+    [y[i], y[i + 1], y[i + 2]]
+}
+
+#[inline]
+fn wr(dy: &mut [f64], i: usize, v: V3) {
+    dy[i] = v[0];
+    dy[i + 1] = v[1];
+    dy[i + 2] = v[2];
+}
+
+/// Kinematics of the roller needed by its contacts.
+struct RollerKin {
+    c: V3,
+    a: V3,
+    v: V3,
+    w: V3,
+    orbit: f64,
+}
+
+/// Kinematics of a ring (centre, velocity, axis, spin).
+struct RingKin {
+    o: V3,
+    v: V3,
+    axis: V3,
+    spin: f64,
+}
+
+#[inline]
+fn note(diag: &mut Diagnostics, what: &'static str, index: usize, penetration: f64, limit: f64) {
+    if penetration > limit && diag.violation.is_none() {
+        diag.violation = Some(Violation {
+            what,
+            index,
+            penetration,
+        });
+    }
+}
+
+/// Slices of roller `j` on one raceway. Adds the force and moment on the roller to `f`, `m` and
+/// returns the force on the ring.
+#[allow(clippy::too_many_arguments)]
+#[inline]
+fn raceway_contacts(
+    model: &Model,
+    rs: &RacewaySlices,
+    inner: bool,
+    j: usize,
+    rk: &RollerKin,
+    ring: &RingKin,
+    f: &mut V3,
+    m: &mut V3,
+    table: &mut crate::rhs::ContactTable,
+    limit: f64,
+    violation: &mut Option<Violation>,
+) -> V3 {
+    let tmodel = if inner {
+        &model.traction.inner
+    } else {
+        &model.traction.outer
+    };
+    let mut f_ring = [0.0; 3];
+    table.reset(j);
+    for s in 0..model.slice_x.len() {
+        let p = axpy(rk.c, model.slice_x[s], rk.a);
+        let d = sub(p, ring.o);
+        let zeta = dot(d, ring.axis);
+        let dp = axpy(d, -zeta, ring.axis);
+        let rho = norm(dp);
+        let race_drop = match &rs.profile {
+            Some(pr) => pr.drop(zeta),
+            None => 0.0,
+        };
+        let delta = if inner {
+            model.ri + model.rw - rho
+        } else {
+            rho + model.rw - model.ro
+        } - model.slice_drop[s]
+            - race_drop;
+        if delta <= 0.0 || rho == 0.0 {
+            continue;
+        }
+        if delta > limit && violation.is_none() {
+            *violation = Some(Violation {
+                what: if inner {
+                    "roller ↔ inner raceway"
+                } else {
+                    "roller ↔ outer raceway"
+                },
+                index: j,
+                penetration: delta,
+            });
+        }
+        // outward unit normal of the ring axis through the slice centre
+        let n_out = scale(dp, 1.0 / rho);
+        // unit normal pointing from the ring into the roller
+        let n = if inner { n_out } else { scale(n_out, -1.0) };
+        let cp = axpy(p, -model.rw, n);
+        let r_cp = sub(cp, rk.c);
+        let v_roll = add(rk.v, cross(rk.w, r_cp));
+        let v_ring = add(ring.v, scale(cross(ring.axis, sub(cp, ring.o)), ring.spin));
+        let vrel = sub(v_roll, v_ring);
+        let delta_dot = -dot(vrel, n);
+        let elastic = rs.k[s] * delta.powf(rs.n);
+        let q = rs.damping[s].normal_force(elastic, delta, delta_dot);
+        if q <= 0.0 {
+            continue;
+        }
+        let vt = perp(vrel, n);
+        let vs = norm(vt);
+        // rolling direction and entrainment speed in the roller's orbital frame (SPEC §3.5)
+        let t_dir = cross(ring.axis, n_out);
+        let w_frame = [-rk.orbit * cp[1], rk.orbit * cp[0], 0.0];
+        let u = 0.5 * (dot(v_roll, t_dir) + dot(v_ring, t_dir)) - dot(w_frame, t_dir);
+        let state = ContactState {
+            normal_force_n: q,
+            geometry: ContactGeometry::Line {
+                length_m: model.slice_len[s],
+            },
+            reduced_radius_m: rs.reduced_radius,
+            reduced_modulus_pa: rs.reduced_modulus,
+            rolling_speed_m_s: u,
+            sliding_speed_m_s: vs,
+            temperature_k: rs.temperature_k,
+            roughness_ra_m: rs.roughness,
+            film_thickness_m: None,
+        };
+        let tr = traction(&state, tmodel);
+        let mut fs = scale(n, q);
+        if vs > 0.0 {
+            fs = axpy(fs, -tr.coefficient * q / vs, vt);
+        }
+        *f = add(*f, fs);
+        *m = add(*m, cross(r_cp, fs));
+        f_ring = sub(f_ring, fs);
+        table.force[j] += q;
+        table.sliding[j] += q * vs;
+        table.rolling[j] += q * u.abs();
+        table.film[j] += q * tr.film_minimum_m;
+        table.lambda[j] += q * tr.lambda.min(1e3);
+        table.mu[j] += q * tr.coefficient;
+        table.power[j] += tr.coefficient.abs() * q * vs;
+        if q > table.worst_q[j] {
+            table.worst_q[j] = q;
+            table.worst[j] = Some(state);
+        }
+    }
+    table.finish(j);
+    f_ring
+}
+
+/// Evaluates `dy = f(t, y)` and fills `diag`.
+pub(crate) fn rhs(model: &Model, t: f64, y: &[f64], dy: &mut [f64], diag: &mut Diagnostics) {
+    let lay = model.layout;
+    let cond = &model.conditions;
+    let g = cond.gravity_m_s2;
+    let wi = cond.inner_speed.speed(t);
+    let wo = cond.outer_speed.speed(t);
+    diag.inner_speed = wi;
+    diag.outer_speed = wo;
+    diag.violation = None;
+    let div_limit = model.div_limit;
+
+    // inner ring
+    let ii = lay.inner();
+    let inner = RingKin {
+        o: rd(y, ii),
+        v: rd(y, ii + 3),
+        axis: model.axis_i,
+        spin: wi,
+    };
+    let outer = RingKin {
+        o: [0.0; 3],
+        v: [0.0; 3],
+        axis: [0.0, 0.0, 1.0],
+        spin: wo,
+    };
+    let mut f_inner = [0.0; 3];
+
+    // cage
+    let ci = lay.cage();
+    let cc = rd(y, ci);
+    let phi_c = y[ci + 3];
+    let ac = unit_or(rd(y, ci + 4), [0.0, 0.0, 1.0]);
+    let vcc = rd(y, ci + 7);
+    let lc = rd(y, ci + 10);
+    let wc = axisymmetric_omega(lc, ac, model.ia_c, model.it_c);
+    let mut f_cage = scale(g, model.m_c);
+    let mut m_cage = scale(ac, -cond.cage_drag_n_m_s * dot(wc, ac));
+
+    let bar = &model.params.roller_cage;
+    let bar_share = 0.5; // K_p and C_h split over the two evaluation points along the roller
+    let bar_damping = SliceDamping::new(bar_share * bar.c_h, bar.d);
+    let pitch = std::f64::consts::TAU / model.z as f64;
+
+    for j in 0..model.z {
+        let b = lay.roller(j);
+        let (th, r, zz) = (y[b], y[b + 1], y[b + 2]);
+        let a = unit_or(rd(y, b + 3), [0.0, 0.0, 1.0]);
+        let (thd, rdot, zd) = (y[b + 6], y[b + 7], y[b + 8]);
+        let l = rd(y, b + 9);
+        let (s, c) = th.sin_cos();
+        let er = [c, s, 0.0];
+        let et = [-s, c, 0.0];
+        let centre = [r * c, r * s, zz];
+        let v = [rdot * c - r * thd * s, rdot * s + r * thd * c, zd];
+        let w = axisymmetric_omega(l, a, model.ia_r, model.it_r);
+        let rk = RollerKin {
+            c: centre,
+            a,
+            v,
+            w,
+            orbit: thd,
+        };
+        let mut f = scale(g, model.m_r);
+        let mut m = [0.0; 3];
+        let fr = raceway_contacts(
+            model,
+            &model.inner,
+            true,
+            j,
+            &rk,
+            &inner,
+            &mut f,
+            &mut m,
+            &mut diag.inner,
+            div_limit,
+            &mut diag.violation,
+        );
+        f_inner = add(f_inner, fr);
+        raceway_contacts(
+            model,
+            &model.outer,
+            false,
+            j,
+            &rk,
+            &outer,
+            &mut f,
+            &mut m,
+            &mut diag.outer,
+            div_limit,
+            &mut diag.violation,
+        );
+
+        // roller ↔ cage bars: edge lines of pocket j at the bar contact radius, both pocket
+        // sides, evaluated at both ends of the roller (SPEC §1.5 "bone-shaped" scar)
+        let php = phi_c + pitch * j as f64;
+        let (sp, cpp) = php.sin_cos();
+        let ep = unit_or(perp([cpp, sp, 0.0], ac), [cpp, sp, 0.0]);
+        let tp = cross(ac, ep);
+        let mut bar_q = 0.0;
+        let mut bar_pw = 0.0;
+        for side in [-1.0, 1.0] {
+            let edge = axpy(axpy(cc, model.r_bar, ep), side * model.half_pocket, tp);
+            for &x in &model.bar_x {
+                let q = axpy(centre, x, a);
+                let d = perp(sub(q, edge), ac);
+                let dist = norm(d);
+                let delta = model.rw - dist;
+                if delta <= 0.0 || dist == 0.0 {
+                    continue;
+                }
+                note(diag, "roller ↔ cage bar", j, delta, div_limit);
+                let n = scale(d, 1.0 / dist);
+                let cp = axpy(q, -model.rw, n);
+                let r_cp = sub(cp, centre);
+                let v_roll = add(v, cross(w, r_cp));
+                let v_cage = add(vcc, cross(wc, sub(cp, cc)));
+                let vrel = sub(v_roll, v_cage);
+                let delta_dot = -dot(vrel, n);
+                let elastic = bar_share * bar.k_p * delta.powf(bar.exponent);
+                let qn = bar_damping.normal_force(elastic, delta, delta_dot);
+                if qn <= 0.0 {
+                    continue;
+                }
+                let vt = perp(vrel, n);
+                let vs = norm(vt);
+                let mu = bar.friction.coefficient(vs);
+                let mut fc = scale(n, qn);
+                if vs > 0.0 {
+                    fc = axpy(fc, -mu * qn / vs, vt);
+                }
+                f = add(f, fc);
+                m = add(m, cross(r_cp, fc));
+                f_cage = sub(f_cage, fc);
+                m_cage = sub(m_cage, cross(sub(cp, cc), fc));
+                bar_q += qn;
+                bar_pw += mu * qn * vs;
+            }
+        }
+        diag.bar[j] = bar_q;
+        diag.bar_power[j] = bar_pw;
+
+        // Newton–Euler in cylindrical coordinates (seed 000 (2.1)) and L̇ = M ((2.2) in the
+        // inertial frame: the gyroscopic term is contained in ω(L, a))
+        let fr_ = dot(f, er);
+        let ft_ = dot(f, et);
+        let mr = model.m_r;
+        dy[b] = thd;
+        dy[b + 1] = rdot;
+        dy[b + 2] = zd;
+        wr(dy, b + 3, cross(w, a));
+        dy[b + 6] = (ft_ / mr - 2.0 * rdot * thd) / r;
+        dy[b + 7] = fr_ / mr + r * thd * thd;
+        dy[b + 8] = f[2] / mr;
+        wr(dy, b + 9, m);
+    }
+
+    // cage ↔ guiding land, two stations at the quarter points of the land width
+    diag.land_force = 0.0;
+    diag.land_power = 0.0;
+    if let Some(land) = model.land {
+        let (ring, ring_spin) = if land.inner {
+            (&inner, wi)
+        } else {
+            (&outer, wo)
+        };
+        for zeta in [-0.25 * land.width, 0.25 * land.width] {
+            let k = LandKinematics {
+                land_axis: ring.axis,
+                land_center: axpy(ring.o, zeta, ring.axis),
+                land_velocity: ring.v,
+                land_omega: scale(ring.axis, ring_spin),
+                cage_center: axpy(cc, zeta, ac),
+                cage_velocity: add(vcc, cross(wc, scale(ac, zeta))),
+                cage_omega: wc,
+                land_radius_m: land.radius,
+                radial_gap_m: land.gap,
+                inner_land: land.inner,
+                width_m: 0.5 * land.width,
+                stations: 2,
+                temperature_k: cond.temperatures.cage_k,
+            };
+            let lf = model.land_model.force(&k);
+            if lf.normal_force_n > 0.0 {
+                note(diag, "cage ↔ guiding land", 0, lf.penetration_m, div_limit);
+                f_cage = add(f_cage, lf.force_on_cage_n);
+                m_cage = add(m_cage, cross(sub(lf.point_m, cc), lf.force_on_cage_n));
+                if land.inner {
+                    f_inner = sub(f_inner, lf.force_on_cage_n);
+                }
+                diag.land_force += lf.normal_force_n;
+                diag.land_power += lf.power_w;
+            }
+        }
+    }
+
+    // cage equations
+    wr(dy, ci, vcc);
+    dy[ci + 3] = dot(wc, ac);
+    wr(dy, ci + 4, cross(wc, ac));
+    wr(dy, ci + 7, scale(f_cage, 1.0 / model.m_c));
+    wr(dy, ci + 10, m_cage);
+
+    // inner ring: prescribed spin and tilt, free or fixed translation
+    let sup = cond.support;
+    let load = cond.inner_ring_force(t);
+    let acc = axpy(scale(add(f_inner, load), 1.0 / model.m_i), 1.0, g);
+    for k in 0..3 {
+        let free = if k < 2 {
+            sup.radial_free
+        } else {
+            sup.axial_free
+        };
+        dy[ii + k] = if free { y[ii + 3 + k] } else { 0.0 };
+        dy[ii + 3 + k] = if free { acc[k] } else { 0.0 };
+    }
+    debug_assert_eq!(CAGE_DOF + INNER_DOF + ROLLER_DOF * model.z, y.len());
+}

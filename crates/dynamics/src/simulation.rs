@@ -1,0 +1,1032 @@
+//! The public entry point: [`Simulation`].
+
+use crate::checkpoint::{MAGIC, Reader, Writer};
+use crate::conditions::OperatingConditions;
+use crate::error::DynError;
+use crate::initial::{
+    InitialState, RollerStart, StaticSolution, pure_rolling_spin, static_equilibrium,
+};
+use crate::integrator::{Dopri5, OdeSystem, StepError, StepStats};
+use crate::land::CageLandModel;
+use crate::layout::Layout;
+use crate::model::{Model, RacewayTraction};
+use crate::output::{
+    ContactSnapshot, OutputSink, RevolutionSummary, RollerSnapshot, RunSummary, Snapshot,
+    SnapshotBuffers,
+};
+use crate::parameters::ContactParameters;
+use crate::rhs::{Diagnostics, axisymmetric_omega, rhs};
+use crate::settings::DynamicsSettings;
+use crate::summary::{StepValues, Window};
+use crate::vec3::{V3, dot, unit_or};
+use rolldyn_geometry::CylindricalRollerBearing;
+use rolldyn_lubrication::{SlipSearch, scuffing::scuffing_check};
+use std::f64::consts::TAU;
+use std::time::Instant;
+
+struct Sys<'a> {
+    model: &'a Model,
+    diag: &'a mut Diagnostics,
+}
+
+impl OdeSystem for Sys<'_> {
+    #[inline]
+    fn rhs(&mut self, t: f64, y: &[f64], dy: &mut [f64]) {
+        rhs(self.model, t, y, dy, self.diag);
+    }
+}
+
+/// Bookkeeping of cage revolutions, summary windows and the cage-centre orbit.
+#[derive(Debug, Clone, Copy)]
+struct Tracker {
+    /// completed cage revolutions
+    revolutions: u64,
+    /// cage angle at the start of the current revolution
+    rev_angle0: f64,
+    rev: Window,
+    run: Window,
+    /// the run window has been restarted after the discarded revolutions
+    run_started: bool,
+    /// unwrapped orbit angle of the cage centre
+    orbit: f64,
+    orbit_raw: f64,
+    prev_rev_speed: f64,
+    steady_at: f64,
+    next_sample: u64,
+    wall: f64,
+}
+
+/// A dynamics run of one cylindrical roller bearing.
+///
+/// ```no_run
+/// use rolldyn_dynamics::*;
+/// # fn demo(bearing: &rolldyn_geometry::CylindricalRollerBearing,
+/// #         traction: rolldyn_lubrication::TractionModel) -> Result<(), DynError> {
+/// let cond = OperatingConditions::new(6371.0 * std::f64::consts::TAU / 60.0, 500.0);
+/// let params = ContactParameters::for_bearing(bearing);
+/// let mut sim = Simulation::new(bearing, cond, params, DynamicsSettings::default(),
+///                               RacewayTraction::same(traction))?;
+/// let summary = sim.run_until(0.05, &mut NullSink, &mut |_t| {})?;
+/// println!("cage slip {:.4}", summary.cage_slip_mean);
+/// # Ok(()) }
+/// ```
+#[derive(Debug)]
+pub struct Simulation {
+    model: Model,
+    settings: DynamicsSettings,
+    ig: Dopri5,
+    diag: Diagnostics,
+    snap: SnapshotBuffers,
+    scratch_y: Vec<f64>,
+    scratch_dy: Vec<f64>,
+    tr: Tracker,
+    fingerprint: u64,
+}
+
+impl Simulation {
+    /// Builds a run from the default start ([`Simulation::default_initial_state`]).
+    pub fn new(
+        bearing: &CylindricalRollerBearing,
+        conditions: OperatingConditions,
+        parameters: ContactParameters,
+        settings: DynamicsSettings,
+        traction: RacewayTraction,
+    ) -> Result<Self, DynError> {
+        let mut model = Model::new(bearing, conditions, parameters, traction)?;
+        model.div_limit = settings.divergence_penetration_m;
+        let init = default_initial_state(&model)?;
+        Self::from_model(model, settings, &init)
+    }
+
+    /// Builds a run from an explicit initial state (e.g. from the quasi-static model).
+    pub fn with_initial_state(
+        bearing: &CylindricalRollerBearing,
+        conditions: OperatingConditions,
+        parameters: ContactParameters,
+        settings: DynamicsSettings,
+        traction: RacewayTraction,
+        initial: &InitialState,
+    ) -> Result<Self, DynError> {
+        let mut model = Model::new(bearing, conditions, parameters, traction)?;
+        model.div_limit = settings.divergence_penetration_m;
+        Self::from_model(model, settings, initial)
+    }
+
+    /// The default start of a bearing: pure-rolling kinematics at the epicyclic cage speed,
+    /// rollers centred in their pockets at their static equilibrium radius under the ring load.
+    pub fn default_initial_state(
+        bearing: &CylindricalRollerBearing,
+        conditions: OperatingConditions,
+        parameters: ContactParameters,
+        traction: RacewayTraction,
+    ) -> Result<InitialState, DynError> {
+        let model = Model::new(bearing, conditions, parameters, traction)?;
+        default_initial_state(&model)
+    }
+
+    /// Static load distribution of the bearing under its load at the start (rollers at the
+    /// pocket centres, centrifugal force at the epicyclic cage speed).
+    pub fn static_solution(&self) -> Result<StaticSolution, DynError> {
+        static_solution(&self.model)
+    }
+
+    /// Replaces the cage ↔ land force model (e.g. the hydrodynamic model of the Reynolds
+    /// crate). The default is [`crate::TwoLevelLand`] with `ContactParameters::cage_land`.
+    pub fn set_cage_land_model(&mut self, model: Box<dyn CageLandModel>) {
+        self.model.land_model = model;
+        self.ig.k1_valid = false;
+    }
+
+    fn from_model(
+        model: Model,
+        settings: DynamicsSettings,
+        init: &InitialState,
+    ) -> Result<Self, DynError> {
+        let set = &settings.integrator;
+        if !(set.tolerance > 0.0
+            && set.tolerance < 1.0
+            && set.initial_step_s > 0.0
+            && set.max_step_s >= set.initial_step_s
+            && set.min_step_s > 0.0
+            && set.min_step_s < set.initial_step_s
+            && set.safety > 0.0
+            && set.safety <= 1.0
+            && set.max_growth > 1.0
+            && set.min_shrink > 0.0
+            && set.min_shrink < 1.0)
+        {
+            return Err(DynError::InvalidInput(
+                "integrator settings out of range (0 < tolerance < 1, 0 < min_step < initial_step ≤ max_step, 0 < safety ≤ 1, min_shrink < 1 < max_growth)".into(),
+            ));
+        }
+        if !(settings.output_step_s >= 0.0 && settings.output_step_s.is_finite()) {
+            return Err(DynError::InvalidInput("output step must be ≥ 0".into()));
+        }
+        let lay = model.layout;
+        if init.rollers.len() != model.z {
+            return Err(DynError::InvalidInput(format!(
+                "initial state has {} rollers, the bearing {}",
+                init.rollers.len(),
+                model.z
+            )));
+        }
+        let y = pack_state(&model, init)?;
+        let (scale, relative) = error_scales(&model);
+        let ig = Dopri5::new(0.0, y, scale, relative, set.initial_step_s);
+        let z = model.z;
+        let fingerprint = fingerprint(&model);
+        let mut sim = Self {
+            scratch_y: vec![0.0; lay.len()],
+            scratch_dy: vec![0.0; lay.len()],
+            diag: Diagnostics::new(z),
+            snap: SnapshotBuffers::new(z),
+            ig,
+            settings,
+            tr: Tracker {
+                revolutions: 0,
+                rev_angle0: 0.0,
+                rev: Window::start(0.0, 0.0, 0.0),
+                run: Window::start(0.0, 0.0, 0.0),
+                run_started: false,
+                orbit: 0.0,
+                orbit_raw: 0.0,
+                prev_rev_speed: f64::NAN,
+                steady_at: f64::NAN,
+                next_sample: 0,
+                wall: 0.0,
+            },
+            model,
+            fingerprint,
+        };
+        let ci = lay.cage();
+        let c = [sim.ig.y[ci], sim.ig.y[ci + 1]];
+        sim.tr.orbit_raw = c[1].atan2(c[0]);
+        sim.tr.orbit = sim.tr.orbit_raw;
+        let phi = sim.ig.y[ci + 3];
+        sim.tr.rev_angle0 = phi;
+        sim.tr.rev = Window::start(0.0, phi, sim.tr.orbit);
+        sim.tr.run = sim.tr.rev;
+        sim.tr.run_started = settings.discard_revolutions == 0;
+        Ok(sim)
+    }
+
+    /// Current simulated time, s.
+    pub fn time(&self) -> f64 {
+        self.ig.t
+    }
+
+    /// Current state vector (layout in [`Layout`]).
+    pub fn state(&self) -> &[f64] {
+        &self.ig.y
+    }
+
+    /// State-vector layout.
+    pub fn layout(&self) -> Layout {
+        self.model.layout
+    }
+
+    /// Step statistics so far.
+    pub fn stats(&self) -> &StepStats {
+        &self.ig.stats
+    }
+
+    /// Name of the state component that limited the step most often, if any.
+    pub fn most_limiting_component(&self) -> Option<String> {
+        self.ig
+            .stats
+            .most_limiting()
+            .map(|i| self.model.layout.describe(i))
+    }
+
+    /// Completed cage revolutions.
+    pub fn revolutions(&self) -> u64 {
+        self.tr.revolutions
+    }
+
+    /// Time at which steady state was first detected (cage-speed change per revolution below
+    /// `DynamicsSettings::steady_state_tolerance`), s.
+    pub fn steady_state_time(&self) -> Option<f64> {
+        self.tr.steady_at.is_finite().then_some(self.tr.steady_at)
+    }
+
+    /// Total mechanical energy, J: kinetic energy of rollers, cage and inner ring, elastic energy
+    /// of the raceway, bar and (default-model) land contacts, potential of the fixed loads and
+    /// gravity. Conserved by a frictionless, undamped run with fixed loads.
+    pub fn mechanical_energy(&mut self) -> f64 {
+        energy(&self.model, self.ig.t, &self.ig.y)
+    }
+
+    /// Current cage speed, rad/s.
+    pub fn cage_speed(&self) -> f64 {
+        cage_speed(&self.model, &self.ig.y)
+    }
+
+    /// Epicyclic cage speed at the current time, rad/s.
+    pub fn epicyclic_cage_speed(&self) -> f64 {
+        let t = self.ig.t;
+        let c = &self.model.conditions;
+        self.model
+            .epicyclic(c.inner_speed.speed(t), c.outer_speed.speed(t))
+    }
+
+    /// Integrates until `t_end` (the last step may end slightly beyond it: steps are never
+    /// shortened to hit `t_end`, so that a run split into pieces — or resumed from a checkpoint —
+    /// is bit-for-bit identical to an uninterrupted one). Samples are written at every multiple
+    /// of the output step up to `t_end`; `progress` receives the time after every step.
+    pub fn run_until(
+        &mut self,
+        t_end: f64,
+        sink: &mut dyn OutputSink,
+        progress: &mut dyn FnMut(f64),
+    ) -> Result<RunSummary, DynError> {
+        if !t_end.is_finite() {
+            return Err(DynError::InvalidInput("end time must be finite".into()));
+        }
+        let wall0 = Instant::now();
+        let result = self.run_inner(t_end, sink, progress);
+        self.tr.wall += wall0.elapsed().as_secs_f64();
+        result?;
+        Ok(self.summary())
+    }
+
+    fn run_inner(
+        &mut self,
+        t_end: f64,
+        sink: &mut dyn OutputSink,
+        progress: &mut dyn FnMut(f64),
+    ) -> Result<(), DynError> {
+        let mut steps: u64 = 0;
+        // samples still inside the last accepted step (after a resume or a previous call)
+        self.emit_samples(t_end, sink);
+        while self.ig.t < t_end {
+            if steps >= self.settings.integrator.max_steps {
+                return Err(DynError::StepBudgetExhausted {
+                    time_s: self.ig.t,
+                    steps,
+                });
+            }
+            let t_before = self.ig.t;
+            let h_before = self.ig.h;
+            {
+                let mut sys = Sys {
+                    model: &self.model,
+                    diag: &mut self.diag,
+                };
+                self.ig
+                    .step(&mut sys, &self.settings.integrator)
+                    .map_err(|e| match e {
+                        StepError::Collapse { h, component } => DynError::StepSizeCollapse {
+                            time_s: t_before,
+                            step_s: h,
+                            component: self.model.layout.describe(component),
+                        },
+                        StepError::NonFinite { h, component } => DynError::NonFinite {
+                            time_s: t_before,
+                            component: self.model.layout.describe(component),
+                            step_s: h,
+                        },
+                    })?;
+            }
+            steps += 1;
+            if let Some(v) = self.diag.violation {
+                return Err(DynError::Divergence {
+                    time_s: self.ig.t,
+                    body: format!("roller {} / {}", v.index, v.what),
+                    detail: format!(
+                        "penetration {:.3} mm exceeds the divergence limit",
+                        v.penetration * 1e3
+                    ),
+                    step_s: self.ig.t - t_before,
+                });
+            }
+            let _ = h_before;
+            let lay = self.model.layout;
+            for j in 0..self.model.z {
+                let b = lay.roller(j);
+                let y = &self.ig.y;
+                let tilt = (y[b + 3] * y[b + 3] + y[b + 4] * y[b + 4])
+                    .sqrt()
+                    .atan2(y[b + 5]);
+                if tilt > self.settings.divergence_tilt_rad {
+                    return Err(DynError::Divergence {
+                        time_s: self.ig.t,
+                        body: format!("roller {j} attitude"),
+                        detail: format!(
+                            "axis tilted (skew + pitch) by {:.4} rad — no roller-end/rib or pocket-face contact bounds roller skew in this version",
+                            tilt
+                        ),
+                        step_s: self.ig.t - t_before,
+                    });
+                }
+            }
+            self.after_step(self.ig.t - t_before, sink);
+            self.emit_samples(t_end, sink);
+            progress(self.ig.t);
+        }
+        Ok(())
+    }
+
+    /// Statistics of an accepted step from the diagnostics at the new state.
+    fn step_values(&self) -> StepValues {
+        let d = &self.diag;
+        let m = &self.model;
+        let w = cage_speed(m, &self.ig.y);
+        let w0 = m.epicyclic(d.inner_speed, d.outer_speed);
+        let max_fi = d.inner.force.iter().fold(0.0_f64, |a, &b| a.max(b));
+        let thresh = self.settings.slip_load_fraction * max_fi;
+        let mut v = StepValues {
+            cage_speed: w,
+            slip: if w0 != 0.0 { 1.0 - w / w0 } else { 0.0 },
+            max_fi,
+            max_fo: d.outer.force.iter().fold(0.0_f64, |a, &b| a.max(b)),
+            max_bar: d.bar.iter().fold(0.0_f64, |a, &b| a.max(b)),
+            land: d.land_force,
+            ..StepValues::default()
+        };
+        let mut power = d.land_power;
+        for j in 0..m.z {
+            power += d.inner.power[j] + d.outer.power[j] + d.bar_power[j];
+            if d.inner.force[j] > thresh && d.inner.force[j] > 0.0 {
+                let vs = d.inner.sliding[j];
+                let u = d.inner.rolling[j].max(1e-6);
+                v.max_vs = v.max_vs.max(vs);
+                let s = vs / u;
+                if s >= v.max_srr {
+                    v.max_srr = s;
+                    v.worst = d.inner.worst[j];
+                }
+            }
+        }
+        v.power = power;
+        v
+    }
+
+    fn after_step(&mut self, h: f64, sink: &mut dyn OutputSink) {
+        let v = self.step_values();
+        let lay = self.model.layout;
+        let ci = lay.cage();
+        let y = &self.ig.y;
+        // unwrap the cage-centre orbit angle
+        let raw = y[ci + 1].atan2(y[ci]);
+        let mut d = raw - self.tr.orbit_raw;
+        if d > std::f64::consts::PI {
+            d -= TAU;
+        } else if d < -std::f64::consts::PI {
+            d += TAU;
+        }
+        self.tr.orbit += d;
+        self.tr.orbit_raw = raw;
+        let phi = y[ci + 3];
+        self.tr.rev.add(h, &v);
+        self.tr.run.add(h, &v);
+        if (phi - self.tr.rev_angle0).abs() >= TAU {
+            self.finish_revolution(phi, sink);
+        }
+    }
+
+    fn scuffing_margin(&self, w: &Window) -> f64 {
+        if !self.settings.scuffing_check {
+            return f64::INFINITY;
+        }
+        let Some(state) = w.worst else {
+            return f64::INFINITY;
+        };
+        if state.rolling_speed_m_s.abs() <= 0.0 {
+            return f64::INFINITY;
+        }
+        match scuffing_check(&state, &self.model.traction.inner, &SlipSearch::default()) {
+            Ok(c) => c.margin.unwrap_or(f64::INFINITY),
+            Err(_) => f64::INFINITY,
+        }
+    }
+
+    fn finish_revolution(&mut self, phi: f64, sink: &mut dyn OutputSink) {
+        let t = self.ig.t;
+        self.tr.revolutions += 1;
+        let w = self.tr.rev;
+        let margin = self.scuffing_margin(&w);
+        let speed = w.mean_speed();
+        let steady = self.tr.prev_rev_speed.is_finite()
+            && ((speed - self.tr.prev_rev_speed) / speed).abs()
+                < self.settings.steady_state_tolerance;
+        if steady && !self.tr.steady_at.is_finite() {
+            self.tr.steady_at = t;
+        }
+        let summary = RevolutionSummary {
+            revolution: self.tr.revolutions,
+            start_s: w.t0,
+            end_s: t,
+            cage_speed_mean_rad_s: speed,
+            cage_slip_mean: w.mean_slip(),
+            max_inner_contact_force_n: w.max_fi,
+            max_outer_contact_force_n: w.max_fo,
+            max_roller_cage_force_n: w.max_bar,
+            max_cage_land_force_n: w.max_land,
+            max_inner_sliding_speed_m_s: w.max_vs,
+            max_relative_slip: w.max_srr,
+            scuffing_margin: margin,
+            whirl_ratio: w.whirl(phi, self.tr.orbit),
+            friction_power_mean_w: w.mean_power(),
+            steady,
+        };
+        self.tr.prev_rev_speed = speed;
+        if self.tr.run_started {
+            self.tr.run.min_margin = self.tr.run.min_margin.min(margin);
+        }
+        if !self.tr.run_started
+            && self.tr.revolutions >= u64::from(self.settings.discard_revolutions)
+        {
+            self.tr.run = Window::start(t, phi, self.tr.orbit);
+            self.tr.run_started = true;
+        }
+        self.tr.rev_angle0 = phi;
+        self.tr.rev = Window::start(t, phi, self.tr.orbit);
+        sink.revolution(&summary);
+    }
+
+    fn emit_samples(&mut self, t_end: f64, sink: &mut dyn OutputSink) {
+        let dt = self.settings.output_step_s;
+        if dt <= 0.0 {
+            return;
+        }
+        loop {
+            let ts = self.tr.next_sample as f64 * dt;
+            if ts > self.ig.t || ts > t_end || ts < self.ig.dense_start() - 1e-15 {
+                if ts < self.ig.dense_start() - 1e-15 {
+                    // sample time before the available dense output (cannot happen in a
+                    // continuous run); skip it
+                    self.tr.next_sample += 1;
+                    continue;
+                }
+                return;
+            }
+            if self.ig.dense_h > 0.0 {
+                self.ig.interpolate(ts, &mut self.scratch_y);
+            } else {
+                self.scratch_y.copy_from_slice(&self.ig.y);
+            }
+            rhs(
+                &self.model,
+                ts,
+                &self.scratch_y,
+                &mut self.scratch_dy,
+                &mut self.diag,
+            );
+            self.write_sample(ts, sink);
+            self.tr.next_sample += 1;
+        }
+    }
+
+    fn write_sample(&mut self, t: f64, sink: &mut dyn OutputSink) {
+        let m = &self.model;
+        let y = &self.scratch_y;
+        let lay = m.layout;
+        for j in 0..m.z {
+            let b = lay.roller(j);
+            let th = y[b];
+            let a = unit_or([y[b + 3], y[b + 4], y[b + 5]], [0.0, 0.0, 1.0]);
+            let (s, c) = th.sin_cos();
+            let ar = a[0] * c + a[1] * s;
+            let at = -a[0] * s + a[1] * c;
+            let l = [y[b + 9], y[b + 10], y[b + 11]];
+            let w = axisymmetric_omega(l, a, m.ia_r, m.it_r);
+            let sb = &mut self.snap;
+            sb.azimuth[j] = th;
+            sb.radius[j] = y[b + 1];
+            sb.axial[j] = y[b + 2];
+            sb.orbital[j] = y[b + 6];
+            sb.spin[j] = dot(w, a);
+            sb.yaw[j] = at.atan2(a[2]);
+            sb.pitch[j] = ar.atan2(a[2]);
+            let d = &self.diag;
+            sb.srr_inner[j] = d.inner.sliding[j] / d.inner.rolling[j].max(1e-9);
+            sb.srr_outer[j] = d.outer.sliding[j] / d.outer.rolling[j].max(1e-9);
+        }
+        let ci = lay.cage();
+        let ii = lay.inner();
+        let wc = cage_speed(m, y);
+        let d = &self.diag;
+        let w0 = m.epicyclic(d.inner_speed, d.outer_speed);
+        let sb = &self.snap;
+        let snapshot = Snapshot {
+            time_s: t,
+            inner_ring_speed_rad_s: d.inner_speed,
+            outer_ring_speed_rad_s: d.outer_speed,
+            inner_ring_center_m: [y[ii], y[ii + 1], y[ii + 2]],
+            cage_center_m: [y[ci], y[ci + 1], y[ci + 2]],
+            cage_angle_rad: y[ci + 3],
+            cage_speed_rad_s: wc,
+            epicyclic_cage_speed_rad_s: w0,
+            cage_slip: if w0 != 0.0 { 1.0 - wc / w0 } else { 0.0 },
+            cage_land_force_n: d.land_force,
+            cage_land_power_w: d.land_power,
+            rollers: RollerSnapshot {
+                azimuth_rad: &sb.azimuth,
+                radius_m: &sb.radius,
+                axial_m: &sb.axial,
+                orbital_speed_rad_s: &sb.orbital,
+                spin_speed_rad_s: &sb.spin,
+                yaw_rad: &sb.yaw,
+                pitch_rad: &sb.pitch,
+                inner: contact_snapshot(&d.inner, &sb.srr_inner),
+                outer: contact_snapshot(&d.outer, &sb.srr_outer),
+                cage_bar_force_n: &d.bar,
+                cage_bar_power_w: &d.bar_power,
+            },
+        };
+        sink.sample(t, &snapshot);
+    }
+
+    /// Evaluates the right-hand side `f(t, y)` at the current state into `dy` (benchmarks and
+    /// diagnostics; `dy.len()` must equal the state length).
+    pub fn evaluate_derivative(&mut self, dy: &mut [f64]) {
+        if dy.len() == self.ig.y.len() {
+            rhs(&self.model, self.ig.t, &self.ig.y, dy, &mut self.diag);
+        }
+    }
+
+    /// Sends a sample of the current state to `sink` (outside the fixed output grid).
+    pub fn sample_now(&mut self, sink: &mut dyn OutputSink) {
+        let t = self.ig.t;
+        self.scratch_y.copy_from_slice(&self.ig.y);
+        rhs(
+            &self.model,
+            t,
+            &self.scratch_y,
+            &mut self.scratch_dy,
+            &mut self.diag,
+        );
+        self.write_sample(t, sink);
+    }
+
+    /// The run summary so far (window after the discarded start revolutions, or the whole run
+    /// if fewer were completed).
+    pub fn summary(&self) -> RunSummary {
+        let w = &self.tr.run;
+        let ci = self.model.layout.cage();
+        let phi = self.ig.y[ci + 3];
+        let mut margin = w.min_margin;
+        if !margin.is_finite() && self.tr.revolutions == 0 {
+            margin = self.scuffing_margin(w);
+        }
+        let st = &self.ig.stats;
+        RunSummary {
+            cage_slip_mean: w.mean_slip(),
+            cage_speed_mean_rad_s: w.mean_speed(),
+            epicyclic_cage_speed_rad_s: self.epicyclic_cage_speed(),
+            max_inner_contact_force_n: w.max_fi,
+            max_outer_contact_force_n: w.max_fo,
+            max_roller_cage_force_n: w.max_bar,
+            max_cage_land_force_n: w.max_land,
+            max_inner_sliding_speed_m_s: w.max_vs,
+            max_relative_slip: w.max_srr,
+            min_scuffing_margin: margin,
+            whirl_ratio: w.whirl(phi, self.tr.orbit),
+            simulated_time_s: self.ig.t,
+            wall_time_s: self.tr.wall,
+            steps: st.accepted,
+            rejected_steps: st.rejected,
+            rhs_evaluations: st.rhs_evaluations,
+        }
+    }
+
+    /// Serialises the complete run state (state vector, integrator memory incl. the dense
+    /// output of the last step, statistics, summary accumulators, output position) to bytes.
+    pub fn checkpoint(&self) -> Vec<u8> {
+        let mut w = Writer::default();
+        w.buf.extend_from_slice(MAGIC);
+        w.u64(self.fingerprint);
+        let ig = &self.ig;
+        w.f64(ig.t);
+        w.f64(ig.h);
+        w.f64(ig.err_old);
+        w.u64(u64::from(ig.last_rejected));
+        w.u64(u64::from(ig.k1_valid));
+        w.slice(&ig.y);
+        w.slice(&ig.k[0]);
+        w.f64(ig.dense_t);
+        w.f64(ig.dense_h);
+        for d in ig.dense_parts() {
+            w.slice(d);
+        }
+        w.u64(ig.stats.accepted);
+        w.u64(ig.stats.rejected);
+        w.u64(ig.stats.rhs_evaluations);
+        w.u64(ig.stats.limiting.len() as u64);
+        for &c in &ig.stats.limiting {
+            w.u64(c);
+        }
+        let tr = &self.tr;
+        w.u64(tr.revolutions);
+        w.f64(tr.rev_angle0);
+        tr.rev.save(&mut w);
+        tr.run.save(&mut w);
+        w.u64(u64::from(tr.run_started));
+        w.f64(tr.orbit);
+        w.f64(tr.orbit_raw);
+        w.f64(tr.prev_rev_speed);
+        w.f64(tr.steady_at);
+        w.u64(tr.next_sample);
+        w.f64(tr.wall);
+        w.buf
+    }
+
+    /// Restores a checkpoint written by [`Simulation::checkpoint`] of a simulation built from
+    /// the same inputs; the run then continues bit-for-bit.
+    pub fn restore(&mut self, bytes: &[u8]) -> Result<(), DynError> {
+        let mut r = Reader::new(bytes);
+        r.magic()?;
+        if r.u64()? != self.fingerprint {
+            return Err(DynError::Checkpoint(
+                "the checkpoint belongs to a different bearing model or contact set-up".into(),
+            ));
+        }
+        let mut ig = self.ig.clone();
+        ig.t = r.f64()?;
+        ig.h = r.f64()?;
+        ig.err_old = r.f64()?;
+        ig.last_rejected = r.u64()? != 0;
+        ig.k1_valid = r.u64()? != 0;
+        r.slice_into(&mut ig.y)?;
+        r.slice_into(&mut ig.k[0])?;
+        ig.dense_t = r.f64()?;
+        ig.dense_h = r.f64()?;
+        for d in ig.dense_parts_mut().iter_mut() {
+            r.slice_into(d)?;
+        }
+        ig.stats.accepted = r.u64()?;
+        ig.stats.rejected = r.u64()?;
+        ig.stats.rhs_evaluations = r.u64()?;
+        let n = r.u64()? as usize;
+        if n != ig.stats.limiting.len() {
+            return Err(DynError::Checkpoint("state dimension differs".into()));
+        }
+        for c in ig.stats.limiting.iter_mut() {
+            *c = r.u64()?;
+        }
+        let mut tr = self.tr;
+        tr.revolutions = r.u64()?;
+        tr.rev_angle0 = r.f64()?;
+        tr.rev = Window::load(&mut r)?;
+        tr.run = Window::load(&mut r)?;
+        tr.run_started = r.u64()? != 0;
+        tr.orbit = r.f64()?;
+        tr.orbit_raw = r.f64()?;
+        tr.prev_rev_speed = r.f64()?;
+        tr.steady_at = r.f64()?;
+        tr.next_sample = r.u64()?;
+        tr.wall = r.f64()?;
+        if r.pos != bytes.len() {
+            return Err(DynError::Checkpoint("trailing data".into()));
+        }
+        self.ig = ig;
+        self.tr = tr;
+        Ok(())
+    }
+}
+
+fn contact_snapshot<'a>(t: &'a crate::rhs::ContactTable, srr: &'a [f64]) -> ContactSnapshot<'a> {
+    ContactSnapshot {
+        force_n: &t.force,
+        sliding_speed_m_s: &t.sliding,
+        rolling_speed_m_s: &t.rolling,
+        slide_to_roll: srr,
+        film_thickness_m: &t.film,
+        lambda: &t.lambda,
+        traction_coefficient: &t.mu,
+        friction_power_w: &t.power,
+    }
+}
+
+fn cage_speed(model: &Model, y: &[f64]) -> f64 {
+    let ci = model.layout.cage();
+    let a = unit_or([y[ci + 4], y[ci + 5], y[ci + 6]], [0.0, 0.0, 1.0]);
+    let l = [y[ci + 10], y[ci + 11], y[ci + 12]];
+    dot(axisymmetric_omega(l, a, model.ia_c, model.it_c), a)
+}
+
+fn static_solution(model: &Model) -> Result<StaticSolution, DynError> {
+    let c = &model.conditions;
+    let wc = model.epicyclic(c.inner_speed.speed(0.0), c.outer_speed.speed(0.0));
+    let az: Vec<f64> = (0..model.z)
+        .map(|j| TAU * j as f64 / model.z as f64)
+        .collect();
+    let f = c.inner_ring_force(0.0);
+    let g = c.gravity_m_s2;
+    let force = [f[0] + model.m_i * g[0], f[1] + model.m_i * g[1], 0.0];
+    static_equilibrium(model, &az, wc, force, c.support.radial_free)
+}
+
+fn default_initial_state(model: &Model) -> Result<InitialState, DynError> {
+    let c = &model.conditions;
+    let wo = c.outer_speed.speed(0.0);
+    let wc = model.epicyclic(c.inner_speed.speed(0.0), wo);
+    let st = static_solution(model)?;
+    let rollers = st
+        .rollers
+        .iter()
+        .map(|r| RollerStart {
+            azimuth_rad: r.azimuth_rad,
+            radius_m: r.radius_m,
+            axial_m: 0.0,
+            orbital_speed_rad_s: wc,
+            spin_speed_rad_s: pure_rolling_spin(wc, wo, r.radius_m, model.rw),
+            yaw_rad: 0.0,
+            pitch_rad: 0.0,
+        })
+        .collect();
+    let e = st.ring_displacement_m;
+    let cage_center = match model.land {
+        Some(l) if l.inner => e,
+        _ => [0.0; 3],
+    };
+    Ok(InitialState {
+        rollers,
+        cage_angle_rad: 0.0,
+        cage_speed_rad_s: wc,
+        cage_center_m: cage_center,
+        inner_ring_center_m: e,
+    })
+}
+
+fn pack_state(model: &Model, init: &InitialState) -> Result<Vec<f64>, DynError> {
+    let lay = model.layout;
+    let mut y = vec![0.0; lay.len()];
+    for (j, r) in init.rollers.iter().enumerate() {
+        let vals = [
+            r.azimuth_rad,
+            r.radius_m,
+            r.axial_m,
+            r.orbital_speed_rad_s,
+            r.spin_speed_rad_s,
+            r.yaw_rad,
+            r.pitch_rad,
+        ];
+        if !vals.iter().all(|v| v.is_finite()) || r.radius_m <= 0.0 {
+            return Err(DynError::InvalidInput(format!(
+                "initial state of roller {j} is not finite or has a non-positive radius"
+            )));
+        }
+        let b = lay.roller(j);
+        let (s, c) = r.azimuth_rad.sin_cos();
+        let er = [c, s, 0.0];
+        let et = [-s, c, 0.0];
+        let a = unit_or(
+            [
+                r.pitch_rad.tan() * er[0] + r.yaw_rad.tan() * et[0],
+                r.pitch_rad.tan() * er[1] + r.yaw_rad.tan() * et[1],
+                1.0,
+            ],
+            [0.0, 0.0, 1.0],
+        );
+        y[b] = r.azimuth_rad;
+        y[b + 1] = r.radius_m;
+        y[b + 2] = r.axial_m;
+        y[b + 3..b + 6].copy_from_slice(&a);
+        y[b + 6] = r.orbital_speed_rad_s;
+        // angular velocity: spin about the axis (transverse part zero)
+        let l: V3 = [
+            model.ia_r * r.spin_speed_rad_s * a[0],
+            model.ia_r * r.spin_speed_rad_s * a[1],
+            model.ia_r * r.spin_speed_rad_s * a[2],
+        ];
+        y[b + 9..b + 12].copy_from_slice(&l);
+    }
+    let ci = lay.cage();
+    y[ci..ci + 3].copy_from_slice(&init.cage_center_m);
+    y[ci + 3] = init.cage_angle_rad;
+    y[ci + 6] = 1.0;
+    y[ci + 12] = model.ia_c * init.cage_speed_rad_s;
+    let ii = lay.inner();
+    y[ii..ii + 3].copy_from_slice(&init.inner_ring_center_m);
+    if !y.iter().all(|v| v.is_finite()) {
+        return Err(DynError::InvalidInput("initial state is not finite".into()));
+    }
+    Ok(y)
+}
+
+/// Characteristic scales of the state components (crate docs, "Error control").
+fn error_scales(model: &Model) -> (Vec<f64>, Vec<f64>) {
+    let lay = model.layout;
+    let c = &model.conditions;
+    let v_ref = (c.inner_speed.speed(0.0).abs() * model.ri)
+        .max(c.outer_speed.speed(0.0).abs() * model.ro)
+        .max(1.0);
+    let len = 1e-3;
+    let half_l = model
+        .slice_x
+        .iter()
+        .fold(0.0_f64, |a, &x| a.max(x.abs()))
+        .max(1e-3);
+    let mut s = vec![0.0; lay.len()];
+    let mut rel = vec![0.0; lay.len()];
+    for j in 0..model.z {
+        let b = lay.roller(j);
+        let vals = [
+            (len / model.rm, 0.0),
+            (len, 0.0),
+            (len, 0.0),
+            (len / half_l, 0.0),
+            (len / half_l, 0.0),
+            (len / half_l, 0.0),
+            (v_ref / model.rm, 1.0),
+            (v_ref, 1.0),
+            (v_ref, 1.0),
+            (model.ia_r * v_ref / model.rw, 1.0),
+            (model.ia_r * v_ref / model.rw, 1.0),
+            (model.ia_r * v_ref / model.rw, 1.0),
+        ];
+        for (k, (sc, r)) in vals.iter().enumerate() {
+            s[b + k] = *sc;
+            rel[b + k] = *r;
+        }
+    }
+    let ci = lay.cage();
+    let cw = model
+        .land
+        .map(|l| l.width)
+        .unwrap_or(2.0 * half_l)
+        .max(1e-3);
+    let lc = model.ia_c * v_ref / model.rm;
+    let vals = [
+        (len, 0.0),
+        (len, 0.0),
+        (len, 0.0),
+        (len / model.rm, 0.0),
+        (len / cw, 0.0),
+        (len / cw, 0.0),
+        (len / cw, 0.0),
+        (v_ref, 1.0),
+        (v_ref, 1.0),
+        (v_ref, 1.0),
+        (lc, 1.0),
+        (lc, 1.0),
+        (lc, 1.0),
+    ];
+    for (k, (sc, r)) in vals.iter().enumerate() {
+        s[ci + k] = *sc;
+        rel[ci + k] = *r;
+    }
+    let ii = lay.inner();
+    for k in 0..3 {
+        s[ii + k] = len;
+        s[ii + 3 + k] = v_ref;
+        rel[ii + 3 + k] = 1.0;
+    }
+    (s, rel)
+}
+
+fn fingerprint(model: &Model) -> u64 {
+    // FNV-1a over the numbers that define the dynamics
+    let mut h: u64 = 0xcbf29ce484222325;
+    let mut eat = |x: f64| {
+        for b in x.to_bits().to_le_bytes() {
+            h ^= u64::from(b);
+            h = h.wrapping_mul(0x100000001b3);
+        }
+    };
+    eat(model.z as f64);
+    eat(model.m_r);
+    eat(model.ia_r);
+    eat(model.m_c);
+    eat(model.rw);
+    eat(model.ri);
+    eat(model.ro);
+    eat(model.r_bar);
+    eat(model.half_pocket);
+    for &k in model.inner.k.iter().chain(&model.outer.k) {
+        eat(k);
+    }
+    for &x in &model.slice_drop {
+        eat(x);
+    }
+    eat(model.conditions.inner_speed.speed(0.0));
+    eat(model.conditions.cage_drag_n_m_s);
+    eat(model.conditions.misalignment_rad);
+    h
+}
+
+/// Total mechanical energy (see [`Simulation::mechanical_energy`]).
+fn energy(model: &Model, t: f64, y: &[f64]) -> f64 {
+    use crate::vec3::{axpy, norm, perp, sub};
+    let lay = model.layout;
+    let cond = &model.conditions;
+    let g = cond.gravity_m_s2;
+    let mut e = 0.0;
+    let ii = lay.inner();
+    let oi = [y[ii], y[ii + 1], y[ii + 2]];
+    let vi = [y[ii + 3], y[ii + 4], y[ii + 5]];
+    e += 0.5 * model.m_i * dot(vi, vi) - model.m_i * dot(g, oi);
+    // fixed loads only (rotating loads are not conservative)
+    for l in &cond.loads {
+        if let crate::conditions::InnerRingLoad::Fixed { force_n } = l {
+            e -= dot(*force_n, oi);
+        }
+    }
+    let _ = t;
+    let ci = lay.cage();
+    let cc = [y[ci], y[ci + 1], y[ci + 2]];
+    let ac = unit_or([y[ci + 4], y[ci + 5], y[ci + 6]], [0.0, 0.0, 1.0]);
+    let vc = [y[ci + 7], y[ci + 8], y[ci + 9]];
+    let lc = [y[ci + 10], y[ci + 11], y[ci + 12]];
+    let wc = axisymmetric_omega(lc, ac, model.ia_c, model.it_c);
+    e += 0.5 * model.m_c * dot(vc, vc) + 0.5 * dot(wc, lc) - model.m_c * dot(g, cc);
+    let bar = &model.params.roller_cage;
+    let pitch = TAU / model.z as f64;
+    for j in 0..model.z {
+        let b = lay.roller(j);
+        let (th, r, z) = (y[b], y[b + 1], y[b + 2]);
+        let a = unit_or([y[b + 3], y[b + 4], y[b + 5]], [0.0, 0.0, 1.0]);
+        let (thd, rd, zd) = (y[b + 6], y[b + 7], y[b + 8]);
+        let l = [y[b + 9], y[b + 10], y[b + 11]];
+        let w = axisymmetric_omega(l, a, model.ia_r, model.it_r);
+        let (s, c) = th.sin_cos();
+        let centre = [r * c, r * s, z];
+        let v2 = rd * rd + r * r * thd * thd + zd * zd;
+        e += 0.5 * model.m_r * v2 + 0.5 * dot(w, l) - model.m_r * dot(g, centre);
+        for sl in 0..model.slice_x.len() {
+            let p = axpy(centre, model.slice_x[sl], a);
+            let d = sub(p, oi);
+            let dp = perp(d, model.axis_i);
+            let di = model.ri + model.rw - norm(dp) - model.slice_drop[sl];
+            if di > 0.0 {
+                e += model.inner.k[sl] * di.powf(model.inner.n + 1.0) / (model.inner.n + 1.0);
+            }
+            let dout =
+                (p[0] * p[0] + p[1] * p[1]).sqrt() + model.rw - model.ro - model.slice_drop[sl];
+            if dout > 0.0 {
+                e += model.outer.k[sl] * dout.powf(model.outer.n + 1.0) / (model.outer.n + 1.0);
+            }
+        }
+        let php = y[ci + 3] + pitch * j as f64;
+        let (sp, cp) = php.sin_cos();
+        let ep = unit_or(perp([cp, sp, 0.0], ac), [cp, sp, 0.0]);
+        let tp = crate::vec3::cross(ac, ep);
+        for side in [-1.0, 1.0] {
+            let edge = axpy(axpy(cc, model.r_bar, ep), side * model.half_pocket, tp);
+            for &x in &model.bar_x {
+                let q = axpy(centre, x, a);
+                let delta = model.rw - norm(perp(sub(q, edge), ac));
+                if delta > 0.0 {
+                    e += 0.5 * bar.k_p * delta.powf(bar.exponent + 1.0) / (bar.exponent + 1.0);
+                }
+            }
+        }
+    }
+    if let Some(land) = model.land {
+        let p = &model.params.cage_land;
+        let (o, axis) = if land.inner {
+            (oi, model.axis_i)
+        } else {
+            ([0.0; 3], [0.0, 0.0, 1.0])
+        };
+        for zeta in [-0.25 * land.width, 0.25 * land.width] {
+            let ecc = norm(perp(sub(axpy(cc, zeta, ac), axpy(o, zeta, axis)), axis));
+            let delta = ecc - land.gap;
+            if delta > 0.0 {
+                e += 0.5 * p.k_p * delta.powf(p.exponent + 1.0) / (p.exponent + 1.0);
+            }
+        }
+    }
+    e
+}

@@ -1,0 +1,215 @@
+//! Accumulators of the per-revolution and run summaries (time-weighted means and maxima over
+//! accepted steps, so that short impacts between output samples are not missed).
+
+use crate::checkpoint::{Reader, Writer};
+use crate::error::DynError;
+use rolldyn_lubrication::{ContactGeometry, ContactState};
+
+/// Values of one accepted step.
+#[derive(Debug, Clone, Copy, Default)]
+pub(crate) struct StepValues {
+    pub cage_speed: f64,
+    pub slip: f64,
+    pub power: f64,
+    pub max_fi: f64,
+    pub max_fo: f64,
+    pub max_bar: f64,
+    pub land: f64,
+    pub max_vs: f64,
+    pub max_srr: f64,
+    /// inner contact state with the largest slip among loaded rollers
+    pub worst: Option<ContactState>,
+}
+
+/// Packs a line-contact state into 9 numbers (checkpoints).
+pub(crate) fn pack(s: &Option<ContactState>) -> [f64; 10] {
+    match s {
+        None => [0.0; 10],
+        Some(s) => {
+            let l = match s.geometry {
+                ContactGeometry::Line { length_m } => length_m,
+                _ => 0.0,
+            };
+            [
+                1.0,
+                s.normal_force_n,
+                l,
+                s.reduced_radius_m,
+                s.reduced_modulus_pa,
+                s.rolling_speed_m_s,
+                s.sliding_speed_m_s,
+                s.temperature_k,
+                s.roughness_ra_m[0],
+                s.roughness_ra_m[1],
+            ]
+        }
+    }
+}
+
+pub(crate) fn unpack(p: &[f64; 10]) -> Option<ContactState> {
+    if p[0] == 0.0 {
+        return None;
+    }
+    Some(ContactState {
+        normal_force_n: p[1],
+        geometry: ContactGeometry::Line { length_m: p[2] },
+        reduced_radius_m: p[3],
+        reduced_modulus_pa: p[4],
+        rolling_speed_m_s: p[5],
+        sliding_speed_m_s: p[6],
+        temperature_k: p[7],
+        roughness_ra_m: [p[8], p[9]],
+        film_thickness_m: None,
+    })
+}
+
+/// Statistics over a time window.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Window {
+    pub t0: f64,
+    pub dur: f64,
+    pub speed_int: f64,
+    pub slip_int: f64,
+    pub power_int: f64,
+    pub max_fi: f64,
+    pub max_fo: f64,
+    pub max_bar: f64,
+    pub max_land: f64,
+    pub max_vs: f64,
+    pub max_srr: f64,
+    pub cage_angle0: f64,
+    pub orbit0: f64,
+    pub worst: Option<ContactState>,
+    pub worst_srr: f64,
+    pub min_margin: f64,
+}
+
+impl Window {
+    pub fn start(t: f64, cage_angle: f64, orbit: f64) -> Self {
+        Self {
+            t0: t,
+            dur: 0.0,
+            speed_int: 0.0,
+            slip_int: 0.0,
+            power_int: 0.0,
+            max_fi: 0.0,
+            max_fo: 0.0,
+            max_bar: 0.0,
+            max_land: 0.0,
+            max_vs: 0.0,
+            max_srr: 0.0,
+            cage_angle0: cage_angle,
+            orbit0: orbit,
+            worst: None,
+            worst_srr: 0.0,
+            min_margin: f64::INFINITY,
+        }
+    }
+
+    pub fn add(&mut self, h: f64, v: &StepValues) {
+        self.dur += h;
+        self.speed_int += h * v.cage_speed;
+        self.slip_int += h * v.slip;
+        self.power_int += h * v.power;
+        self.max_fi = self.max_fi.max(v.max_fi);
+        self.max_fo = self.max_fo.max(v.max_fo);
+        self.max_bar = self.max_bar.max(v.max_bar);
+        self.max_land = self.max_land.max(v.land);
+        self.max_vs = self.max_vs.max(v.max_vs);
+        if v.max_srr > self.max_srr {
+            self.max_srr = v.max_srr;
+        }
+        if v.worst.is_some() && v.max_srr >= self.worst_srr {
+            self.worst_srr = v.max_srr;
+            self.worst = v.worst;
+        }
+    }
+
+    pub fn mean_speed(&self) -> f64 {
+        if self.dur > 0.0 {
+            self.speed_int / self.dur
+        } else {
+            f64::NAN
+        }
+    }
+
+    pub fn mean_slip(&self) -> f64 {
+        if self.dur > 0.0 {
+            self.slip_int / self.dur
+        } else {
+            f64::NAN
+        }
+    }
+
+    pub fn mean_power(&self) -> f64 {
+        if self.dur > 0.0 {
+            self.power_int / self.dur
+        } else {
+            f64::NAN
+        }
+    }
+
+    /// Whirl ratio = cage rotation / cage-centre orbit over the window.
+    pub fn whirl(&self, cage_angle: f64, orbit: f64) -> f64 {
+        let d_orbit = orbit - self.orbit0;
+        if d_orbit.abs() > 1e-9 {
+            (cage_angle - self.cage_angle0) / d_orbit
+        } else {
+            f64::INFINITY
+        }
+    }
+
+    pub fn save(&self, w: &mut Writer) {
+        for x in [
+            self.t0,
+            self.dur,
+            self.speed_int,
+            self.slip_int,
+            self.power_int,
+            self.max_fi,
+            self.max_fo,
+            self.max_bar,
+            self.max_land,
+            self.max_vs,
+            self.max_srr,
+            self.cage_angle0,
+            self.orbit0,
+            self.worst_srr,
+            self.min_margin,
+        ] {
+            w.f64(x);
+        }
+        for x in pack(&self.worst) {
+            w.f64(x);
+        }
+    }
+
+    pub fn load(r: &mut Reader) -> Result<Self, DynError> {
+        let mut v = [0.0; 15];
+        for x in v.iter_mut() {
+            *x = r.f64()?;
+        }
+        let mut p = [0.0; 10];
+        for x in p.iter_mut() {
+            *x = r.f64()?;
+        }
+        Ok(Self {
+            t0: v[0],
+            dur: v[1],
+            speed_int: v[2],
+            slip_int: v[3],
+            power_int: v[4],
+            max_fi: v[5],
+            max_fo: v[6],
+            max_bar: v[7],
+            max_land: v[8],
+            max_vs: v[9],
+            max_srr: v[10],
+            cage_angle0: v[11],
+            orbit0: v[12],
+            worst_srr: v[13],
+            min_margin: v[14],
+            worst: unpack(&p),
+        })
+    }
+}

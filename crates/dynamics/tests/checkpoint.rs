@@ -1,0 +1,90 @@
+#![allow(clippy::field_reassign_with_default, clippy::needless_range_loop)]
+//! Checkpoint / resume: a run interrupted at t₁, serialised, restored into a freshly built
+//! simulation and continued to t₂ is bit-for-bit equal to an uninterrupted run (state vector,
+//! statistics, summary, samples).
+
+mod common;
+use common::*;
+use rolldyn_dynamics::*;
+
+struct Hash(u64, usize);
+impl OutputSink for Hash {
+    fn sample(&mut self, t: f64, s: &Snapshot) {
+        for x in [t, s.cage_speed_rad_s]
+            .iter()
+            .chain(s.rollers.inner.force_n)
+            .chain(s.rollers.cage_bar_force_n)
+        {
+            self.0 = (self.0 ^ x.to_bits()).wrapping_mul(0x100000001b3);
+        }
+        self.1 += 1;
+    }
+}
+
+fn build() -> Simulation {
+    let mut b = bearing("obrien-taylor");
+    b.roller.slice_count = 4;
+    let cond = OperatingConditions::new(rpm(4000.0), 300.0);
+    let params = ContactParameters::for_bearing(&b);
+    let mut set = DynamicsSettings::default();
+    set.output_step_s = 1e-4;
+    Simulation::new(
+        &b,
+        cond,
+        params,
+        set,
+        RacewayTraction::same(rolldyn_dynamics::study::nvi65_traction().unwrap()),
+    )
+    .unwrap()
+}
+
+#[test]
+fn resume_from_checkpoint_is_bit_for_bit() {
+    let (t1, t2) = (2.05e-3, 4e-3);
+    let mut a = build();
+    let mut ha = Hash(0, 0);
+    a.run_until(t1, &mut ha, &mut |_| {}).unwrap();
+    let sa = a.run_until(t2, &mut ha, &mut |_| {}).unwrap();
+
+    let mut b1 = build();
+    let mut hb = Hash(0, 0);
+    b1.run_until(t1, &mut hb, &mut |_| {}).unwrap();
+    let bytes = b1.checkpoint();
+    drop(b1);
+    let mut b2 = build();
+    b2.restore(&bytes).unwrap();
+    let sb = b2.run_until(t2, &mut hb, &mut |_| {}).unwrap();
+
+    assert_eq!(a.time().to_bits(), b2.time().to_bits());
+    assert!(
+        a.state()
+            .iter()
+            .zip(b2.state())
+            .all(|(x, y)| x.to_bits() == y.to_bits()),
+        "state differs"
+    );
+    assert_eq!((ha.0, ha.1), (hb.0, hb.1), "samples differ");
+    assert_eq!(sa.steps, sb.steps);
+    assert_eq!(sa.rhs_evaluations, sb.rhs_evaluations);
+    assert_eq!(
+        sa.max_roller_cage_force_n.to_bits(),
+        sb.max_roller_cage_force_n.to_bits()
+    );
+    assert_eq!(sa.cage_slip_mean.to_bits(), sb.cage_slip_mean.to_bits());
+    // a checkpoint of another bearing is refused
+    let mut other = bearing("2002834");
+    other.roller.slice_count = 3;
+    let mut o = Simulation::new(
+        &other,
+        OperatingConditions::new(100.0, 100.0),
+        ContactParameters::for_bearing(&other),
+        DynamicsSettings::default(),
+        RacewayTraction::same(pao()),
+    )
+    .unwrap();
+    assert!(matches!(o.restore(&bytes), Err(DynError::Checkpoint(_))));
+    assert!(matches!(
+        o.restore(&bytes[..20]),
+        Err(DynError::Checkpoint(_))
+    ));
+}
