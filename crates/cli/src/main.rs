@@ -30,6 +30,10 @@ enum Command {
     Traction(commands::traction::Args),
     /// Film thickness, film parameter Λ and lubrication regime of a contact.
     Film(commands::film::Args),
+    /// Quasi-static roller and cage skidding; sweeps over speed or load.
+    Skid(commands::skid::Args),
+    /// Time-domain 6-DOF dynamics of a cylindrical roller bearing.
+    Simulate(commands::simulate::Args),
     /// Re-run a seed's validation study and write its tables and plots.
     Study(commands::study::Args),
 }
@@ -41,6 +45,8 @@ fn main() -> ExitCode {
         Command::Check(args) => commands::check::run(args),
         Command::Contact(args) => commands::contact::run(args),
         Command::Study(args) => commands::study::run(args),
+        Command::Simulate(args) => commands::simulate::run(args),
+        Command::Skid(args) => commands::skid::run(args),
         Command::Oils(args) => commands::oils::run(args),
         Command::Traction(args) => commands::traction::run(args),
         Command::Film(args) => commands::film::run(args),

@@ -294,3 +294,89 @@ fn user_oil_file_is_listed_and_usable() {
     assert!(String::from_utf8_lossy(&out.stderr).contains("colour"));
     std::fs::remove_file(bad).ok();
 }
+
+#[test]
+fn skid_point_and_sweep() {
+    let v = json(&rolldyn(&[
+        "skid",
+        &example("obrien-taylor.toml"),
+        "--json",
+    ]));
+    for key in [
+        "cage_slip",
+        "cage_speed_rad_s",
+        "epicyclic_cage_speed_rad_s",
+        "max_roller_load_n",
+        "operating_clearance_m",
+        "power_loss_w",
+        "solve_time_s",
+    ] {
+        assert!(v[key].is_number(), "{key} in skid JSON");
+    }
+    assert!(v["rollers"].as_array().unwrap().len() == 13);
+    let dir = std::env::temp_dir().join(format!("rolldyn-skid-{}", std::process::id()));
+    let sweep = json(&rolldyn(&[
+        "skid",
+        &example("obrien-taylor.toml"),
+        "--radial-load",
+        "100N..700N:200N",
+        "--out",
+        dir.to_str().unwrap(),
+        "--json",
+    ]));
+    assert_eq!(sweep["points"].as_array().unwrap().len(), 4);
+    assert!(dir.join("skid_sweep.csv").is_file() && dir.join("cage_slip.svg").is_file());
+    std::fs::remove_dir_all(dir).ok();
+    let out = rolldyn(&["skid", &example("contact/32206-straight.toml")]);
+    assert_eq!(out.status.code(), Some(2));
+}
+
+#[test]
+fn simulate_short_run_writes_series_and_json() {
+    let dir = std::env::temp_dir().join(format!("rolldyn-sim-{}", std::process::id()));
+    let out = rolldyn(&[
+        "simulate",
+        &example("obrien-taylor.toml"),
+        "--duration",
+        "1ms",
+        "--output-step",
+        "0.1ms",
+        "--out",
+        dir.to_str().unwrap(),
+        "--json",
+        "--quiet",
+    ]);
+    let v = json(&out);
+    for key in [
+        "cage_slip_mean",
+        "cage_speed_mean_rad_s",
+        "epicyclic_cage_speed_rad_s",
+        "max_inner_contact_force_n",
+        "simulated_time_s",
+        "wall_time_s",
+        "steps",
+        "rejected_steps",
+        "rhs_evaluations",
+    ] {
+        assert!(v[key].is_number(), "{key} in simulate JSON");
+    }
+    // The integrator may finish its last step up to one step (a few µs) past the end time.
+    assert!((v["simulated_time_s"].as_f64().unwrap() - 1e-3).abs() < 1e-5);
+    for file in [
+        "bearing.csv",
+        "bearing.parquet",
+        "rollers.parquet",
+        "cage_speed.svg",
+        "cage_orbit.svg",
+    ] {
+        assert!(dir.join(file).is_file(), "{file}");
+    }
+    let rows = std::fs::read_to_string(dir.join("bearing.csv"))
+        .unwrap()
+        .lines()
+        .count();
+    assert!((10..=12).contains(&rows), "{rows} lines for 1 ms at 0.1 ms");
+    std::fs::remove_dir_all(dir).ok();
+    let out = rolldyn(&["simulate", &example("contact/32206-straight.toml")]);
+    assert_eq!(out.status.code(), Some(2));
+}

@@ -78,9 +78,14 @@ pub struct DynamicsSettings {
     /// divergence, m (default 0.1 mm — a hundred times a working approach).
     pub divergence_penetration_m: f64,
     /// A roller axis tilted (yaw and pitch combined) by more than this from the bearing axis is
-    /// reported as a divergence, rad (default 0.02 rad ≈ 69′). Without the roller-end ↔ rib and
-    /// pocket-face contacts (next issue) nothing bounds roller skew but the cage bars, which the
-    /// 2002834 pocket geometry reaches only at ≈ 0.3 rad.
+    /// reported as a divergence, rad (default 0.1 rad ≈ 5.7°). Without the roller-end ↔ rib and
+    /// pocket-face contacts (next issue) only the cage bars bound roller skew: a roller whose
+    /// bar-contact points sit at `±h` along its axis in a pocket with play `p` per side can skew
+    /// by at most `ψ = p/h` before both ends touch opposite bars — 2002834 with the Ø190.2 mm
+    /// bar contact: `p = (11.25 − 11.00)/2 = 0.125 mm`, `h = 2.5 mm` → 0.05 rad (0.08/0.11/0.16
+    /// rad for the wider Table 3.1 windows). Pitch is held by the raceways to ≈ `G_r/L`. The
+    /// default is twice the 2002834 bar bound: a tilt beyond it means a roller passed through a
+    /// bar, i.e. a real divergence, not rattling inside the pocket.
     pub divergence_tilt_rad: f64,
 }
 
@@ -94,7 +99,7 @@ impl Default for DynamicsSettings {
             scuffing_check: true,
             slip_load_fraction: 0.05,
             divergence_penetration_m: 1e-4,
-            divergence_tilt_rad: 0.02,
+            divergence_tilt_rad: 0.1,
         }
     }
 }

@@ -71,8 +71,17 @@ pub struct StudySettings {
     pub misalignment_load_n: f64,
     /// speed of the misalignment series, rpm
     pub misalignment_speed_rpm: f64,
-    /// simulated time per point in cage revolutions (the last half is summarised)
+    /// Most cage revolutions simulated per point (transient + averaging window). The run stops
+    /// earlier once steady state is detected and `average_revolutions` whole revolutions after
+    /// it are complete.
     pub cage_revolutions: f64,
+    /// Whole cage revolutions averaged after steady state (or, if steady state is not detected
+    /// within `cage_revolutions`, the last ones run; [`StudyPoint::steady`] is then false).
+    pub average_revolutions: u32,
+    /// Steady state: the mean cage speed of two consecutive cage revolutions differs by less
+    /// than this fraction of the epicyclic speed (default 2e-4 — below the slip being measured;
+    /// the run default 1e-3 of [`DynamicsSettings`] is too coarse for slips ~1e-3).
+    pub steady_tolerance: f64,
     /// slices per roller (overrides the model)
     pub slices: Option<usize>,
     /// cage viscous drag coefficient, N·m·s/rad. The seed gives none for this bearing; the
@@ -99,7 +108,9 @@ impl Default for StudySettings {
                 .collect(),
             misalignment_load_n: 201.0,
             misalignment_speed_rpm: 4000.0,
-            cage_revolutions: 6.0,
+            cage_revolutions: 16.0,
+            average_revolutions: 4,
+            steady_tolerance: 2e-4,
             slices: None,
             cage_drag_n_m_s: 5.5e-4,
             dynamics: DynamicsSettings::default(),
@@ -118,7 +129,18 @@ pub struct StudyPoint {
     pub misalignment_rad: f64,
     /// oil temperature, K
     pub temperature_k: f64,
-    /// run summary (cage slip, speeds, forces …)
+    /// Cage slip `1 − ω̄_c/ω_epi` with `ω̄_c = Δφ/Δt` over the `K` cage-revolution periods
+    /// averaged (seed 000 (2.19) with the cage speed measured by its rotation angle φ, so the
+    /// cage's excursions inside the pocket and land clearances cancel except for the change of
+    /// position between the window ends, ≤ clearance/(R·2πK))
+    pub cage_slip: f64,
+    /// whole cage revolutions in the averaging window
+    pub revolutions_averaged: u32,
+    /// steady state was detected before the averaging window
+    pub steady: bool,
+    /// start of the averaging window, s
+    pub window_start_s: f64,
+    /// run summary of the whole run after the first revolution (forces, sliding …)
     pub summary: RunSummary,
 }
 
@@ -146,8 +168,12 @@ pub fn obrien_taylor_point(
     let params = ContactParameters::for_bearing(&b);
     let mut dynamics = settings.dynamics;
     let wc = b.epicyclic_cage_speed(w, 0.0).abs().max(1e-9);
-    let t_end = settings.cage_revolutions * std::f64::consts::TAU / wc;
-    dynamics.discard_revolutions = (0.5 * settings.cage_revolutions).floor() as u32;
+    let rev_s = std::f64::consts::TAU / wc;
+    let t_max = settings.cage_revolutions * rev_s;
+    let k = settings.average_revolutions.max(1) as usize;
+    dynamics.discard_revolutions = 1;
+    // the start is pure rolling at the epicyclic cage speed with the cage centred on its land
+    // (or the ring) and the rollers at their static radii (`Simulation::default_initial_state`)
     let mut sim = Simulation::new(
         &b,
         cond,
@@ -155,13 +181,47 @@ pub fn obrien_taylor_point(
         dynamics,
         RacewayTraction::same(nvi65_traction()?),
     )?;
-    let summary = sim.run_until(t_end, &mut NullSink, &mut |_| {})?;
+    // run one epicyclic cage-revolution period at a time and record the cage angle φ at the
+    // ends; period means are Δφ/Δt (exact, no quadrature); steady once two consecutive period
+    // means differ by less than `steady_tolerance` of the epicyclic speed
+    let phi_index = sim.layout().cage() + 3;
+    let mut marks = vec![(sim.time(), sim.state()[phi_index])];
+    let speed = |a: (f64, f64), b: (f64, f64)| (b.1 - a.1) / (b.0 - a.0);
+    let mut steady_after: Option<usize> = None;
+    loop {
+        let t_next = sim.time() + rev_s;
+        sim.run_until(t_next, &mut NullSink, &mut |_| {})?;
+        marks.push((sim.time(), sim.state()[phi_index]));
+        let n = marks.len();
+        if steady_after.is_none() && n >= 4 {
+            let d = speed(marks[n - 2], marks[n - 1]) - speed(marks[n - 3], marks[n - 2]);
+            if d.abs() < settings.steady_tolerance * wc {
+                steady_after = Some(n - 1);
+            }
+        }
+        if steady_after.is_some_and(|m| n > m + k) || sim.time() >= t_max {
+            break;
+        }
+    }
+    let n = marks.len();
+    let (first, steady) = match steady_after {
+        Some(m) if n > m + k => (m, true),
+        _ => (n.saturating_sub(k + 1).max(1).min(n - 2), false),
+    };
+    let (a, b) = (marks[first], marks[n - 1]);
+    let mean_speed = speed(a, b).abs();
+    let t0 = a.0;
+    let window_len = n - 1 - first;
     Ok(StudyPoint {
         speed_rpm,
         radial_load_n,
         misalignment_rad,
         temperature_k: t_k,
-        summary,
+        cage_slip: 1.0 - mean_speed / wc,
+        revolutions_averaged: window_len as u32,
+        steady,
+        window_start_s: t0,
+        summary: sim.summary(),
     })
 }
 

@@ -7,5 +7,7 @@ pub mod film;
 mod oil_args;
 pub mod oils;
 mod rig_args;
+pub mod simulate;
+pub mod skid;
 pub mod study;
 pub mod traction;

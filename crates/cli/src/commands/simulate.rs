@@ -1,0 +1,711 @@
+//! `rolldyn simulate MODEL.toml`: time-domain 6-DOF dynamics of a cylindrical roller bearing
+//! (SPEC §3), streaming its time series to CSV/Parquet and plotting the main histories.
+
+use crate::failure::Failure;
+use crate::output::{load_model, out_dir, print_json};
+use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use rolldyn_dynamics::conditions::{ContactTemperatures, InnerRingLoad, OperatingConditions};
+use rolldyn_dynamics::output::{OutputSink, RevolutionSummary, RunSummary, Snapshot};
+use rolldyn_dynamics::parameters::ContactParameters;
+use rolldyn_dynamics::settings::DynamicsSettings;
+use rolldyn_dynamics::{RacewayTraction, Simulation};
+use rolldyn_geometry::BearingModel;
+use rolldyn_output::{Formats, OutputError, TableWriter};
+use rolldyn_plot::{Labels, Series, line_plot};
+use rolldyn_units::{AngularSpeed, Force, Quantity, Temperature, Time};
+use serde::Serialize;
+use std::path::{Path, PathBuf};
+use std::str::FromStr;
+
+/// How long to simulate: cage revolutions (`20rev`) or a time (`0.2s`, `50ms`).
+#[derive(Clone, Copy, Debug)]
+pub enum Duration {
+    CageRevolutions(f64),
+    Time(f64),
+}
+
+impl FromStr for Duration {
+    type Err = String;
+    fn from_str(text: &str) -> Result<Self, Self::Err> {
+        let text = text.trim();
+        let duration = match text.strip_suffix("rev") {
+            Some(n) => Duration::CageRevolutions(
+                n.trim()
+                    .parse()
+                    .map_err(|_| format!("'{text}': expected e.g. 20rev or 0.2s"))?,
+            ),
+            None => Duration::Time(
+                Quantity::<Time>::parse(text)
+                    .map_err(|e| e.to_string())?
+                    .si(),
+            ),
+        };
+        match duration {
+            Duration::CageRevolutions(v) | Duration::Time(v) if v > 0.0 && v.is_finite() => {
+                Ok(duration)
+            }
+            _ => Err(format!("'{text}': the duration must be positive")),
+        }
+    }
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum LoadDirectionArg {
+    Fixed,
+    Rotating,
+}
+
+#[derive(clap::Args)]
+pub struct Args {
+    /// Model file (TOML) with [lubricant] and [operating]; the embedded 2002834 model when omitted.
+    pub model: Option<PathBuf>,
+    /// Inner-ring speed (overrides operating.inner_speed).
+    #[arg(long)]
+    pub speed: Option<Quantity<AngularSpeed>>,
+    /// Outer-ring speed (intershaft bearings).
+    #[arg(long)]
+    pub outer_speed: Option<Quantity<AngularSpeed>>,
+    /// Radial load on the inner ring (overrides operating.radial_load).
+    #[arg(long)]
+    pub radial_load: Option<Quantity<Force>>,
+    /// Radial load fixed in space or rotating with the inner ring.
+    #[arg(long, value_enum)]
+    pub load_direction: Option<LoadDirectionArg>,
+    /// Oil temperature of all contacts (overrides operating.temperatures.oil).
+    #[arg(long)]
+    pub oil_temperature: Option<Quantity<Temperature>>,
+    /// Simulated duration: cage revolutions (`20rev`) or time (`0.2s`).
+    #[arg(long, default_value = "5rev")]
+    pub duration: Duration,
+    /// Interval of the time-series samples.
+    #[arg(long, default_value = "0.05ms")]
+    pub output_step: Quantity<Time>,
+    /// Relative tolerance of the integrator.
+    #[arg(long)]
+    pub tolerance: Option<f64>,
+    /// Write the state to this file after every cage revolution (and at the end).
+    #[arg(long)]
+    pub checkpoint: Option<PathBuf>,
+    /// Continue a run from a checkpoint file (bit-for-bit) up to the new duration.
+    #[arg(long)]
+    pub resume: Option<PathBuf>,
+    /// Print the summary as JSON.
+    #[arg(long)]
+    pub json: bool,
+    /// Folder for time series (CSV + Parquet) and plots (SVG).
+    #[arg(long)]
+    pub out: Option<PathBuf>,
+    /// No progress bar.
+    #[arg(long)]
+    pub quiet: bool,
+}
+
+/// Keeps at most `capacity` points of a history for plotting (halving the density when full),
+/// so that memory stays bounded however long the run.
+struct Decimated {
+    points: Vec<(f64, f64)>,
+    stride: usize,
+    seen: usize,
+    capacity: usize,
+}
+
+impl Decimated {
+    fn new(capacity: usize) -> Self {
+        Self {
+            points: Vec::new(),
+            stride: 1,
+            seen: 0,
+            capacity,
+        }
+    }
+
+    fn push(&mut self, x: f64, y: f64) {
+        if self.seen % self.stride == 0 {
+            if self.points.len() == self.capacity {
+                self.points = self.points.iter().step_by(2).copied().collect();
+                self.stride *= 2;
+            }
+            if self.seen % self.stride == 0 {
+                self.points.push((x, y));
+            }
+        }
+        self.seen += 1;
+    }
+}
+
+const BEARING_COLUMNS: [&str; 12] = [
+    "time_s",
+    "inner_ring_speed_rad_s",
+    "inner_ring_x_m",
+    "inner_ring_y_m",
+    "cage_x_m",
+    "cage_y_m",
+    "cage_angle_rad",
+    "cage_speed_rad_s",
+    "epicyclic_cage_speed_rad_s",
+    "cage_slip",
+    "cage_land_force_n",
+    "cage_land_power_w",
+];
+
+const ROLLER_COLUMNS: [&str; 25] = [
+    "time_s",
+    "roller",
+    "azimuth_rad",
+    "radius_m",
+    "orbital_speed_rad_s",
+    "spin_speed_rad_s",
+    "yaw_rad",
+    "pitch_rad",
+    "inner_force_n",
+    "inner_sliding_speed_m_s",
+    "inner_rolling_speed_m_s",
+    "inner_slide_to_roll",
+    "inner_film_m",
+    "inner_lambda",
+    "inner_traction",
+    "inner_friction_power_w",
+    "outer_force_n",
+    "outer_sliding_speed_m_s",
+    "outer_rolling_speed_m_s",
+    "outer_slide_to_roll",
+    "outer_film_m",
+    "outer_lambda",
+    "outer_traction",
+    "outer_friction_power_w",
+    "cage_bar_force_n",
+];
+
+const REVOLUTION_COLUMNS: [&str; 15] = [
+    "revolution",
+    "start_s",
+    "end_s",
+    "cage_speed_mean_rad_s",
+    "cage_slip_mean",
+    "max_inner_contact_force_n",
+    "max_outer_contact_force_n",
+    "max_roller_cage_force_n",
+    "max_cage_land_force_n",
+    "max_inner_sliding_speed_m_s",
+    "max_relative_slip",
+    "scuffing_margin",
+    "whirl_ratio",
+    "friction_power_mean_w",
+    "steady",
+];
+
+/// Streams samples to tables and keeps decimated histories for the plots.
+struct FileSink {
+    bearing: TableWriter,
+    rollers: TableWriter,
+    revolutions: TableWriter,
+    row: Vec<f64>,
+    error: Option<OutputError>,
+    cage_speed: Decimated,
+    epicyclic: Decimated,
+    cage_slip: Decimated,
+    cage_orbit: Decimated,
+    inner_orbit: Decimated,
+    roller_inner: Decimated,
+    roller_outer: Decimated,
+    roller_bar: Decimated,
+}
+
+fn names(columns: &[&str]) -> Vec<String> {
+    columns.iter().map(|c| c.to_string()).collect()
+}
+
+impl FileSink {
+    fn create(dir: &Path) -> Result<Self, OutputError> {
+        let formats = Formats::default();
+        let plot = || Decimated::new(4000);
+        Ok(Self {
+            bearing: TableWriter::create(dir, "bearing", &names(&BEARING_COLUMNS), formats)?,
+            rollers: TableWriter::create(dir, "rollers", &names(&ROLLER_COLUMNS), formats)?,
+            revolutions: TableWriter::create(
+                dir,
+                "revolutions",
+                &names(&REVOLUTION_COLUMNS),
+                formats,
+            )?,
+            row: Vec::with_capacity(ROLLER_COLUMNS.len()),
+            error: None,
+            cage_speed: plot(),
+            epicyclic: plot(),
+            cage_slip: plot(),
+            cage_orbit: plot(),
+            inner_orbit: plot(),
+            roller_inner: plot(),
+            roller_outer: plot(),
+            roller_bar: plot(),
+        })
+    }
+
+    fn keep(&mut self, result: Result<(), OutputError>) {
+        if let (Err(e), None) = (result, &self.error) {
+            self.error = Some(e);
+        }
+    }
+
+    fn finish(self, dir: &Path) -> Result<(), Failure> {
+        if let Some(e) = self.error {
+            return Err(Failure::Run(e.to_string()));
+        }
+        for table in [self.bearing, self.rollers, self.revolutions] {
+            table.finish().map_err(|e| Failure::Run(e.to_string()))?;
+        }
+        let plot = |file: &str, title: &str, x: &str, y: &str, series: &[Series]| {
+            line_plot(&dir.join(file), &Labels { title, x, y }, series)
+        };
+        plot(
+            "cage_speed.svg",
+            "Cage speed",
+            "time, s",
+            "rad/s",
+            &[
+                Series {
+                    label: "cage",
+                    points: &self.cage_speed.points,
+                },
+                Series {
+                    label: "epicyclic",
+                    points: &self.epicyclic.points,
+                },
+            ],
+        )?;
+        plot(
+            "cage_slip.svg",
+            "Cage slip (1 − ω_c/ω_epicyclic)",
+            "time, s",
+            "slip",
+            &[Series {
+                label: "",
+                points: &self.cage_slip.points,
+            }],
+        )?;
+        plot(
+            "cage_orbit.svg",
+            "Cage centre orbit",
+            "x, µm",
+            "y, µm",
+            &[Series {
+                label: "",
+                points: &self.cage_orbit.points,
+            }],
+        )?;
+        plot(
+            "inner_ring_orbit.svg",
+            "Inner-ring centre orbit",
+            "x, µm",
+            "y, µm",
+            &[Series {
+                label: "",
+                points: &self.inner_orbit.points,
+            }],
+        )?;
+        plot(
+            "roller_1_forces.svg",
+            "Contact forces of roller 1",
+            "time, s",
+            "force, N",
+            &[
+                Series {
+                    label: "inner raceway",
+                    points: &self.roller_inner.points,
+                },
+                Series {
+                    label: "outer raceway",
+                    points: &self.roller_outer.points,
+                },
+                Series {
+                    label: "cage bars",
+                    points: &self.roller_bar.points,
+                },
+            ],
+        )?;
+        Ok(())
+    }
+}
+
+impl OutputSink for FileSink {
+    fn sample(&mut self, t: f64, s: &Snapshot) {
+        let bearing_row = [
+            t,
+            s.inner_ring_speed_rad_s,
+            s.inner_ring_center_m[0],
+            s.inner_ring_center_m[1],
+            s.cage_center_m[0],
+            s.cage_center_m[1],
+            s.cage_angle_rad,
+            s.cage_speed_rad_s,
+            s.epicyclic_cage_speed_rad_s,
+            s.cage_slip,
+            s.cage_land_force_n,
+            s.cage_land_power_w,
+        ];
+        let result = self.bearing.write_row(&bearing_row);
+        self.keep(result);
+        let r = &s.rollers;
+        for j in 0..r.azimuth_rad.len() {
+            self.row.clear();
+            self.row.extend_from_slice(&[
+                t,
+                (j + 1) as f64,
+                r.azimuth_rad[j],
+                r.radius_m[j],
+                r.orbital_speed_rad_s[j],
+                r.spin_speed_rad_s[j],
+                r.yaw_rad[j],
+                r.pitch_rad[j],
+            ]);
+            for c in [&r.inner, &r.outer] {
+                self.row.extend_from_slice(&[
+                    c.force_n[j],
+                    c.sliding_speed_m_s[j],
+                    c.rolling_speed_m_s[j],
+                    c.slide_to_roll[j],
+                    c.film_thickness_m[j],
+                    c.lambda[j],
+                    c.traction_coefficient[j],
+                    c.friction_power_w[j],
+                ]);
+            }
+            self.row.push(r.cage_bar_force_n[j]);
+            let result = self.rollers.write_row(&self.row);
+            self.keep(result);
+        }
+        self.cage_speed.push(t, s.cage_speed_rad_s);
+        self.epicyclic.push(t, s.epicyclic_cage_speed_rad_s);
+        self.cage_slip.push(t, s.cage_slip);
+        self.cage_orbit
+            .push(s.cage_center_m[0] * 1e6, s.cage_center_m[1] * 1e6);
+        self.inner_orbit.push(
+            s.inner_ring_center_m[0] * 1e6,
+            s.inner_ring_center_m[1] * 1e6,
+        );
+        if !r.azimuth_rad.is_empty() {
+            self.roller_inner.push(t, r.inner.force_n[0]);
+            self.roller_outer.push(t, r.outer.force_n[0]);
+            self.roller_bar.push(t, r.cage_bar_force_n[0]);
+        }
+    }
+
+    fn revolution(&mut self, v: &RevolutionSummary) {
+        let row = [
+            v.revolution as f64,
+            v.start_s,
+            v.end_s,
+            v.cage_speed_mean_rad_s,
+            v.cage_slip_mean,
+            v.max_inner_contact_force_n,
+            v.max_outer_contact_force_n,
+            v.max_roller_cage_force_n,
+            v.max_cage_land_force_n,
+            v.max_inner_sliding_speed_m_s,
+            v.max_relative_slip,
+            v.scuffing_margin,
+            v.whirl_ratio,
+            v.friction_power_mean_w,
+            f64::from(u8::from(v.steady)),
+        ];
+        let result = self.revolutions.write_row(&row);
+        self.keep(result);
+    }
+}
+
+/// Forwards to an optional file sink (so the run is the same with or without `--out`).
+struct Sinks(Option<FileSink>);
+
+impl OutputSink for Sinks {
+    fn sample(&mut self, t: f64, s: &Snapshot) {
+        if let Some(f) = &mut self.0 {
+            f.sample(t, s);
+        }
+    }
+    fn revolution(&mut self, v: &RevolutionSummary) {
+        if let Some(f) = &mut self.0 {
+            f.revolution(v);
+        }
+    }
+}
+
+/// The JSON answer of `rolldyn simulate --json` (fields of the issue, SI units).
+#[derive(Serialize)]
+struct Answer<'a> {
+    model: &'a str,
+    cage_slip_mean: f64,
+    cage_speed_mean_rad_s: f64,
+    epicyclic_cage_speed_rad_s: f64,
+    max_inner_contact_force_n: f64,
+    max_outer_contact_force_n: f64,
+    max_roller_cage_force_n: f64,
+    max_cage_land_force_n: f64,
+    max_inner_sliding_speed_m_s: f64,
+    max_relative_slip: f64,
+    min_scuffing_margin: f64,
+    whirl_ratio: f64,
+    simulated_time_s: f64,
+    wall_time_s: f64,
+    steps: u64,
+    rejected_steps: u64,
+    rhs_evaluations: u64,
+    output_folder: Option<String>,
+}
+
+impl<'a> Answer<'a> {
+    fn new(model: &'a str, s: &RunSummary, output_folder: Option<String>) -> Self {
+        Self {
+            model,
+            cage_slip_mean: s.cage_slip_mean,
+            cage_speed_mean_rad_s: s.cage_speed_mean_rad_s,
+            epicyclic_cage_speed_rad_s: s.epicyclic_cage_speed_rad_s,
+            max_inner_contact_force_n: s.max_inner_contact_force_n,
+            max_outer_contact_force_n: s.max_outer_contact_force_n,
+            max_roller_cage_force_n: s.max_roller_cage_force_n,
+            max_cage_land_force_n: s.max_cage_land_force_n,
+            max_inner_sliding_speed_m_s: s.max_inner_sliding_speed_m_s,
+            max_relative_slip: s.max_relative_slip,
+            min_scuffing_margin: s.min_scuffing_margin,
+            whirl_ratio: s.whirl_ratio,
+            simulated_time_s: s.simulated_time_s,
+            wall_time_s: s.wall_time_s,
+            steps: s.steps,
+            rejected_steps: s.rejected_steps,
+            rhs_evaluations: s.rhs_evaluations,
+            output_folder,
+        }
+    }
+}
+
+/// Operating conditions from the model's `[operating]` section and the flags.
+fn conditions(args: &Args, model: &rolldyn_model::Model) -> Result<OperatingConditions, Failure> {
+    let op = &model.operating;
+    let speed = args
+        .speed
+        .map(|q| q.si())
+        .or(op.inner_speed)
+        .ok_or_else(|| {
+            Failure::Input("no inner-ring speed: give --speed or operating.inner_speed".into())
+        })?;
+    let load = args
+        .radial_load
+        .map(|q| q.si())
+        .or(op.radial_load)
+        .ok_or_else(|| {
+            Failure::Input("no radial load: give --radial-load or operating.radial_load".into())
+        })?;
+    let oil_t = args
+        .oil_temperature
+        .map(|q| q.si())
+        .or(op.temperatures.oil)
+        .ok_or_else(|| {
+            Failure::Input(
+                "no oil temperature: give --oil-temperature or operating.temperatures.oil".into(),
+            )
+        })?;
+    if !(load >= 0.0) || !(oil_t > 0.0) {
+        return Err(Failure::Input(
+            "--radial-load must be ≥ 0 and the temperature above 0 K".into(),
+        ));
+    }
+    let mut c = OperatingConditions::new(speed, load);
+    let rotating = match args.load_direction {
+        Some(d) => d == LoadDirectionArg::Rotating,
+        None => op.load_rotates,
+    };
+    if rotating {
+        c.loads = vec![InnerRingLoad::Rotating {
+            magnitude_n: load,
+            phase_rad: 0.0,
+        }];
+    }
+    if let Some(outer) = args.outer_speed.map(|q| q.si()).or(op.outer_speed) {
+        c.outer_speed = rolldyn_dynamics::conditions::SpeedLaw::Constant(outer);
+    }
+    let t = |part: Option<f64>| part.unwrap_or(oil_t);
+    c.temperatures = ContactTemperatures {
+        inner_raceway_k: t(op
+            .temperatures
+            .inner_ring
+            .filter(|_| args.oil_temperature.is_none())),
+        outer_raceway_k: t(op
+            .temperatures
+            .outer_ring
+            .filter(|_| args.oil_temperature.is_none())),
+        cage_k: t(op
+            .temperatures
+            .cage
+            .filter(|_| args.oil_temperature.is_none())),
+    };
+    c.misalignment_rad = model.bearing.misalignment().inner_ring_tilt;
+    Ok(c)
+}
+
+pub fn run(args: Args) -> Result<(), Failure> {
+    let model = load_model(args.model.as_deref())?;
+    let BearingModel::Cylindrical(bearing) = &model.bearing else {
+        return Err(Failure::Input(format!(
+            "{}: simulate needs a complete bearing (bearing.kind = \"cylindrical\")",
+            model.bearing.name()
+        )));
+    };
+    let lubrication = model.lubrication.as_ref().ok_or_else(|| {
+        Failure::Input(format!(
+            "{}: simulate needs a [lubricant] section",
+            model.bearing.name()
+        ))
+    })?;
+    let traction = lubrication
+        .traction_model()
+        .map_err(|e| Failure::Input(format!("[lubricant]: {e}")))?;
+    let conditions = conditions(&args, &model)?;
+    let epicyclic = bearing.epicyclic_cage_speed(
+        conditions.inner_speed.speed(0.0),
+        conditions.outer_speed.speed(0.0),
+    );
+    let mut settings = DynamicsSettings {
+        output_step_s: if args.out.is_some() {
+            args.output_step.si()
+        } else {
+            0.0
+        },
+        ..DynamicsSettings::default()
+    };
+    if let Some(tol) = args.tolerance {
+        if !(tol > 0.0 && tol < 1.0) {
+            return Err(Failure::Input("--tolerance must lie in (0, 1)".into()));
+        }
+        settings.integrator.tolerance = tol;
+    }
+    let mut sim = Simulation::new(
+        bearing,
+        conditions,
+        ContactParameters::for_bearing(bearing),
+        settings,
+        RacewayTraction::same(traction),
+    )
+    .map_err(|e| Failure::Input(e.to_string()))?;
+    if let Some(path) = &args.resume {
+        let bytes =
+            std::fs::read(path).map_err(|e| Failure::Input(format!("{}: {e}", path.display())))?;
+        sim.restore(&bytes)
+            .map_err(|e| Failure::Input(format!("{}: {e}", path.display())))?;
+    }
+    let revolution = std::f64::consts::TAU / epicyclic.abs().max(1e-9);
+    let t_end = match args.duration {
+        Duration::CageRevolutions(n) => n * revolution,
+        Duration::Time(t) => t,
+    };
+    let dir = args.out.as_deref().map(out_dir).transpose()?;
+    let mut sinks = Sinks(
+        dir.as_deref()
+            .map(FileSink::create)
+            .transpose()
+            .map_err(|e| Failure::Run(e.to_string()))?,
+    );
+    let bar = progress_bar(args.quiet, t_end);
+    let mut report = |t: f64| bar.set_position((1000.0 * t / t_end).min(1000.0) as u64);
+    let chunk = if args.checkpoint.is_some() {
+        revolution
+    } else {
+        t_end
+    };
+    let mut result = Ok(sim.summary());
+    while sim.time() < t_end && result.is_ok() {
+        let target = (sim.time() + chunk).min(t_end);
+        result = sim.run_until(target, &mut sinks, &mut report);
+        if let (Some(path), Ok(_)) = (&args.checkpoint, &result) {
+            std::fs::write(path, sim.checkpoint())
+                .map_err(|e| Failure::Run(format!("{}: {e}", path.display())))?;
+        }
+    }
+    bar.finish_and_clear();
+    let written = match (sinks.0, &dir) {
+        (Some(files), Some(dir)) => files.finish(dir),
+        _ => Ok(()),
+    };
+    let summary = result.map_err(|e| {
+        Failure::Run(format!(
+            "the simulation stopped: {e}{}",
+            dir.as_ref().map_or(String::new(), |d| format!(
+                "; outputs up to that time are in {}",
+                d.display()
+            ))
+        ))
+    })?;
+    written?;
+    if args.json {
+        return print_json(&Answer::new(
+            model.bearing.name(),
+            &summary,
+            dir.map(|d| d.display().to_string()),
+        ));
+    }
+    print_summary(model.bearing.name(), &summary);
+    Ok(())
+}
+
+fn progress_bar(quiet: bool, t_end: f64) -> ProgressBar {
+    let bar = ProgressBar::with_draw_target(Some(1000), ProgressDrawTarget::stderr());
+    if quiet {
+        bar.set_draw_target(ProgressDrawTarget::hidden());
+    }
+    bar.set_style(
+        ProgressStyle::with_template(
+            "{spinner} simulating {msg} [{bar:40}] {percent}% ({elapsed}, eta {eta})",
+        )
+        .expect("valid template")
+        .progress_chars("=> "),
+    );
+    bar.set_message(format!("{:.4} s", t_end));
+    bar
+}
+
+pub fn print_summary(model: &str, s: &RunSummary) {
+    println!(
+        "{model}: dynamics, {:.4} s simulated in {:.2} s",
+        s.simulated_time_s, s.wall_time_s
+    );
+    let line = |label: &str, value: String| println!("  {label:<34} {value}");
+    line(
+        "cage speed (mean)",
+        format!("{:.2} rad/s", s.cage_speed_mean_rad_s),
+    );
+    line(
+        "epicyclic cage speed",
+        format!("{:.2} rad/s", s.epicyclic_cage_speed_rad_s),
+    );
+    line(
+        "cage slip (mean)",
+        format!("{:.4} %", s.cage_slip_mean * 100.0),
+    );
+    line(
+        "max inner / outer contact force",
+        format!(
+            "{:.1} / {:.1} N",
+            s.max_inner_contact_force_n, s.max_outer_contact_force_n
+        ),
+    );
+    line(
+        "max roller–cage force",
+        format!("{:.2} N", s.max_roller_cage_force_n),
+    );
+    line(
+        "max cage–land force",
+        format!("{:.2} N", s.max_cage_land_force_n),
+    );
+    line(
+        "max inner sliding speed",
+        format!("{:.3} m/s", s.max_inner_sliding_speed_m_s),
+    );
+    line("max relative slip", format!("{:.4}", s.max_relative_slip));
+    line(
+        "min scuffing margin s_cr/s",
+        format!("{:.2}", s.min_scuffing_margin),
+    );
+    line("whirl ratio", format!("{:.3}", s.whirl_ratio));
+    line(
+        "steps (rejected) / RHS evaluations",
+        format!("{} ({}) / {}", s.steps, s.rejected_steps, s.rhs_evaluations),
+    );
+}

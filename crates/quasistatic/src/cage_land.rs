@@ -1,0 +1,227 @@
+//! Cage ↔ guiding-land contact as a narrow journal bearing (SPEC §5.5; seed 001 cites
+//! Zhilnikov & Samsonov without formulas, ⚠ F-43).
+//!
+//! The model sits behind the small trait [`CageLandModel`] so that a finite journal-bearing
+//! solver (the Reynolds crate, SPEC §8.6) can replace the default [`ShortBearing`] later.
+
+use std::f64::consts::PI;
+
+/// Inputs of a cage–land evaluation (SI).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CageLandInput {
+    /// Radius of the land film (centring surface), m.
+    pub land_radius_m: f64,
+    /// Axial width of one rail, m.
+    pub rail_width_m: f64,
+    /// Number of rails (independent short bearings side by side).
+    pub rails: u32,
+    /// Radial clearance c = g_пп/2 of the concentric cage, m.
+    pub radial_clearance_m: f64,
+    /// Oil viscosity in the film, Pa·s.
+    pub viscosity_pa_s: f64,
+    /// Cage angular speed ω₀, rad/s.
+    pub cage_speed_rad_s: f64,
+    /// Angular speed of the ring carrying the land, rad/s.
+    pub land_speed_rad_s: f64,
+    /// Angular speed of the load direction, rad/s (0: the resultant of the roller forces is
+    /// fixed in space, as with a stationary radial load).
+    pub load_speed_rad_s: f64,
+    /// Magnitude of the resultant of the roller–bar forces √(F_SB² + F_SГ²), N.
+    pub roller_force_n: f64,
+    /// Cage mass, kg (centrifugal force of the displaced cage F_cs = m e ω₀²).
+    pub cage_mass_kg: f64,
+}
+
+/// Outputs of a cage–land evaluation.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct CageLandOutput {
+    /// Friction moment on the cage about the bearing axis (signed, along +e_z), N·m.
+    pub torque_on_cage_n_m: f64,
+    /// Pressing force F_RS = F_cs + √(F_SB² + F_SГ²) (SPEC §5.5), N.
+    pub pressing_force_n: f64,
+    /// Eccentricity ratio ε = e/c of the cage.
+    pub eccentricity_ratio: f64,
+    /// Minimum film thickness c(1 − ε), m.
+    pub min_film_m: f64,
+    /// Friction coefficient f = |T|/(R F_RS) (0 without load).
+    pub friction_coefficient: f64,
+    /// Dissipated power |T (ω₀ − ω_land)|, W.
+    pub power_w: f64,
+    /// The hydrodynamic capacity was exceeded: ε clamped at the model's maximum.
+    pub saturated: bool,
+}
+
+/// A cage–land friction model.
+pub trait CageLandModel: Send + Sync {
+    /// Evaluates the land contact.
+    fn evaluate(&self, input: &CageLandInput) -> CageLandOutput;
+    /// Short description for reports.
+    fn name(&self) -> &'static str;
+}
+
+/// Short (Ocvirk) journal bearing, π-film, standard form (not in the seeds; Hamrock,
+/// *Fundamentals of Fluid Film Lubrication*, short-bearing theory):
+///
+/// * load capacity per rail W = η U L³/(4c²) · ε √(π²(1 − ε²) + 16ε²)/(1 − ε²)², with the
+///   surface speed U = R |ω₀ + ω_land − 2ω_load| (both members rotating under a load of speed
+///   ω_load);
+/// * the eccentricity follows from W(ε)·rails = F_ext + m_c ε c ω₀² (the centrifugal force of
+///   the displaced cage, SPEC §5.5 proposal F_cs = m_c e ω₀²);
+/// * friction moment on the cage: the Couette shear of the full film,
+///   T = −rails · 2π η R³ L (ω₀ − ω_land)/(c √(1 − ε²)) (Petroff with the eccentricity factor;
+///   the pressure-induced moment e W sin φ/2 ≤ c W/2 is neglected: c W/2 is below 1 % of the
+///   shear moment for cage loads);
+/// * narrow cage rails carry little hydrodynamic load (∝ L³/c²): beyond the capacity at
+///   `max_eccentricity_ratio` the excess pressing force is carried by asperity contact with the
+///   friction coefficient `boundary_friction` (mixed lubrication of the land; proposal, not in
+///   the seeds), adding −sgn(ω₀ − ω_land) f_b (F_RS − W_max) R to the moment.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ShortBearing {
+    /// Largest eccentricity ratio (film collapse beyond). Default 0.98.
+    pub max_eccentricity_ratio: f64,
+    /// Friction coefficient of the load in excess of the hydrodynamic capacity. Default 0.1
+    /// (the large-slip limit of Kragelsky's boundary friction (2.10), SPEC §4.4).
+    pub boundary_friction: f64,
+}
+
+impl Default for ShortBearing {
+    fn default() -> Self {
+        Self {
+            max_eccentricity_ratio: 0.98,
+            boundary_friction: 0.1,
+        }
+    }
+}
+
+impl ShortBearing {
+    /// Dimensionless Ocvirk load function ε √(π²(1 − ε²) + 16ε²)/(1 − ε²)².
+    pub fn load_function(eps: f64) -> f64 {
+        let q = 1.0 - eps * eps;
+        eps * (PI * PI * q + 16.0 * eps * eps).sqrt() / (q * q)
+    }
+}
+
+impl CageLandModel for ShortBearing {
+    fn name(&self) -> &'static str {
+        "short (Ocvirk) journal bearing"
+    }
+
+    fn evaluate(&self, inp: &CageLandInput) -> CageLandOutput {
+        let c = inp.radial_clearance_m;
+        let r = inp.land_radius_m;
+        let l = inp.rail_width_m;
+        let eta = inp.viscosity_pa_s;
+        let rails = inp.rails.max(1) as f64;
+        if !(c > 0.0 && r > 0.0 && l > 0.0 && eta > 0.0) {
+            return CageLandOutput::default();
+        }
+        let u =
+            r * (inp.cage_speed_rad_s + inp.land_speed_rad_s - 2.0 * inp.load_speed_rad_s).abs();
+        let k = rails * eta * u * l * l * l / (4.0 * c * c);
+        let kc = inp.cage_mass_kg * c * inp.cage_speed_rad_s * inp.cage_speed_rad_s;
+        let f_ext = inp.roller_force_n.max(0.0);
+        let g = |e: f64| k * Self::load_function(e) - kc * e - f_ext;
+        let e_max = self.max_eccentricity_ratio.clamp(0.0, 0.999);
+        let (eps, saturated) = if f_ext == 0.0 && k * PI >= kc {
+            (0.0, false)
+        } else if g(e_max) <= 0.0 {
+            (e_max, true)
+        } else {
+            // g(0) = −F_ext ≤ 0 < g(e_max): bisection (g is continuous; 60 halvings → 1e-18)
+            let (mut a, mut b) = (0.0, e_max);
+            for _ in 0..60 {
+                let m = 0.5 * (a + b);
+                if g(m) > 0.0 {
+                    b = m;
+                } else {
+                    a = m;
+                }
+            }
+            (0.5 * (a + b), false)
+        };
+        let dw = inp.cage_speed_rad_s - inp.land_speed_rad_s;
+        let pressing = f_ext + kc * eps;
+        // asperity contact carries what the film cannot (sign smoothed over ±1 mm/s sliding)
+        let excess = if saturated {
+            (pressing - k * Self::load_function(eps)).max(0.0)
+        } else {
+            0.0
+        };
+        let sign = rolldyn_lubrication::traction::regularisation(dw * r, 1e-3);
+        let torque = -rails * 2.0 * PI * eta * r * r * r * l * dw / (c * (1.0 - eps * eps).sqrt())
+            - sign * self.boundary_friction * excess * r;
+        CageLandOutput {
+            torque_on_cage_n_m: torque,
+            pressing_force_n: pressing,
+            eccentricity_ratio: eps,
+            min_film_m: c * (1.0 - eps),
+            friction_coefficient: if pressing > 0.0 {
+                torque.abs() / (r * pressing)
+            } else {
+                0.0
+            },
+            power_w: (torque * dw).abs(),
+            saturated,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn input(load: f64) -> CageLandInput {
+        CageLandInput {
+            land_radius_m: 0.046,
+            rail_width_m: 2e-3,
+            rails: 2,
+            radial_clearance_m: 0.2e-3,
+            viscosity_pa_s: 0.02,
+            cage_speed_rad_s: 200.0,
+            land_speed_rad_s: 0.0,
+            load_speed_rad_s: 0.0,
+            roller_force_n: load,
+            cage_mass_kg: 0.05,
+        }
+    }
+
+    #[test]
+    fn concentric_cage_gives_petroff() {
+        let m = ShortBearing::default();
+        let mut inp = input(0.0);
+        inp.cage_mass_kg = 0.0;
+        let out = m.evaluate(&inp);
+        assert_eq!(out.eccentricity_ratio, 0.0);
+        let petroff = 2.0 * 2.0 * PI * 0.02 * 0.046f64.powi(3) * 2e-3 * 200.0 / 0.2e-3;
+        assert!((out.torque_on_cage_n_m + petroff).abs() < 1e-12 * petroff);
+    }
+
+    #[test]
+    fn load_balance_and_monotone_eccentricity() {
+        let m = ShortBearing::default();
+        let mut last = 0.0;
+        let mut last_torque = 0.0;
+        for load in [0.001, 0.01, 1.0, 10.0, 50.0, 200.0] {
+            // without the cage's own centrifugal force (which alone saturates this light film)
+            let inp = CageLandInput {
+                cage_mass_kg: 0.0,
+                ..input(load)
+            };
+            let out = m.evaluate(&inp);
+            assert!(out.eccentricity_ratio >= last);
+            assert!(
+                out.torque_on_cage_n_m.abs() > last_torque,
+                "{load}: {out:?} {last_torque}"
+            );
+            last = out.eccentricity_ratio;
+            last_torque = out.torque_on_cage_n_m.abs();
+            if !out.saturated {
+                let u = inp.land_radius_m * inp.cage_speed_rad_s;
+                let w = 2.0 * inp.viscosity_pa_s * u * inp.rail_width_m.powi(3)
+                    / (4.0 * inp.radial_clearance_m.powi(2))
+                    * ShortBearing::load_function(out.eccentricity_ratio);
+                assert!((w - out.pressing_force_n).abs() < 1e-9 * load);
+            }
+        }
+    }
+}

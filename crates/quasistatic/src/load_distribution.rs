@@ -1,0 +1,696 @@
+//! Frictionless load distribution among the rollers (SPEC §5.4 "F_в(i), F_н(i) from the
+//! standard static load distribution", ⚠ F-43 proposal) with the slice model of
+//! `rolldyn_contact::slices` (SPEC §2.1).
+//!
+//! Unknowns: the radial displacement (δx, δy) of the inner ring relative to the outer ring
+//! (the ring tilt θ is imposed: misalignment) and, per roller j at angle ψ_j from the load,
+//! its radial position u_j and tilt β_j between the raceways. With the diametral operating
+//! clearance G and e_j = δy cos ψ_j + δx sin ψ_j − G/2, the slice approaches are
+//!
+//! * outer raceway: δ_s = u_j + x_s tan β_j − z_s;
+//! * inner raceway: δ_s = (e_j − u_j) + x_s tan(θ_j − β_j) − z_s, θ_j = θ cos(ψ_j − ψ_θ).
+//!
+//! Roller equilibrium (seed 001: F_н = F_в + F_c, friction neglected):
+//! `Q_o − Q_i − F_c = 0` and `M_o − M_i = 0` (moments of the slice forces about the roller
+//! centre); ring equilibrium: `Σ Q_i,j (sin ψ_j, cos ψ_j) = (0, F_r)`. Both levels are solved
+//! by Newton's method with the analytic slice Jacobians (bracketed bisection / backtracking
+//! safeguards), to the tolerance [`crate::QuasiStaticOptions::load_tolerance`].
+//!
+//! Rollers whose inner raceway does not touch carry only the centrifugal force on the outer
+//! ring (the unloaded zone, SPEC §5.4).
+
+use crate::error::QsError;
+use crate::options::QuasiStaticOptions;
+use rolldyn_contact::roller_raceway::{RollerRacewayContact, SliceLawChoice};
+use rolldyn_contact::slices::{SliceLoad, SlicedRoller, SolveOptions};
+use rolldyn_geometry::{BearingModel, CylindricalRollerBearing};
+use serde::Serialize;
+
+/// Slice models of the two raceway contacts of one roller (all rollers are identical).
+#[derive(Debug, Clone)]
+pub struct LoadModel {
+    inner: SlicedRoller,
+    outer: SlicedRoller,
+    /// Contact data (R', E') of the inner raceway contact.
+    pub inner_contact: RollerRacewayContact,
+    /// Contact data (R', E') of the outer raceway contact.
+    pub outer_contact: RollerRacewayContact,
+    symmetric: bool,
+    roller_count: usize,
+    half_span: f64,
+}
+
+/// The load case of one distribution.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LoadCase {
+    /// Radial load on the inner ring F_r, N (along +y).
+    pub radial_load_n: f64,
+    /// Diametral operating clearance G, m (negative = preload).
+    pub diametral_clearance_m: f64,
+    /// Tilt of the inner ring relative to the outer ring θ, rad.
+    pub misalignment_rad: f64,
+    /// Azimuth ψ_θ of the tilt plane from the load direction, rad.
+    pub misalignment_azimuth_rad: f64,
+    /// Centrifugal force of each roller F_c, N (pressing it on the outer raceway).
+    pub centrifugal_force_n: f64,
+    /// Angle of roller 0 from the load direction, rad.
+    pub roller_phase_rad: f64,
+}
+
+/// Loads of one roller.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct RollerLoad {
+    /// Angle ψ_j from the load direction, rad.
+    pub azimuth_rad: f64,
+    /// Inner-raceway normal load F_в, N.
+    pub inner_force_n: f64,
+    /// Outer-raceway normal load F_н, N.
+    pub outer_force_n: f64,
+    /// Centrifugal force F_c, N.
+    pub centrifugal_force_n: f64,
+    /// Radial interference e_j = δ·e_r(ψ_j) − G/2 available to the roller, m.
+    pub interference_m: f64,
+    /// Approach of the inner contact at the roller centre section, m.
+    pub inner_approach_m: f64,
+    /// Approach of the outer contact at the roller centre section, m.
+    pub outer_approach_m: f64,
+    /// Roller tilt β_j between the raceways, rad.
+    pub roller_tilt_rad: f64,
+    /// Local ring tilt θ_j, rad.
+    pub ring_tilt_rad: f64,
+    /// Moment of the inner slice forces about the roller centre, N·m.
+    pub inner_moment_n_m: f64,
+    /// Effective line-contact length of the inner contact Q/max(Q_s/L_s), m (the length that
+    /// gives the Hertz pressure of the most loaded slice).
+    pub inner_effective_length_m: f64,
+    /// Same for the outer contact, m.
+    pub outer_effective_length_m: f64,
+    /// Inner contact loaded (Q_i > 0).
+    pub loaded: bool,
+    /// dQ_i/de_j (series stiffness), N/m.
+    #[serde(skip)]
+    pub stiffness_n_m: f64,
+}
+
+/// Result of a load distribution.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct LoadDistribution {
+    /// Per roller, in the order of the roller index.
+    pub rollers: Vec<RollerLoad>,
+    /// Displacement (δx, δy) of the inner ring relative to the outer ring, m.
+    pub ring_displacement_m: [f64; 2],
+    /// Force residual (ΣQ_i sin ψ, ΣQ_i cos ψ − F_r), N.
+    pub force_residual_n: [f64; 2],
+    /// Largest roller radial-balance residual |Q_o − Q_i − F_c|, N.
+    pub roller_residual_n: f64,
+    /// Moment the rollers exert on the inner ring about the tilt axis, N·m.
+    pub ring_moment_n_m: f64,
+    /// Ring Newton iterations.
+    pub iterations: usize,
+    /// Largest inner-raceway load, N.
+    pub max_inner_load_n: f64,
+    /// Largest outer-raceway load, N.
+    pub max_outer_load_n: f64,
+    /// Rollers with Q_i > 0.
+    pub loaded_rollers: usize,
+    /// Half angle of the load zone from the clearance and displacement, acos(G/(2δ)) (π if
+    /// every roller is loaded), rad.
+    pub load_zone_half_angle_rad: f64,
+}
+
+fn slice_opts(tol: f64) -> SolveOptions {
+    SolveOptions {
+        tolerance: tol,
+        max_iterations: 200,
+    }
+}
+
+impl LoadModel {
+    /// Slice models of `bearing`'s roller on its inner and outer raceways.
+    pub fn new(bearing: &CylindricalRollerBearing, law: SliceLawChoice) -> Result<Self, QsError> {
+        let model = BearingModel::Cylindrical(bearing.clone());
+        let ci = RollerRacewayContact::from_model(&model, true, 0.0)
+            .map_err(|e| QsError::Contact(e.to_string()))?;
+        let co = RollerRacewayContact::from_model(&model, false, 0.0)
+            .map_err(|e| QsError::Contact(e.to_string()))?;
+        let stack = bearing.roller.slices();
+        let build = |c: &RollerRacewayContact, ring: &rolldyn_geometry::Ring| {
+            let drops: Vec<f64> = stack
+                .position
+                .iter()
+                .map(|&x| bearing.roller.profile.drop(x) + ring.raceway_drop(x))
+                .collect();
+            SlicedRoller::new(
+                c.slice_law(law),
+                stack.position.clone(),
+                stack.length.clone(),
+                drops,
+            )
+            .map_err(|e| QsError::Contact(e.to_string()))
+        };
+        let inner = build(&ci, &bearing.inner_ring)?;
+        let outer = build(&co, &bearing.outer_ring)?;
+        let sym = |r: &SlicedRoller| {
+            let (x, z) = (r.positions(), r.drops());
+            let n = x.len();
+            (0..n).all(|k| {
+                let m = n - 1 - k;
+                (x[k] + x[m]).abs() <= 1e-12 * x[k].abs().max(1e-9)
+                    && (z[k] - z[m]).abs() <= 1e-15 + 1e-12 * z[k].abs()
+            })
+        };
+        let symmetric = sym(&inner) && sym(&outer);
+        let half_span = stack
+            .position
+            .iter()
+            .fold(0.0_f64, |a, &x| a.max(x.abs()))
+            .max(1e-6);
+        Ok(Self {
+            inner,
+            outer,
+            inner_contact: ci,
+            outer_contact: co,
+            symmetric,
+            roller_count: bearing.roller_count,
+            half_span,
+        })
+    }
+
+    /// Slice model of the inner contact.
+    pub fn inner_slices(&self) -> &SlicedRoller {
+        &self.inner
+    }
+
+    /// Slice model of the outer contact.
+    pub fn outer_slices(&self) -> &SlicedRoller {
+        &self.outer
+    }
+
+    /// Outer-contact approach carrying `force` at zero tilt.
+    fn outer_approach(&self, force: f64, tol: f64) -> Result<f64, QsError> {
+        self.outer
+            .solve_approach(force, 0.0, &slice_opts(tol))
+            .map(|s| s.approach)
+            .map_err(|e| QsError::Contact(e.to_string()))
+    }
+
+    /// Radial interference e at which one untilted roller carries `q` on the inner raceway.
+    fn interference_for_load(&self, q: f64, fc: f64, tol: f64) -> Result<f64, QsError> {
+        let ai = self
+            .inner
+            .solve_approach(q, 0.0, &slice_opts(tol))
+            .map_err(|e| QsError::Contact(e.to_string()))?
+            .approach;
+        Ok(ai + self.outer_approach(q + fc, tol)?)
+    }
+
+    /// Solves the load distribution (see module docs); `warm` is a previous solution used as
+    /// the starting point (same roller count).
+    pub fn solve(
+        &self,
+        case: &LoadCase,
+        warm: Option<&LoadDistribution>,
+        opts: &QuasiStaticOptions,
+    ) -> Result<LoadDistribution, QsError> {
+        let fr = case.radial_load_n;
+        if !(fr.is_finite() && fr >= 0.0) {
+            return Err(QsError::InvalidInput(format!(
+                "radial load must be finite and ≥ 0, got {fr} N"
+            )));
+        }
+        let fc = case.centrifugal_force_n.max(0.0);
+        let tol = opts.load_tolerance.max(1e-15);
+        let z = self.roller_count;
+        let angles: Vec<f64> = (0..z)
+            .map(|j| case.roller_phase_rad + 2.0 * std::f64::consts::PI * j as f64 / z as f64)
+            .collect();
+        let u_c = self.outer_approach(fc, tol * 0.1)?;
+        let ctx = RollerContext {
+            model: self,
+            fc,
+            u_c,
+            tol: tol * 0.1,
+        };
+        let tilt_of =
+            |psi: f64| case.misalignment_rad * (psi - case.misalignment_azimuth_rad).cos();
+        let half_g = 0.5 * case.diametral_clearance_m;
+
+        // initial ring displacement
+        let mut delta = match warm {
+            Some(w) if w.rollers.len() == z => w.ring_displacement_m,
+            _ => {
+                if fr > 0.0 {
+                    let c_min = angles
+                        .iter()
+                        .map(|p| p.cos())
+                        .fold(f64::NEG_INFINITY, f64::max)
+                        .max(0.1);
+                    let e1 = self.interference_for_load(fr / c_min, fc, tol)?;
+                    [0.0, (e1 + half_g) / c_min]
+                } else {
+                    [0.0, 0.0]
+                }
+            }
+        };
+        let mut states: Vec<RollerState> = match warm {
+            Some(w) if w.rollers.len() == z => w
+                .rollers
+                .iter()
+                .map(|r| RollerState {
+                    u: r.outer_approach_m,
+                    beta: r.roller_tilt_rad,
+                    ..RollerState::default()
+                })
+                .collect(),
+            _ => vec![RollerState::default(); z],
+        };
+
+        let eval = |delta: [f64; 2], states: &mut Vec<RollerState>| -> Result<[f64; 6], QsError> {
+            // returns (rx, ry, jxx, jxy, jyy, sum|Q|)
+            let mut out = [0.0; 6];
+            for j in 0..z {
+                let (s, c) = angles[j].sin_cos();
+                let e = delta[1] * c + delta[0] * s - half_g;
+                let th = tilt_of(angles[j]);
+                // reuse a mirror roller's solution when the inputs coincide
+                let mut reused = false;
+                for k in 0..j {
+                    let p = &states[k];
+                    if (p.e - e).abs() <= 1e-14 * (e.abs() + 1e-12) && (p.theta - th).abs() <= 1e-15
+                    {
+                        states[j] = *p;
+                        reused = true;
+                        break;
+                    }
+                }
+                if !reused {
+                    let guess = states[j];
+                    states[j] = ctx.solve_roller(e, th, guess)?;
+                }
+                let st = &states[j];
+                out[0] += st.qi * s;
+                out[1] += st.qi * c;
+                out[2] += st.k * s * s;
+                out[3] += st.k * s * c;
+                out[4] += st.k * c * c;
+                out[5] += st.qi.abs();
+            }
+            out[1] -= fr;
+            Ok(out)
+        };
+
+        let mut it = 0usize;
+        let mut r = eval(delta, &mut states)?;
+        let scale = |r: &[f64; 6]| (fr + r[5]).max(1e-9);
+        let converged = |r: &[f64; 6]| r[0].abs().max(r[1].abs()) <= tol * scale(r);
+        let mut lambda = 0.0_f64;
+        while !converged(&r) {
+            if it >= opts.max_load_iterations {
+                return Err(QsError::not_converged(
+                    "load distribution",
+                    it,
+                    &[
+                        ("force x / F_r", r[0] / scale(&r)),
+                        ("force y / F_r", r[1] / scale(&r)),
+                    ],
+                ));
+            }
+            it += 1;
+            let norm0 = r[0].hypot(r[1]);
+            let (jxx, jxy, jyy) = (r[2], r[3], r[4]);
+            let mut accepted = false;
+            for _ in 0..40 {
+                // Levenberg–Marquardt with a floor: a direction without stiffness (e.g. x with a
+                // single loaded roller) gets no step unless it has a residual
+                let diag = (jxx + jyy).max(1e-300);
+                let a11 = jxx + (lambda + 1e-10) * diag;
+                let a22 = jyy + (lambda + 1e-10) * diag;
+                let det = a11 * a22 - jxy * jxy;
+                let (dx, dy) = if jxx + jyy > 0.0 && det > 0.0 {
+                    (
+                        -(a22 * r[0] - jxy * r[1]) / det,
+                        -(a11 * r[1] - jxy * r[0]) / det,
+                    )
+                } else {
+                    // nothing loaded: move the ring towards the load by the clearance
+                    let step = case.diametral_clearance_m.abs().max(1e-6);
+                    (0.0, if r[1] < 0.0 { step } else { -step })
+                };
+                let mut alpha = 1.0;
+                for _ in 0..60 {
+                    let trial = [delta[0] + alpha * dx, delta[1] + alpha * dy];
+                    let mut st = states.clone();
+                    let rt = eval(trial, &mut st)?;
+                    if rt[0].hypot(rt[1]) < norm0 || converged(&rt) {
+                        delta = trial;
+                        states = st;
+                        r = rt;
+                        accepted = true;
+                        break;
+                    }
+                    alpha *= 0.5;
+                }
+                if accepted {
+                    if alpha == 1.0 {
+                        lambda *= 0.1;
+                        if lambda < 1e-12 {
+                            lambda = 0.0;
+                        }
+                    }
+                    break;
+                }
+                lambda = (10.0 * lambda).max(1e-8);
+            }
+            if !accepted {
+                return Err(QsError::not_converged(
+                    "load distribution",
+                    it,
+                    &[
+                        ("force x / F_r", r[0] / scale(&r)),
+                        ("force y / F_r", r[1] / scale(&r)),
+                    ],
+                ));
+            }
+        }
+
+        // final pass: effective lengths, moments, residuals
+        let mut fi = vec![0.0; self.inner.len()];
+        let mut fo = vec![0.0; self.outer.len()];
+        let eff_len = |forces: &[f64], lengths: &[f64], q: f64| {
+            let peak = forces
+                .iter()
+                .zip(lengths)
+                .map(|(f, l)| f / l)
+                .fold(0.0, f64::max);
+            if q > 0.0 && peak > 0.0 { q / peak } else { 0.0 }
+        };
+        let mut rollers = Vec::with_capacity(z);
+        let mut roller_res = 0.0_f64;
+        let mut ring_moment = 0.0;
+        for j in 0..z {
+            let st = &states[j];
+            let th = tilt_of(angles[j]);
+            let li = self.inner.evaluate(st.e - st.u, th - st.beta, &mut fi);
+            let lo = self.outer.evaluate(st.u, st.beta, &mut fo);
+            roller_res = roller_res.max((lo.force - li.force - fc).abs());
+            ring_moment += li.moment * (angles[j] - case.misalignment_azimuth_rad).cos();
+            rollers.push(RollerLoad {
+                azimuth_rad: angles[j],
+                inner_force_n: li.force,
+                outer_force_n: lo.force,
+                centrifugal_force_n: fc,
+                interference_m: st.e,
+                inner_approach_m: st.e - st.u,
+                outer_approach_m: st.u,
+                roller_tilt_rad: st.beta,
+                ring_tilt_rad: th,
+                inner_moment_n_m: li.moment,
+                inner_effective_length_m: eff_len(&fi, self.inner.lengths(), li.force),
+                outer_effective_length_m: eff_len(&fo, self.outer.lengths(), lo.force),
+                loaded: li.force > 0.0,
+                stiffness_n_m: st.k,
+            });
+        }
+        let max_inner = rollers.iter().map(|r| r.inner_force_n).fold(0.0, f64::max);
+        let max_outer = rollers.iter().map(|r| r.outer_force_n).fold(0.0, f64::max);
+        let loaded = rollers.iter().filter(|r| r.loaded).count();
+        let dmag = delta[0].hypot(delta[1]);
+        let zone = if case.diametral_clearance_m <= 0.0 {
+            std::f64::consts::PI
+        } else if dmag > half_g {
+            (half_g / dmag).acos()
+        } else {
+            0.0
+        };
+        Ok(LoadDistribution {
+            rollers,
+            ring_displacement_m: delta,
+            force_residual_n: [r[0], r[1]],
+            roller_residual_n: roller_res,
+            ring_moment_n_m: ring_moment,
+            iterations: it,
+            max_inner_load_n: max_inner,
+            max_outer_load_n: max_outer,
+            loaded_rollers: loaded,
+            load_zone_half_angle_rad: zone,
+        })
+    }
+}
+
+/// Per-roller unknowns and results of one evaluation.
+#[derive(Debug, Clone, Copy, Default)]
+struct RollerState {
+    e: f64,
+    theta: f64,
+    u: f64,
+    beta: f64,
+    qi: f64,
+    k: f64,
+}
+
+struct RollerContext<'a> {
+    model: &'a LoadModel,
+    fc: f64,
+    u_c: f64,
+    tol: f64,
+}
+
+impl RollerContext<'_> {
+    /// Roller equilibrium for interference `e` and local ring tilt `theta`.
+    fn solve_roller(&self, e: f64, theta: f64, guess: RollerState) -> Result<RollerState, QsError> {
+        if theta == 0.0 && self.model.symmetric {
+            self.solve_1d(e, guess)
+        } else {
+            self.solve_2d(e, theta, guess)
+        }
+    }
+
+    fn solve_1d(&self, e: f64, guess: RollerState) -> Result<RollerState, QsError> {
+        let m = self.model;
+        let fc = self.fc;
+        // upper end: the inner contact just touches
+        let touch_i = m
+            .inner
+            .drops()
+            .iter()
+            .copied()
+            .fold(f64::INFINITY, f64::min);
+        let mut lo = self.u_c;
+        let mut hi = e - touch_i;
+        let base = RollerState {
+            e,
+            theta: 0.0,
+            u: self.u_c,
+            beta: 0.0,
+            qi: 0.0,
+            k: 0.0,
+        };
+        if hi <= lo {
+            return Ok(base);
+        }
+        let g = |u: f64| {
+            let lo_ = m.outer.evaluate_totals(u, 0.0);
+            let li = m.inner.evaluate_totals(e - u, 0.0);
+            (
+                lo_.force - li.force - fc,
+                lo_.dforce_dapproach + li.dforce_dapproach,
+                li,
+                lo_,
+            )
+        };
+        let mut u = if guess.u > lo && guess.u < hi {
+            guess.u
+        } else {
+            hi
+        };
+        for _ in 0..200 {
+            let (r, dr, li, lo_) = g(u);
+            let scale = lo_.force + li.force + fc;
+            if r.abs() <= self.tol * scale.max(1e-12) || (hi - lo) <= 4.0 * f64::EPSILON * hi.abs()
+            {
+                let k = if li.force > 0.0 {
+                    let (ki, ko) = (li.dforce_dapproach, lo_.dforce_dapproach);
+                    ki * ko / (ki + ko)
+                } else {
+                    0.0
+                };
+                return Ok(RollerState {
+                    u,
+                    qi: li.force,
+                    k,
+                    ..base
+                });
+            }
+            if r > 0.0 {
+                hi = u;
+            } else {
+                lo = u;
+            }
+            let next = if dr > 0.0 { u - r / dr } else { f64::NAN };
+            let next = if next > lo && next < hi {
+                next
+            } else {
+                0.5 * (lo + hi)
+            };
+            if next == u {
+                let k = if li.force > 0.0 {
+                    let (ki, ko) = (li.dforce_dapproach, lo_.dforce_dapproach);
+                    ki * ko / (ki + ko)
+                } else {
+                    0.0
+                };
+                return Ok(RollerState {
+                    u,
+                    qi: li.force,
+                    k,
+                    ..base
+                });
+            }
+            u = next;
+        }
+        Err(QsError::not_converged(
+            "roller radial balance",
+            200,
+            &[("bracket width / m", hi - lo)],
+        ))
+    }
+
+    fn solve_2d(&self, e: f64, theta: f64, guess: RollerState) -> Result<RollerState, QsError> {
+        let m = self.model;
+        let fc = self.fc;
+        let ls = m.half_span;
+        // quick unloaded test: inner contact at the outer-only position (β = 0)
+        let li0 = m.inner.evaluate_totals(e - self.u_c, theta);
+        let lo0 = m.outer.evaluate_totals(self.u_c, 0.0);
+        if li0.force <= 0.0 && (lo0.moment.abs() <= 1e-12 * (lo0.force + 1e-9) * ls) {
+            return Ok(RollerState {
+                e,
+                theta,
+                u: self.u_c,
+                beta: 0.0,
+                qi: 0.0,
+                k: 0.0,
+            });
+        }
+        let eval = |u: f64, b: f64| -> (f64, f64, SliceLoad, SliceLoad) {
+            let lo_ = m.outer.evaluate_totals(u, b);
+            let li = m.inner.evaluate_totals(e - u, theta - b);
+            (
+                lo_.force - li.force - fc,
+                (lo_.moment - li.moment) / ls,
+                li,
+                lo_,
+            )
+        };
+        let (mut u, mut b) = if guess.e != 0.0 || guess.u != 0.0 {
+            (guess.u, guess.beta)
+        } else {
+            (0.5 * (e + self.u_c), 0.5 * theta)
+        };
+        let mut lambda = 0.0_f64;
+        for _ in 0..200 {
+            let (g1, g2, li, lo_) = eval(u, b);
+            let scale = (lo_.force + li.force + fc).max(1e-12);
+            if g1.abs().max(g2.abs()) <= self.tol * scale {
+                let k = implicit_stiffness(&li, &lo_, ls);
+                return Ok(RollerState {
+                    e,
+                    theta,
+                    u,
+                    beta: b,
+                    qi: li.force,
+                    k,
+                });
+            }
+            // J = J_o + J_i in (u, θ = ls tan β) scaled variables (small angles: tan β ≈ β)
+            let j11 = lo_.dforce_dapproach + li.dforce_dapproach;
+            let j12 = (lo_.dforce_dtilt + li.dforce_dtilt) / ls;
+            let j21 = (lo_.dmoment_dapproach + li.dmoment_dapproach) / ls;
+            let j22 = (lo_.dmoment_dtilt + li.dmoment_dtilt) / (ls * ls);
+            let norm0 = g1.hypot(g2);
+            let mut accepted = false;
+            for _ in 0..40 {
+                let d = (j11 + j22).max(1e-12);
+                let a11 = j11 + lambda * d;
+                let a22 = j22 + lambda * d;
+                let det = a11 * a22 - j12 * j21;
+                if det.abs() <= 1e-14 * d * d {
+                    lambda = (10.0 * lambda).max(1e-8);
+                    continue;
+                }
+                let du = -(a22 * g1 - j12 * g2) / det;
+                let dt = -(a11 * g2 - j21 * g1) / det;
+                let mut alpha = 1.0;
+                for _ in 0..40 {
+                    let (un, bn) = (u + alpha * du, b + alpha * dt / ls);
+                    let (h1, h2, _, _) = eval(un, bn);
+                    if h1.hypot(h2) < norm0 {
+                        u = un;
+                        b = bn;
+                        accepted = true;
+                        break;
+                    }
+                    alpha *= 0.5;
+                }
+                if accepted {
+                    if alpha == 1.0 {
+                        lambda *= 0.1;
+                        if lambda < 1e-12 {
+                            lambda = 0.0;
+                        }
+                    }
+                    break;
+                }
+                lambda = (10.0 * lambda).max(1e-8);
+                if lambda > 1e12 {
+                    break;
+                }
+            }
+            if !accepted {
+                if g1.abs().max(g2.abs()) <= 1e-9 * scale {
+                    let k = implicit_stiffness(&li, &lo_, ls);
+                    return Ok(RollerState {
+                        e,
+                        theta,
+                        u,
+                        beta: b,
+                        qi: li.force,
+                        k,
+                    });
+                }
+                return Err(QsError::not_converged(
+                    "roller radial/moment balance",
+                    200,
+                    &[("force / N", g1), ("moment / (N·m/half-length)", g2)],
+                ));
+            }
+        }
+        Err(QsError::not_converged(
+            "roller radial/moment balance",
+            200,
+            &[("iterations", 200.0)],
+        ))
+    }
+}
+
+/// dQ_i/de of a tilted roller by implicit differentiation of the roller equilibrium.
+fn implicit_stiffness(li: &SliceLoad, lo: &SliceLoad, _ls: f64) -> f64 {
+    if li.force <= 0.0 {
+        return 0.0;
+    }
+    let j11 = lo.dforce_dapproach + li.dforce_dapproach;
+    let j12 = lo.dforce_dtilt + li.dforce_dtilt;
+    let j21 = lo.dmoment_dapproach + li.dmoment_dapproach;
+    let j22 = lo.dmoment_dtilt + li.dmoment_dtilt;
+    let det = j11 * j22 - j12 * j21;
+    let (qa, qt) = (li.dforce_dapproach, li.dforce_dtilt);
+    if det.abs() <= 1e-30 {
+        let (ki, ko) = (li.dforce_dapproach, lo.dforce_dapproach);
+        return ki * ko / (ki + ko).max(1e-30);
+    }
+    // d(u, β)/de = J⁻¹ (dQi/da, dMi/da)
+    let (ra, rm) = (li.dforce_dapproach, li.dmoment_dapproach);
+    let du = (j22 * ra - j12 * rm) / det;
+    let db = (j11 * rm - j21 * ra) / det;
+    qa * (1.0 - du) - qt * db
+}

@@ -1,0 +1,70 @@
+//! Deterministic sweeps over one operating variable (plain loop, warm-started from the previous
+//! converged point; the caller may parallelise independent sweeps).
+
+use crate::conditions::OperatingConditions;
+use crate::error::QsError;
+use crate::options::QuasiStaticOptions;
+use crate::results::SkidResult;
+use rolldyn_geometry::CylindricalRollerBearing;
+
+/// The swept variable (values in SI).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SweepVariable {
+    /// Inner-ring speed ω_в, rad/s.
+    InnerSpeed,
+    /// Outer-ring speed ω_н, rad/s.
+    OuterSpeed,
+    /// Radial load F_r, N.
+    RadialLoad,
+    /// Ring misalignment θ, rad.
+    Misalignment,
+}
+
+/// One point of a sweep.
+#[derive(Debug, Clone)]
+pub struct SweepPoint {
+    /// Value of the swept variable (SI).
+    pub value: f64,
+    /// Result or error of this point.
+    pub result: Result<SkidResult, QsError>,
+}
+
+/// Conditions of one sweep point.
+pub fn apply(
+    base: &OperatingConditions,
+    variable: SweepVariable,
+    value: f64,
+) -> OperatingConditions {
+    let mut c = base.clone();
+    match variable {
+        SweepVariable::InnerSpeed => c.inner_speed_rad_s = value,
+        SweepVariable::OuterSpeed => c.outer_speed_rad_s = value,
+        SweepVariable::RadialLoad => c.radial_load_n = value,
+        SweepVariable::Misalignment => c.misalignment_rad = Some(value),
+    }
+    c
+}
+
+/// Solves `values.len()` points in order. Each point starts from the cage slip of the previous
+/// converged point (`options.initial_cage_slip` for the first); a failed point does not stop
+/// the sweep.
+pub fn sweep(
+    bearing: &CylindricalRollerBearing,
+    base: &OperatingConditions,
+    options: &QuasiStaticOptions,
+    variable: SweepVariable,
+    values: &[f64],
+) -> Vec<SweepPoint> {
+    let mut opts = options.clone();
+    values
+        .iter()
+        .map(|&value| {
+            let cond = apply(base, variable, value);
+            let result = crate::solve(bearing, &cond, &opts);
+            if let Ok(r) = &result {
+                opts.initial_cage_slip = r.cage_slip;
+            }
+            SweepPoint { value, result }
+        })
+        .collect()
+}
