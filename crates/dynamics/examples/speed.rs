@@ -21,8 +21,10 @@ fn main() {
     b.roller.slice_count = 10;
     let mut cond = OperatingConditions::new(6371.0 * std::f64::consts::TAU / 60.0, 500.0);
     cond.cage_drag_n_m_s = CAGE_DRAG_2002834_100C;
-    let mut set = DynamicsSettings::default();
-    set.output_step_s = 0.0;
+    let mut set = DynamicsSettings {
+        output_step_s: 0.0,
+        ..DynamicsSettings::default()
+    };
     set.integrator.tolerance = tol;
     if let Some(t) = args.get(3).and_then(|s| s.parse().ok()) {
         set.divergence_tilt_rad = t;

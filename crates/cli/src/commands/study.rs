@@ -4,7 +4,10 @@
 use super::contact::plot_pressure_map;
 use crate::failure::Failure;
 use crate::output::{out_dir, write_csv};
+use rolldyn_geometry::BearingModel;
 use rolldyn_plot::{Labels, Series, line_plot};
+use rolldyn_quasistatic::QuasiStaticOptions;
+use rolldyn_quasistatic::studies::{self, NviTraction, StudyRow};
 use rolldyn_validation::seed004::{self, LOADS_N, PROFILES, TILTS_ARCMIN};
 use std::path::{Path, PathBuf};
 
@@ -12,6 +15,9 @@ use std::path::{Path, PathBuf};
 pub enum Study {
     /// Seed 004: grid study (V-01), profile study (V-02), slices vs Boussinesq.
     Seed004,
+    /// Seed 000 V-06 and seed 001 V-18: quasi-static cage slip of the O'Brien–Taylor bearing and
+    /// of an intershaft bearing.
+    Skidding,
 }
 
 #[derive(clap::Args)]
@@ -27,6 +33,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
     let dir = out_dir(&args.out)?;
     match args.study {
         Study::Seed004 => seed004_study(&dir),
+        Study::Skidding => skidding_study(&dir),
     }
 }
 
@@ -311,5 +318,170 @@ fn slices_study(dir: &Path) -> Result<(), Failure> {
         rows.into_iter(),
     )?;
     println!("\nPlots and CSV tables written to {}", dir.display());
+    Ok(())
+}
+
+fn skid_rows_csv(path: &Path, rows: &[StudyRow]) -> Result<(), Failure> {
+    let nan = f64::NAN;
+    write_csv(
+        path,
+        &[
+            "inner_speed_rpm",
+            "outer_speed_rpm",
+            "radial_load_n",
+            "misalignment_arcmin",
+            "temperature_c",
+            "cage_slip",
+            "cage_speed_rad_s",
+            "epicyclic_cage_speed_rad_s",
+            "max_roller_load_n",
+            "max_inner_slide_roll",
+            "max_outer_slide_roll",
+            "power_loss_w",
+        ],
+        rows.iter().map(|r| {
+            vec![
+                r.inner_speed_rpm,
+                r.outer_speed_rpm,
+                r.radial_load_n,
+                r.misalignment_arcmin,
+                r.temperature_c,
+                r.cage_slip.unwrap_or(nan),
+                r.cage_speed_rad_s.unwrap_or(nan),
+                r.epicyclic_cage_speed_rad_s,
+                r.max_roller_load_n.unwrap_or(nan),
+                r.max_inner_slide_roll.unwrap_or(nan),
+                r.max_outer_slide_roll.unwrap_or(nan),
+                r.power_loss_w.unwrap_or(nan),
+            ]
+        }),
+    )
+}
+
+/// Cage slip (%) of `rows` grouped by inner speed, against `x(row)`.
+fn slip_curves(rows: &[StudyRow], x: impl Fn(&StudyRow) -> f64) -> Vec<(String, Vec<(f64, f64)>)> {
+    let mut speeds: Vec<f64> = rows.iter().map(|r| r.inner_speed_rpm).collect();
+    speeds.dedup();
+    speeds
+        .iter()
+        .map(|&n| {
+            let points = rows
+                .iter()
+                .filter(|r| r.inner_speed_rpm == n)
+                .filter_map(|r| r.cage_slip.map(|s| (x(r), 100.0 * s)))
+                .collect();
+            (format!("{n:.0} rpm"), points)
+        })
+        .collect()
+}
+
+fn skidding_study(dir: &Path) -> Result<(), Failure> {
+    let options = QuasiStaticOptions::default();
+    let model = rolldyn_model::parse(
+        include_str!("../../../../examples/obrien-taylor.toml"),
+        "examples/obrien-taylor.toml",
+    )?;
+    let BearingModel::Cylindrical(bearing) = &model.bearing else {
+        return Err(Failure::Run(
+            "the O'Brien–Taylor example is a cylindrical bearing".into(),
+        ));
+    };
+    for (traction, stem, label) in [
+        (
+            NviTraction::Seed000Elastic,
+            "v06-obrien-taylor",
+            "elastic-only traction (V-06 inputs)",
+        ),
+        (
+            NviTraction::MaxwellEyring { tau0_pa: 5e6 },
+            "v06-obrien-taylor-eyring",
+            "Maxwell–Eyring traction, τ0 = 5 MPa (assumed)",
+        ),
+    ] {
+        let rows = studies::obrien_taylor(bearing, traction, &options);
+        skid_rows_csv(&dir.join(format!("{stem}.csv")), &rows)?;
+        // Per speed the study runs the load series (aligned), then the misalignment series at
+        // 201 N.
+        let loads = studies::OBRIEN_TAYLOR_LOADS_N.len();
+        let mut seen = std::collections::HashMap::new();
+        let (aligned, tilted): (Vec<StudyRow>, Vec<StudyRow>) = rows.into_iter().partition(|r| {
+            let count = seen.entry(r.inner_speed_rpm.to_bits()).or_insert(0usize);
+            *count += 1;
+            *count <= loads
+        });
+        println!("## V-06 O'Brien–Taylor, quasi-static, {label}\n");
+        println!("| speed rpm | oil °C | load N | cage slip % | max roller load N | failed |");
+        println!("|---|---|---|---|---|---|");
+        for r in &aligned {
+            println!(
+                "| {:.0} | {:.1} | {:.0} | {} | {} | {} |",
+                r.inner_speed_rpm,
+                r.temperature_c,
+                r.radial_load_n,
+                r.cage_slip
+                    .map_or("—".into(), |s| format!("{:.4}", 100.0 * s)),
+                r.max_roller_load_n
+                    .map_or("—".into(), |q| format!("{q:.1}")),
+                r.error.as_deref().unwrap_or("")
+            );
+        }
+        let curves = slip_curves(&aligned, |r| r.radial_load_n);
+        line_plot(
+            &dir.join(format!("{stem}-load.svg")),
+            &Labels {
+                title: &format!("O'Brien–Taylor cage slip vs radial load, {label}"),
+                x: "radial load, N",
+                y: "cage slip, %",
+            },
+            &Series::from_pairs(&curves),
+        )?;
+        let curves = slip_curves(&tilted, |r| r.misalignment_arcmin);
+        line_plot(
+            &dir.join(format!("{stem}-misalignment.svg")),
+            &Labels {
+                title: &format!("O'Brien–Taylor cage slip vs misalignment at 201 N, {label}"),
+                x: "misalignment, arcmin",
+                y: "cage slip, %",
+            },
+            &Series::from_pairs(&curves),
+        )?;
+        println!();
+    }
+    let intershaft = studies::intershaft_bearing();
+    let rotor = studies::intershaft_rotor_slip(
+        &intershaft,
+        &[1000.0, 2000.0, 4000.0, 6000.0, 8000.0],
+        500.0,
+        &options,
+    );
+    let load =
+        studies::intershaft_load(&intershaft, &[50.0, 200.0, 400.0, 800.0, 1600.0], &options);
+    for (rows, stem, title) in [
+        (
+            &rotor,
+            "v18-intershaft-rotor-slip",
+            "outer ring 13 067 rpm, 500 N",
+        ),
+        (&load, "v18-intershaft-load", "5180 / 11 313 rpm"),
+    ] {
+        skid_rows_csv(&dir.join(format!("{stem}.csv")), rows)?;
+        println!("## V-18 intershaft (assumed geometry), {title}\n");
+        println!("| inner rpm | outer rpm | load N | cage slip | max outer slide-roll | failed |");
+        println!("|---|---|---|---|---|---|");
+        for r in rows.iter() {
+            println!(
+                "| {:.0} | {:.0} | {:.0} | {} | {} | {} |",
+                r.inner_speed_rpm,
+                r.outer_speed_rpm,
+                r.radial_load_n,
+                r.cage_slip.map_or("—".into(), |s| format!("{s:.5}")),
+                r.max_outer_slide_roll
+                    .map_or("—".into(), |s| format!("{s:.2e}")),
+                r.error.as_deref().unwrap_or("")
+            );
+        }
+        println!();
+    }
+    println!("Plots and CSV tables written to {}", dir.display());
     Ok(())
 }
