@@ -1,80 +1,182 @@
 //! `rolldyn demo`: the most complete analysis available, on the embedded default model
-//! (bearing 2002834, SPEC §1.6 a / F-02): geometry check, then the inner-raceway roller
-//! contact by Hertz, slices and Boussinesq at three roller loads and three tilts.
+//! (bearing 2002834, SPEC §1.6 a / F-02): geometry check, quasi-static skidding at the model's
+//! operating point, a short 6-DOF dynamics run, and the inner-raceway contact of the most
+//! loaded roller by Hertz, slices and the Boussinesq solver at 0′/4′/8′ tilt.
 
 use super::check::{describe, summarise};
 use super::contact::{LawName, Method, solve};
+use super::simulate::print_summary;
 use crate::failure::Failure;
-use crate::output::{load_model, out_dir, print_json};
-use rolldyn_contact::roller_raceway::RollerRacewayContact;
-use rolldyn_units::{ARCMIN, RPM};
-use std::path::PathBuf;
+use crate::output::{load_model, print_json};
+use rolldyn_contact::roller_raceway::{ContactReport, RollerRacewayContact};
+use rolldyn_dynamics::conditions::{ContactTemperatures, InnerRingLoad, OperatingConditions};
+use rolldyn_dynamics::output::NullSink;
+use rolldyn_dynamics::parameters::ContactParameters;
+use rolldyn_dynamics::settings::DynamicsSettings;
+use rolldyn_dynamics::{RacewayTraction, Simulation};
+use rolldyn_geometry::BearingModel;
+use rolldyn_quasistatic::QuasiStaticOptions;
+use rolldyn_units::ARCMIN;
 
 #[derive(clap::Args)]
 pub struct Args {
     /// Print the results as JSON.
     #[arg(long)]
     pub json: bool,
-    /// Also write the contact plots and CSV files of the Boussinesq solutions to this folder.
-    #[arg(long)]
-    pub out: Option<PathBuf>,
+    /// Cage revolutions of the dynamics run.
+    #[arg(long, default_value = "2")]
+    pub revolutions: f64,
 }
 
-/// Seed 000 Fig. 3.1 operating speed of 2002834.
-const SPEED_RPM: f64 = 6371.0;
-const LOADS_N: [f64; 3] = [500.0, 1000.0, 2000.0];
 const TILTS_ARCMIN: [f64; 3] = [0.0, 4.0, 8.0];
 const CELLS: (usize, usize) = (150, 9);
 
 pub fn run(args: Args) -> Result<(), Failure> {
-    let model = load_model(None)?.bearing;
-    let summary = summarise(&model, SPEED_RPM * RPM, 0.0);
+    let model = load_model(None)?;
+    let BearingModel::Cylindrical(bearing) = &model.bearing else {
+        return Err(Failure::Run(
+            "the embedded model is a cylindrical bearing".into(),
+        ));
+    };
+    let op = model.operating;
+    let missing = |what: &str| Failure::Run(format!("the embedded model lacks {what}"));
+    let speed = op
+        .inner_speed
+        .ok_or_else(|| missing("operating.inner_speed"))?;
+    let load = op
+        .radial_load
+        .ok_or_else(|| missing("operating.radial_load"))?;
+    let oil_t = op
+        .temperatures
+        .oil
+        .ok_or_else(|| missing("operating.temperatures.oil"))?;
+    let lubrication = model
+        .lubrication
+        .as_ref()
+        .ok_or_else(|| missing("[lubricant]"))?;
+    let traction = lubrication
+        .traction_model()
+        .map_err(|e| Failure::Run(e.to_string()))?;
+    let summary = summarise(&model.bearing, speed, 0.0);
     if !args.json {
         describe(&summary).iter().for_each(|l| println!("{l}"));
+    }
+
+    let mut qs_conditions = rolldyn_quasistatic::OperatingConditions::new(
+        speed,
+        0.0,
+        load,
+        lubrication.oil.clone(),
+        oil_t,
+    );
+    qs_conditions.friction = rolldyn_quasistatic::FrictionModel::Muraki {
+        settings: rolldyn_lubrication::MurakiSettings {
+            rheology: lubrication.rheology,
+            ..Default::default()
+        },
+        mixed: None,
+        film: rolldyn_lubrication::FilmFormula::Auto,
+    };
+    let skid = rolldyn_quasistatic::solve(bearing, &qs_conditions, &QuasiStaticOptions::default())
+        .map_err(|e| Failure::Run(format!("quasi-static model: {e}")))?;
+    if !args.json {
         println!(
-            "\nInner-raceway roller contact (Boussinesq grid {}×{} over the roller length × 0.4 mm):",
-            CELLS.0, CELLS.1
+            "\nQuasi-static skidding at {:.0} rpm, {:.0} N, oil {:.0} °C:",
+            speed * 30.0 / std::f64::consts::PI,
+            load,
+            oil_t - 273.15
+        );
+        println!(
+            "  cage slip {:.4} %, max roller load {:.1} N, operating clearance {:.4} mm, friction power {:.1} W",
+            100.0 * skid.cage_slip,
+            skid.max_roller_load_n,
+            skid.operating_clearance_m * 1e3,
+            skid.power_loss_w
         );
     }
-    let mut rows = Vec::new();
+
+    let mut conditions = OperatingConditions::new(speed, load);
+    if op.load_rotates {
+        conditions.loads = vec![InnerRingLoad::Rotating {
+            magnitude_n: load,
+            phase_rad: 0.0,
+        }];
+    }
+    conditions.temperatures = ContactTemperatures::uniform(oil_t);
+    let mut sim = Simulation::new(
+        bearing,
+        conditions,
+        ContactParameters::for_bearing(bearing),
+        DynamicsSettings {
+            output_step_s: 0.0,
+            ..DynamicsSettings::default()
+        },
+        RacewayTraction::same(traction),
+    )
+    .map_err(|e| Failure::Run(e.to_string()))?;
+    let t_end = args.revolutions.max(0.1) * std::f64::consts::TAU
+        / sim.epicyclic_cage_speed().abs().max(1e-9);
+    let dynamics = sim
+        .run_until(t_end, &mut NullSink, &mut |_| {})
+        .map_err(|e| Failure::Run(format!("dynamics: {e}")))?;
+    if !args.json {
+        println!(
+            "\nDynamics, {} cage revolutions from the default start:",
+            args.revolutions
+        );
+        print_summary(model.bearing.name(), &dynamics);
+    }
+
+    let roller_load = skid.max_roller_load_n.max(1.0);
+    let mut rows: Vec<ContactReport> = Vec::new();
+    if !args.json {
+        println!(
+            "\nInner-raceway contact of the most loaded roller ({roller_load:.0} N), Boussinesq grid {}×{} over the roller length × 0.4 mm:",
+            CELLS.0, CELLS.1
+        );
+        println!(
+            "  {:>6} {:>10} {:>12} {:>10} {:>10} {:>8} {:>8}",
+            "tilt ′", "method", "approach µm", "p_max MPa", "p_mid MPa", "K", "ms"
+        );
+    }
     for tilt in TILTS_ARCMIN {
-        let contact = RollerRacewayContact::from_model(&model, true, tilt * ARCMIN)
+        let contact = RollerRacewayContact::from_model(&model.bearing, true, tilt * ARCMIN)
             .map_err(|e| Failure::Run(e.to_string()))?;
-        for load in LOADS_N {
-            for method in [Method::Hertz, Method::Slices, Method::Boussinesq] {
-                let report = solve(&contact, method, load, CELLS, Some(0.4e-3), LawName::Seed)?;
-                if let (Some(dir), Method::Boussinesq) = (&args.out, method) {
-                    let dir = out_dir(&dir.join(format!("{load:.0}N-{tilt:.0}arcmin")))?;
-                    super::contact::write_outputs(&dir, &report)?;
-                }
-                rows.push(super::contact::to_json(model.name(), &report, Some(CELLS)));
-                if !args.json {
-                    print_row(tilt, load, &report);
-                }
+        for method in [Method::Hertz, Method::Slices, Method::Boussinesq] {
+            let r = solve(
+                &contact,
+                method,
+                roller_load,
+                CELLS,
+                Some(0.4e-3),
+                LawName::Seed,
+            )?;
+            if !args.json {
+                println!(
+                    "  {:>6.0} {:>10} {:>12.3} {:>10.0} {:>10.0} {:>8.3} {:>8.2}",
+                    tilt,
+                    r.method.name(),
+                    r.approach_m * 1e6,
+                    r.max_pressure_pa * 1e-6,
+                    r.mid_pressure_pa * 1e-6,
+                    r.concentration_factor,
+                    r.solve_time_s * 1e3
+                );
             }
+            rows.push(r);
         }
     }
     if args.json {
-        return print_json(&serde_json::json!({ "model": summary, "inner_raceway_contact": rows }));
+        let contacts: Vec<_> = rows
+            .iter()
+            .map(|r| super::contact::to_json(model.bearing.name(), r, Some(CELLS)))
+            .collect();
+        return print_json(&serde_json::json!({
+            "model": summary,
+            "quasi_static": skid,
+            "dynamics": super::simulate::summary_json(model.bearing.name(), &dynamics),
+            "inner_raceway_contact": contacts,
+        }));
     }
     Ok(())
-}
-
-fn print_row(tilt: f64, load: f64, r: &rolldyn_contact::roller_raceway::ContactReport) {
-    if r.method == rolldyn_contact::roller_raceway::ContactMethod::Hertz && load == LOADS_N[0] {
-        println!(
-            "\n  tilt {tilt:.0}′  {:>7} {:>10} {:>11} {:>11} {:>10} {:>8} {:>9}",
-            "load N", "method", "approach µm", "p_max MPa", "p_mid MPa", "K_conc", "time ms"
-        );
-    }
-    println!(
-        "          {:>7.0} {:>10} {:>11.3} {:>11.0} {:>10.0} {:>8.3} {:>9.2}",
-        load,
-        r.method.name(),
-        r.approach_m * 1e6,
-        r.max_pressure_pa * 1e-6,
-        r.mid_pressure_pa * 1e-6,
-        r.concentration_factor,
-        r.solve_time_s * 1e3
-    );
 }

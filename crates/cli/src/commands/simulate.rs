@@ -431,7 +431,7 @@ impl OutputSink for Sinks {
 
 /// The JSON answer of `rolldyn simulate --json` (fields of the issue, SI units).
 #[derive(Serialize)]
-struct Answer<'a> {
+pub(crate) struct Answer<'a> {
     model: &'a str,
     cage_slip_mean: f64,
     cage_speed_mean_rad_s: f64,
@@ -453,7 +453,7 @@ struct Answer<'a> {
 }
 
 impl<'a> Answer<'a> {
-    fn new(model: &'a str, s: &RunSummary, output_folder: Option<String>) -> Self {
+    pub(crate) fn new(model: &'a str, s: &RunSummary, output_folder: Option<String>) -> Self {
         Self {
             model,
             cage_slip_mean: s.cage_slip_mean,
@@ -708,4 +708,9 @@ pub fn print_summary(model: &str, s: &RunSummary) {
         "steps (rejected) / RHS evaluations",
         format!("{} ({}) / {}", s.steps, s.rejected_steps, s.rhs_evaluations),
     );
+}
+
+/// The JSON form of a run summary (used by `demo`).
+pub fn summary_json(model: &str, s: &RunSummary) -> serde_json::Value {
+    serde_json::to_value(Answer::new(model, s, None)).unwrap_or_default()
 }
