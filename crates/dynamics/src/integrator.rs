@@ -23,8 +23,10 @@ pub struct StepStats {
     pub accepted: u64,
     /// rejected steps
     pub rejected: u64,
-    /// right-hand-side evaluations
+    /// right-hand-side evaluations (incl. those of finite-difference Jacobians)
     pub rhs_evaluations: u64,
+    /// Jacobian evaluations (Rosenbrock-W only)
+    pub jacobian_evaluations: u64,
     /// per state component: how often it had the largest scaled error (accepted and rejected
     /// steps)
     pub limiting: Vec<u64>,

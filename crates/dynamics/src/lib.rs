@@ -75,6 +75,7 @@ mod model;
 pub mod output;
 pub mod parameters;
 mod rhs;
+pub mod rosenbrock;
 pub mod settings;
 mod simulation;
 pub mod study;
@@ -96,6 +97,7 @@ pub use output::{
 };
 pub use parameters::{ContactParameters, PairParameters, RacewayParameters};
 pub use rhs::axisymmetric_omega;
-pub use settings::{DynamicsSettings, IntegratorSettings};
+pub use rosenbrock::{JacobianBlock, RosenbrockW};
+pub use settings::{DynamicsSettings, IntegratorMethod, IntegratorSettings};
 pub use simulation::Simulation;
 pub use vec3::V3;

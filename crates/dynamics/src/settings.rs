@@ -1,10 +1,28 @@
 //! Every solver knob in one place (rapier-style): [`DynamicsSettings`] with
 //! [`IntegratorSettings`]. All defaults are documented and justified.
 
-/// Settings of the explicit embedded Runge–Kutta integrator (Dormand–Prince 5(4), see
-/// `INTEGRATOR.md` for the measured choice against alternatives).
+/// Time-integration method (measured comparison in `docs/dynamics-integrator.md`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum IntegratorMethod {
+    /// Explicit Dormand–Prince 5(4) with FSAL and 4th-order dense output
+    /// ([`crate::Dopri5`]).
+    #[default]
+    Dopri5,
+    /// Linearly implicit Rosenbrock-W method ROS34PW2, order 3(2), with a block-diagonal
+    /// finite-difference Jacobian per body reused over many steps ([`crate::RosenbrockW`]).
+    RosenbrockW,
+}
+
+/// Settings of the variable-step integrator: explicit Dormand–Prince 5(4) or the linearly
+/// implicit Rosenbrock-W method (see `docs/dynamics-integrator.md` for the measured choice).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct IntegratorSettings {
+    /// Method (default [`IntegratorMethod::Dopri5`], see `docs/dynamics-integrator.md`).
+    pub method: IntegratorMethod,
+    /// Rosenbrock-W only: accepted steps between evaluations of the block Jacobian (default
+    /// 20; it is also refreshed after every rejected step unless fresh). A W-method keeps its
+    /// order with a stale Jacobian, only its damping of the stiff modes degrades.
+    pub jacobian_interval: u32,
     /// Dimensionless error tolerance τ. A step is accepted when, for every state component,
     /// `|error_i| ≤ τ·(s_i + ρ_i |y_i|)` where `s_i` is the component's characteristic scale
     /// (see the crate docs, "Error control") and `ρ_i` is 1 for velocities/momenta and 0 for
@@ -37,6 +55,8 @@ pub struct IntegratorSettings {
 impl Default for IntegratorSettings {
     fn default() -> Self {
         Self {
+            method: IntegratorMethod::default(),
+            jacobian_interval: 20,
             tolerance: 1e-6,
             initial_step_s: 1e-7,
             max_step_s: 5e-5,
