@@ -1,7 +1,9 @@
 #![allow(clippy::field_reassign_with_default, clippy::needless_range_loop)]
 //! Dynamics benchmarks (2002834, 18 rollers × 10 slices, 6371 rpm, 500 N, EHL traction with the
 //! PAO VG 320 Muraki model): right-hand-side cost with EHL traction and with a trivial
-//! two-level law (the difference is the traction share), and simulated time per wall time.
+//! two-level law (the difference is the traction share), and simulated time per wall time with
+//! both integrators (DOPRI5 at its default τ = 1e-6, Rosenbrock-W at τ = 1e-5, the tolerance at
+//! which it matches DOPRI5's accuracy in the start phase — docs/dynamics-integrator.md).
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use rolldyn_dynamics::*;
@@ -22,11 +24,19 @@ fn bearing() -> rolldyn_geometry::CylindricalRollerBearing {
 }
 
 fn sim(traction: TractionModel) -> Simulation {
+    sim_with(traction, IntegratorMethod::Dopri5)
+}
+
+fn sim_with(traction: TractionModel, method: IntegratorMethod) -> Simulation {
     let b = bearing();
     let mut cond = OperatingConditions::new(6371.0 * std::f64::consts::TAU / 60.0, 500.0);
     cond.cage_drag_n_m_s = CAGE_DRAG_2002834_100C;
     let mut set = DynamicsSettings::default();
     set.output_step_s = 0.0;
+    set.integrator.method = method;
+    if method == IntegratorMethod::RosenbrockW {
+        set.integrator.tolerance = 1e-5;
+    }
     Simulation::new(
         &b,
         cond,
@@ -74,17 +84,31 @@ fn bench(c: &mut Criterion) {
             black_box(r.steps)
         })
     });
+    g.bench_function("2002834_6371rpm_10ms_rosenbrock_w", |b| {
+        b.iter(|| {
+            let mut s = sim_with(ehl(), IntegratorMethod::RosenbrockW);
+            let r = s.run_until(0.01, &mut NullSink, &mut |_| {}).unwrap();
+            black_box(r.steps)
+        })
+    });
     g.finish();
-    // one longer run for the headline figure
-    let mut s = sim(ehl());
+    // one longer run per method for the headline figure
+    for method in [IntegratorMethod::Dopri5, IntegratorMethod::RosenbrockW] {
+        headline(method);
+    }
+}
+
+fn headline(method: IntegratorMethod) {
+    let mut s = sim_with(ehl(), method);
     let r = s.run_until(0.04, &mut NullSink, &mut |_| {}).unwrap();
     println!(
-        "2002834 6371 rpm, 0.04 s simulated: wall {:.2} s → simulated/wall = {:.3}; {} steps ({} rejected), {} RHS, mean step {:.2} µs, most limiting: {:?}",
+        "{method:?}: 2002834 6371 rpm, 0.04 s simulated: wall {:.2} s → simulated/wall = {:.3}; {} steps ({} rejected), {} RHS, {} Jacobians, mean step {:.2} µs, most limiting: {:?}",
         r.wall_time_s,
         r.simulated_time_s / r.wall_time_s,
         r.steps,
         r.rejected_steps,
         r.rhs_evaluations,
+        s.stats().jacobian_evaluations,
         1e6 * r.simulated_time_s / r.steps as f64,
         s.most_limiting_component()
     );

@@ -1,8 +1,8 @@
 //! Release-mode timing harness: 2002834 (18 rollers × 10 slices, PAO VG 320 Muraki traction,
 //! 500 N, cage drag 6.62e-4 N·m·s) at 6371 rpm.
 //!
-//! `cargo run --release -p rolldyn-dynamics --example speed -- [duration_s] [tolerance] [tilt_limit_rad] [pi_beta] [safety]`
-//! prints wall time, simulated/wall, step statistics and the run summary.
+//! `cargo run --release -p rolldyn-dynamics --example speed -- [duration_s] [tolerance] [tilt_limit_rad] [pi_beta] [safety] [dopri5|rosw] [jacobian_interval]`
+//! prints wall time, simulated/wall, step statistics and the run summary (`-` keeps a default).
 
 use rolldyn_dynamics::*;
 use rolldyn_lubrication::{TractionModel, lubricant_by_name};
@@ -34,6 +34,12 @@ fn main() {
     }
     if let Some(sf) = args.get(5).and_then(|s| s.parse().ok()) {
         set.integrator.safety = sf;
+    }
+    if args.get(6).map(String::as_str) == Some("rosw") {
+        set.integrator.method = IntegratorMethod::RosenbrockW;
+    }
+    if let Some(n) = args.get(7).and_then(|s| s.parse().ok()) {
+        set.integrator.jacobian_interval = n;
     }
     let traction =
         TractionModel::muraki(lubricant_by_name("pao1-vg320").expect("oil")).expect("muraki");
@@ -69,12 +75,14 @@ fn main() {
     match r {
         Ok(r) => {
             println!(
-                "tol {tol:e} dur {dur}: wall {:.3} s → simulated/wall {:.4}; {} steps ({} rejected), {} RHS, mean step {:.2} µs, RHS/step {:.2}, limiting {:?}",
+                "{:?} tol {tol:e} dur {dur}: wall {:.3} s → simulated/wall {:.4}; {} steps ({} rejected), {} RHS, {} Jacobians, mean step {:.2} µs, RHS/step {:.2}, limiting {:?}",
+                set.integrator.method,
                 r.wall_time_s,
                 r.simulated_time_s / r.wall_time_s,
                 r.steps,
                 r.rejected_steps,
                 r.rhs_evaluations,
+                s.stats().jacobian_evaluations,
                 1e6 * r.simulated_time_s / r.steps as f64,
                 r.rhs_evaluations as f64 / r.steps as f64,
                 s.most_limiting_component()

@@ -4,8 +4,8 @@
 
 use crate::error::DynError;
 
-/// Format tag.
-pub(crate) const MAGIC: &[u8; 8] = b"RDYNCK01";
+/// Format tag (02: integrator method tag and Rosenbrock-W state).
+pub(crate) const MAGIC: &[u8; 8] = b"RDYNCK02";
 
 /// Appends values to a byte buffer.
 #[derive(Debug, Default)]

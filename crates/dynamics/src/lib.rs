@@ -58,7 +58,7 @@
 //! Component `i` of the state is accepted with `|e_i| ≤ τ (s_i + ρ_i |y_i|)`: lengths
 //! `s = 1 mm` (1 nm at τ = 10⁻⁶), angles `1 mm/R` (roller axis: `1 mm/(L/2)`), velocities
 //! `s = v_ref = max(|ω_i| R_i, |ω_o| R_o, 1 m/s)` with `ρ = 1`, angular momenta
-//! `I_a v_ref/R`. See `INTEGRATOR.md` for the integrator choice.
+//! `I_a v_ref/R`. See `docs/dynamics-integrator.md` for the integrator choice.
 //!
 //! ## Not in this crate (yet)
 //! Roller ends ↔ ribs and cage pocket faces, hydrodynamic cage land (plug in through
@@ -78,6 +78,7 @@ mod rhs;
 pub mod rosenbrock;
 pub mod settings;
 mod simulation;
+mod stepper;
 pub mod study;
 mod summary;
 mod vec3;

@@ -19,7 +19,10 @@
 //!   component `k` of *all* rollers at once gives column `k` of every roller block in one
 //!   evaluation (12 evaluations for all rollers, 13 for the cage, 6 for the inner ring).
 //! * `A` is **reused** for [`crate::IntegratorSettings::jacobian_interval`] accepted steps and
-//!   refreshed after a rejected step (unless it is already fresh), the usual W-method strategy.
+//!   optionally refreshed after a rejected step (unless it is already fresh; off by default —
+//!   measured in `docs/dynamics-integrator.md`, most rejections here come from contact
+//!   switching, which a Jacobian at the old state does not help). A non-finite trial always
+//!   forces a new Jacobian unless it is fresh.
 //!   Time dependence of `f` (speed ramps, rotating loads) enters only through the stage times:
 //!   the autonomised system is integrated with an approximate Jacobian whose time column is
 //!   zero, which a W-method allows without loss of order.
@@ -35,6 +38,9 @@
 //! & Wanner, *Solving ODEs I*, §II.6, eq. (6.7)), third order like the method.
 //!
 //! Every buffer is allocated once; a step allocates nothing and is bit-for-bit deterministic.
+
+// coefficients quoted with the digits of the publication; index loops mirror the formulas
+#![allow(clippy::excessive_precision, clippy::needless_range_loop)]
 
 use crate::integrator::{OdeSystem, StepError, StepStats};
 use crate::settings::IntegratorSettings;
@@ -544,7 +550,7 @@ impl RosenbrockW {
             self.last_rejected = true;
             let fac = (set.safety * err.powf(-1.0 / 3.0)).clamp(set.min_shrink, 1.0);
             self.h = h * fac;
-            if self.jac_age > 0 {
+            if self.jac_age > 0 && set.refresh_jacobian_on_reject {
                 self.jac_valid = false;
             }
             if self.h < set.min_step_s {
@@ -559,11 +565,7 @@ impl RosenbrockW {
     /// Dense output at `t` inside the last accepted step (cubic Hermite), written to `out`.
     pub fn interpolate(&self, t: f64, out: &mut [f64]) {
         let h = self.dense_h;
-        let th = if h > 0.0 {
-            (t - self.dense_t) / h
-        } else {
-            1.0
-        };
+        let th = if h > 0.0 { (t - self.dense_t) / h } else { 1.0 };
         let th1 = th - 1.0;
         for (i, o) in out.iter_mut().enumerate() {
             let (y0, y1) = (self.dense_y0[i], self.y[i]);
@@ -621,7 +623,9 @@ mod tests {
         while ig.t < t_end - 1e-12 {
             ig.step(&mut p, &set).unwrap();
         }
-        (ig.y[0] - ig.t.cos()).abs().max((ig.y[1] - ig.t.sin()).abs())
+        (ig.y[0] - ig.t.cos())
+            .abs()
+            .max((ig.y[1] - ig.t.sin()).abs())
     }
 
     #[test]
@@ -633,7 +637,9 @@ mod tests {
             let e1 = fixed_step_error(0.05, &groups, 1.0, interval);
             let e2 = fixed_step_error(0.025, &groups, 1.0, interval);
             let order = (e1 / e2).log2();
-            assert!(order > 2.7 && order < 3.6, "observed order {order}");
+            // ≥ 3 (a stale Jacobian refreshed at different points for the two step sizes can
+            // make the error constants differ, hence the loose upper bound)
+            assert!(order > 2.7 && order < 4.5, "observed order {order}");
         }
     }
 

@@ -9,6 +9,7 @@ use crate::initial::{
 use crate::integrator::{Dopri5, OdeSystem, StepError, StepStats};
 use crate::land::CageLandModel;
 use crate::layout::Layout;
+use crate::layout::{CAGE_DOF, INNER_DOF, ROLLER_DOF};
 use crate::model::{Model, RacewayTraction};
 use crate::output::{
     ContactSnapshot, OutputSink, RevolutionSummary, RollerSnapshot, RunSummary, Snapshot,
@@ -16,7 +17,10 @@ use crate::output::{
 };
 use crate::parameters::ContactParameters;
 use crate::rhs::{Diagnostics, axisymmetric_omega, rhs};
+use crate::rosenbrock::{JacobianBlock, RosenbrockW};
 use crate::settings::DynamicsSettings;
+use crate::settings::IntegratorMethod;
+use crate::stepper::Stepper;
 use crate::summary::{StepValues, Window};
 use crate::vec3::{V3, dot, unit_or};
 use rolldyn_geometry::CylindricalRollerBearing;
@@ -74,7 +78,7 @@ struct Tracker {
 pub struct Simulation {
     model: Model,
     settings: DynamicsSettings,
-    ig: Dopri5,
+    ig: Stepper,
     diag: Diagnostics,
     snap: SnapshotBuffers,
     scratch_y: Vec<f64>,
@@ -134,7 +138,7 @@ impl Simulation {
     /// crate). The default is [`crate::TwoLevelLand`] with `ContactParameters::cage_land`.
     pub fn set_cage_land_model(&mut self, model: Box<dyn CageLandModel>) {
         self.model.land_model = model;
-        self.ig.k1_valid = false;
+        self.ig.invalidate();
     }
 
     fn from_model(
@@ -172,7 +176,40 @@ impl Simulation {
         }
         let y = pack_state(&model, init)?;
         let (scale, relative) = error_scales(&model);
-        let ig = Dopri5::new(0.0, y, scale, relative, set.initial_step_s);
+        let ig = match set.method {
+            IntegratorMethod::Dopri5 => {
+                Stepper::Dopri5(Dopri5::new(0.0, y, scale, relative, set.initial_step_s))
+            }
+            IntegratorMethod::RosenbrockW => {
+                // one block per body; rollers form one colour group (a roller's derivative
+                // depends on no other roller's state), cage and inner ring one group each
+                let rollers = (0..model.z)
+                    .map(|j| JacobianBlock {
+                        start: lay.roller(j),
+                        n: ROLLER_DOF,
+                    })
+                    .collect();
+                let groups = [
+                    rollers,
+                    vec![JacobianBlock {
+                        start: lay.cage(),
+                        n: CAGE_DOF,
+                    }],
+                    vec![JacobianBlock {
+                        start: lay.inner(),
+                        n: INNER_DOF,
+                    }],
+                ];
+                Stepper::RosenbrockW(RosenbrockW::new(
+                    0.0,
+                    y,
+                    scale,
+                    relative,
+                    set.initial_step_s,
+                    &groups,
+                ))
+            }
+        };
         let z = model.z;
         let fingerprint = fingerprint(&model);
         let mut sim = Self {
@@ -199,10 +236,10 @@ impl Simulation {
             fingerprint,
         };
         let ci = lay.cage();
-        let c = [sim.ig.y[ci], sim.ig.y[ci + 1]];
+        let c = [sim.ig.y()[ci], sim.ig.y()[ci + 1]];
         sim.tr.orbit_raw = c[1].atan2(c[0]);
         sim.tr.orbit = sim.tr.orbit_raw;
-        let phi = sim.ig.y[ci + 3];
+        let phi = sim.ig.y()[ci + 3];
         sim.tr.rev_angle0 = phi;
         sim.tr.rev = Window::start(0.0, phi, sim.tr.orbit);
         sim.tr.run = sim.tr.rev;
@@ -212,12 +249,12 @@ impl Simulation {
 
     /// Current simulated time, s.
     pub fn time(&self) -> f64 {
-        self.ig.t
+        self.ig.t()
     }
 
     /// Current state vector (layout in [`Layout`]).
     pub fn state(&self) -> &[f64] {
-        &self.ig.y
+        self.ig.y()
     }
 
     /// State-vector layout.
@@ -227,13 +264,13 @@ impl Simulation {
 
     /// Step statistics so far.
     pub fn stats(&self) -> &StepStats {
-        &self.ig.stats
+        self.ig.stats()
     }
 
     /// Name of the state component that limited the step most often, if any.
     pub fn most_limiting_component(&self) -> Option<String> {
         self.ig
-            .stats
+            .stats()
             .most_limiting()
             .map(|i| self.model.layout.describe(i))
     }
@@ -253,17 +290,17 @@ impl Simulation {
     /// of the raceway, bar and (default-model) land contacts, potential of the fixed loads and
     /// gravity. Conserved by a frictionless, undamped run with fixed loads.
     pub fn mechanical_energy(&mut self) -> f64 {
-        energy(&self.model, self.ig.t, &self.ig.y)
+        energy(&self.model, self.ig.t(), self.ig.y())
     }
 
     /// Current cage speed, rad/s.
     pub fn cage_speed(&self) -> f64 {
-        cage_speed(&self.model, &self.ig.y)
+        cage_speed(&self.model, self.ig.y())
     }
 
     /// Epicyclic cage speed at the current time, rad/s.
     pub fn epicyclic_cage_speed(&self) -> f64 {
-        let t = self.ig.t;
+        let t = self.ig.t();
         let c = &self.model.conditions;
         self.model
             .epicyclic(c.inner_speed.speed(t), c.outer_speed.speed(t))
@@ -298,15 +335,14 @@ impl Simulation {
         let mut steps: u64 = 0;
         // samples still inside the last accepted step (after a resume or a previous call)
         self.emit_samples(t_end, sink);
-        while self.ig.t < t_end {
+        while self.ig.t() < t_end {
             if steps >= self.settings.integrator.max_steps {
                 return Err(DynError::StepBudgetExhausted {
-                    time_s: self.ig.t,
+                    time_s: self.ig.t(),
                     steps,
                 });
             }
-            let t_before = self.ig.t;
-            let h_before = self.ig.h;
+            let t_before = self.ig.t();
             {
                 let mut sys = Sys {
                     model: &self.model,
@@ -330,38 +366,37 @@ impl Simulation {
             steps += 1;
             if let Some(v) = self.diag.violation {
                 return Err(DynError::Divergence {
-                    time_s: self.ig.t,
+                    time_s: self.ig.t(),
                     body: format!("roller {} / {}", v.index, v.what),
                     detail: format!(
                         "penetration {:.3} mm exceeds the divergence limit",
                         v.penetration * 1e3
                     ),
-                    step_s: self.ig.t - t_before,
+                    step_s: self.ig.t() - t_before,
                 });
             }
-            let _ = h_before;
             let lay = self.model.layout;
             for j in 0..self.model.z {
                 let b = lay.roller(j);
-                let y = &self.ig.y;
+                let y = self.ig.y();
                 let tilt = (y[b + 3] * y[b + 3] + y[b + 4] * y[b + 4])
                     .sqrt()
                     .atan2(y[b + 5]);
                 if tilt > self.settings.divergence_tilt_rad {
                     return Err(DynError::Divergence {
-                        time_s: self.ig.t,
+                        time_s: self.ig.t(),
                         body: format!("roller {j} attitude"),
                         detail: format!(
                             "axis tilted (skew + pitch) by {:.4} rad — no roller-end/rib or pocket-face contact bounds roller skew in this version",
                             tilt
                         ),
-                        step_s: self.ig.t - t_before,
+                        step_s: self.ig.t() - t_before,
                     });
                 }
             }
-            self.after_step(self.ig.t - t_before, sink);
+            self.after_step(self.ig.t() - t_before, sink);
             self.emit_samples(t_end, sink);
-            progress(self.ig.t);
+            progress(self.ig.t());
         }
         Ok(())
     }
@@ -370,7 +405,7 @@ impl Simulation {
     fn step_values(&self) -> StepValues {
         let d = &self.diag;
         let m = &self.model;
-        let w = cage_speed(m, &self.ig.y);
+        let w = cage_speed(m, self.ig.y());
         let w0 = m.epicyclic(d.inner_speed, d.outer_speed);
         let max_fi = d.inner.force.iter().fold(0.0_f64, |a, &b| a.max(b));
         let thresh = self.settings.slip_load_fraction * max_fi;
@@ -405,7 +440,7 @@ impl Simulation {
         let v = self.step_values();
         let lay = self.model.layout;
         let ci = lay.cage();
-        let y = &self.ig.y;
+        let y = self.ig.y();
         // unwrap the cage-centre orbit angle
         let raw = y[ci + 1].atan2(y[ci]);
         let mut d = raw - self.tr.orbit_raw;
@@ -441,7 +476,7 @@ impl Simulation {
     }
 
     fn finish_revolution(&mut self, phi: f64, sink: &mut dyn OutputSink) {
-        let t = self.ig.t;
+        let t = self.ig.t();
         self.tr.revolutions += 1;
         let w = self.tr.rev;
         let margin = self.scuffing_margin(&w);
@@ -491,7 +526,7 @@ impl Simulation {
         }
         loop {
             let ts = self.tr.next_sample as f64 * dt;
-            if ts > self.ig.t || ts > t_end || ts < self.ig.dense_start() - 1e-15 {
+            if ts > self.ig.t() || ts > t_end || ts < self.ig.dense_start() - 1e-15 {
                 if ts < self.ig.dense_start() - 1e-15 {
                     // sample time before the available dense output (cannot happen in a
                     // continuous run); skip it
@@ -500,10 +535,10 @@ impl Simulation {
                 }
                 return;
             }
-            if self.ig.dense_h > 0.0 {
+            if self.ig.has_dense() {
                 self.ig.interpolate(ts, &mut self.scratch_y);
             } else {
-                self.scratch_y.copy_from_slice(&self.ig.y);
+                self.scratch_y.copy_from_slice(self.ig.y());
             }
             rhs(
                 &self.model,
@@ -580,15 +615,15 @@ impl Simulation {
     /// Evaluates the right-hand side `f(t, y)` at the current state into `dy` (benchmarks and
     /// diagnostics; `dy.len()` must equal the state length).
     pub fn evaluate_derivative(&mut self, dy: &mut [f64]) {
-        if dy.len() == self.ig.y.len() {
-            rhs(&self.model, self.ig.t, &self.ig.y, dy, &mut self.diag);
+        if dy.len() == self.ig.y().len() {
+            rhs(&self.model, self.ig.t(), self.ig.y(), dy, &mut self.diag);
         }
     }
 
     /// Sends a sample of the current state to `sink` (outside the fixed output grid).
     pub fn sample_now(&mut self, sink: &mut dyn OutputSink) {
-        let t = self.ig.t;
-        self.scratch_y.copy_from_slice(&self.ig.y);
+        let t = self.ig.t();
+        self.scratch_y.copy_from_slice(self.ig.y());
         rhs(
             &self.model,
             t,
@@ -604,12 +639,12 @@ impl Simulation {
     pub fn summary(&self) -> RunSummary {
         let w = &self.tr.run;
         let ci = self.model.layout.cage();
-        let phi = self.ig.y[ci + 3];
+        let phi = self.ig.y()[ci + 3];
         let mut margin = w.min_margin;
         if !margin.is_finite() && self.tr.revolutions == 0 {
             margin = self.scuffing_margin(w);
         }
-        let st = &self.ig.stats;
+        let st = &self.ig.stats();
         RunSummary {
             cage_slip_mean: w.mean_slip(),
             cage_speed_mean_rad_s: w.mean_speed(),
@@ -622,7 +657,7 @@ impl Simulation {
             max_relative_slip: w.max_srr,
             min_scuffing_margin: margin,
             whirl_ratio: w.whirl(phi, self.tr.orbit),
-            simulated_time_s: self.ig.t,
+            simulated_time_s: self.ig.t(),
             wall_time_s: self.tr.wall,
             steps: st.accepted,
             rejected_steps: st.rejected,
@@ -636,26 +671,7 @@ impl Simulation {
         let mut w = Writer::default();
         w.buf.extend_from_slice(MAGIC);
         w.u64(self.fingerprint);
-        let ig = &self.ig;
-        w.f64(ig.t);
-        w.f64(ig.h);
-        w.f64(ig.err_old);
-        w.u64(u64::from(ig.last_rejected));
-        w.u64(u64::from(ig.k1_valid));
-        w.slice(&ig.y);
-        w.slice(&ig.k[0]);
-        w.f64(ig.dense_t);
-        w.f64(ig.dense_h);
-        for d in ig.dense_parts() {
-            w.slice(d);
-        }
-        w.u64(ig.stats.accepted);
-        w.u64(ig.stats.rejected);
-        w.u64(ig.stats.rhs_evaluations);
-        w.u64(ig.stats.limiting.len() as u64);
-        for &c in &ig.stats.limiting {
-            w.u64(c);
-        }
+        self.ig.save(&mut w);
         let tr = &self.tr;
         w.u64(tr.revolutions);
         w.f64(tr.rev_angle0);
@@ -681,29 +697,7 @@ impl Simulation {
                 "the checkpoint belongs to a different bearing model or contact set-up".into(),
             ));
         }
-        let mut ig = self.ig.clone();
-        ig.t = r.f64()?;
-        ig.h = r.f64()?;
-        ig.err_old = r.f64()?;
-        ig.last_rejected = r.u64()? != 0;
-        ig.k1_valid = r.u64()? != 0;
-        r.slice_into(&mut ig.y)?;
-        r.slice_into(&mut ig.k[0])?;
-        ig.dense_t = r.f64()?;
-        ig.dense_h = r.f64()?;
-        for d in ig.dense_parts_mut().iter_mut() {
-            r.slice_into(d)?;
-        }
-        ig.stats.accepted = r.u64()?;
-        ig.stats.rejected = r.u64()?;
-        ig.stats.rhs_evaluations = r.u64()?;
-        let n = r.u64()? as usize;
-        if n != ig.stats.limiting.len() {
-            return Err(DynError::Checkpoint("state dimension differs".into()));
-        }
-        for c in ig.stats.limiting.iter_mut() {
-            *c = r.u64()?;
-        }
+        let ig = self.ig.load(&mut r)?;
         let mut tr = self.tr;
         tr.revolutions = r.u64()?;
         tr.rev_angle0 = r.f64()?;

@@ -6,7 +6,7 @@
 //! Checked: mean cage speed, mean cage slip (relative to its own size, floor 1e-4 absolute),
 //! largest inner and outer raceway forces. Not checked to 1 %: maxima of impact forces (roller ↔
 //! cage bar, cage ↔ land) in the start transient — the impact sequence is chaotic and its peak
-//! values move by a few per cent with the tolerance (INTEGRATOR.md, tolerance scan).
+//! values move by a few per cent with the tolerance (docs/dynamics-integrator.md, tolerance scan).
 
 mod common;
 use common::*;

@@ -5,7 +5,7 @@
 //! last period (`StudyPoint::cage_slip`).
 //!
 //! NOT checked here: the seed's trend "slip falls with load" — two periods are inside the start
-//! transient, and the full study (INTEGRATOR.md, "V-06") gives a load-independent slip of
+//! transient, and the full study (docs/dynamics-integrator.md, "V-06") gives a load-independent slip of
 //! ≈ −0.4 % instead of the seed's few per cent falling with load. What is checked: the study
 //! runs, uses the Table 2.4 temperature, measures over whole periods, |slip| < 1 % and the
 //! relative slip of the loaded rollers stays below 5 %.

@@ -7,7 +7,7 @@
 //! bound `p/h = 0.125/2.5 = 0.05 rad` plus the bar deflection (≤ 0.06 rad); roller radii within
 //! the raceway annulus ± 0.1 mm; cage centre within its land clearance + 0.1 mm; run-summary
 //! forces finite and below 10 kN (static maximum ≈ 200 N at 500 N radial load).
-//! The ≥ 0.2 s run is recorded in INTEGRATOR.md (release harness `examples/speed.rs`).
+//! The ≥ 0.2 s run is recorded in docs/dynamics-integrator.md (release harness `examples/speed.rs`).
 
 mod common;
 use common::*;
