@@ -225,3 +225,150 @@ mod tests {
         }
     }
 }
+
+/// Finite-length journal-bearing land model (SPEC §8.6): the Reynolds crate's fast
+/// [`rolldyn_reynolds::cage_land::CageLand`] — short-bearing theory corrected by a table of the
+/// finite Reynolds solver (force within 0.4 %, torque within 0.1 % of the full solver). The
+/// table is built for the land geometry at the first evaluation (≈ 0.3 s) and rebuilt only if
+/// the operating geometry changes. Beyond the film capacity at `max_eccentricity_ratio` the
+/// excess pressing force is carried by asperity contact as in [`ShortBearing`].
+#[derive(Debug)]
+pub struct FiniteLand {
+    /// Largest eccentricity ratio of the film (default 0.98).
+    pub max_eccentricity_ratio: f64,
+    /// Friction coefficient of the excess load (default 0.1, as [`ShortBearing`]).
+    pub boundary_friction: f64,
+    /// Inner-ring land (cage bore on the land) or outer-ring land.
+    pub inner_land: bool,
+    table: std::sync::Mutex<Option<([f64; 3], rolldyn_reynolds::cage_land::CageLand)>>,
+}
+
+impl FiniteLand {
+    /// A land model for a cage guided on the inner (`inner_land`) or outer ring.
+    pub fn new(inner_land: bool) -> Self {
+        Self {
+            max_eccentricity_ratio: 0.98,
+            boundary_friction: 0.1,
+            inner_land,
+            table: std::sync::Mutex::new(None),
+        }
+    }
+
+    /// Runs `f` with the land table of this geometry (built once per geometry).
+    fn with_land<R>(
+        &self,
+        geometry: [f64; 3],
+        f: impl FnOnce(&rolldyn_reynolds::cage_land::CageLand) -> R,
+    ) -> Option<R> {
+        use rolldyn_reynolds::cage_land::{
+            CageLand, CageLandGeometry, CageLandOptions, LandPosition,
+        };
+        let mut guard = self.table.lock().ok()?;
+        let same = |a: &[f64; 3]| {
+            a.iter()
+                .zip(&geometry)
+                .all(|(x, y)| (x - y).abs() <= 1e-9 * y.abs())
+        };
+        if !guard.as_ref().is_some_and(|(g, _)| same(g)) {
+            let geom = CageLandGeometry {
+                radius: geometry[0],
+                width: geometry[1],
+                clearance: geometry[2],
+                position: if self.inner_land {
+                    LandPosition::InnerRing
+                } else {
+                    LandPosition::OuterRing
+                },
+            };
+            let options = CageLandOptions {
+                max_eccentricity: self.max_eccentricity_ratio,
+                ..CageLandOptions::default()
+            };
+            *guard = Some((geometry, CageLand::new(geom, &options).ok()?));
+        }
+        guard.as_ref().map(|(_, land)| f(land))
+    }
+}
+
+impl CageLandModel for FiniteLand {
+    fn name(&self) -> &'static str {
+        "finite journal bearing (Reynolds crate table)"
+    }
+
+    fn evaluate(&self, inp: &CageLandInput) -> CageLandOutput {
+        let geometry = [inp.land_radius_m, inp.rail_width_m, inp.radial_clearance_m];
+        self.with_land(geometry, |land| self.evaluate_with(land, inp))
+            .unwrap_or_else(|| ShortBearing::default().evaluate(inp))
+    }
+}
+
+impl FiniteLand {
+    fn evaluate_with(
+        &self,
+        land: &rolldyn_reynolds::cage_land::CageLand,
+        inp: &CageLandInput,
+    ) -> CageLandOutput {
+        let (c, r, eta) = (
+            inp.radial_clearance_m,
+            inp.land_radius_m,
+            inp.viscosity_pa_s,
+        );
+        let rails = inp.rails.max(1) as f64;
+        if !(eta > 0.0) {
+            return CageLandOutput::default();
+        }
+        // In the frame of the load direction the film sees the cage and land speeds relative to it.
+        let (wc, wl) = (
+            inp.cage_speed_rad_s - inp.load_speed_rad_s,
+            inp.land_speed_rad_s - inp.load_speed_rad_s,
+        );
+        let at = |eps: f64| land.evaluate([eps * c, 0.0], [0.0, 0.0], wc, wl, eta);
+        let capacity = |eps: f64| {
+            let f = at(eps).force_n;
+            rails * f[0].hypot(f[1])
+        };
+        let kc = inp.cage_mass_kg * c * inp.cage_speed_rad_s * inp.cage_speed_rad_s;
+        let f_ext = inp.roller_force_n.max(0.0);
+        let g = |e: f64| capacity(e) - kc * e - f_ext;
+        let e_max = self.max_eccentricity_ratio;
+        let (eps, saturated) = if f_ext == 0.0 && g(1e-3) >= 0.0 {
+            (0.0, false)
+        } else if g(e_max) <= 0.0 {
+            (e_max, true)
+        } else {
+            // g(0) = −F_ext ≤ 0 < g(e_max): bisection, 50 halvings (the table is smooth in ε).
+            let (mut a, mut b) = (0.0, e_max);
+            for _ in 0..50 {
+                let m = 0.5 * (a + b);
+                if g(m) > 0.0 {
+                    b = m;
+                } else {
+                    a = m;
+                }
+            }
+            (0.5 * (a + b), false)
+        };
+        let dw = inp.cage_speed_rad_s - inp.land_speed_rad_s;
+        let pressing = f_ext + kc * eps;
+        let excess = if saturated {
+            (pressing - capacity(eps)).max(0.0)
+        } else {
+            0.0
+        };
+        let sign = rolldyn_lubrication::traction::regularisation(dw * r, 1e-3);
+        let torque = rails * at(eps).torque_nm - sign * self.boundary_friction * excess * r;
+        CageLandOutput {
+            torque_on_cage_n_m: torque,
+            pressing_force_n: pressing,
+            eccentricity_ratio: eps,
+            min_film_m: c * (1.0 - eps),
+            friction_coefficient: if pressing > 0.0 {
+                torque.abs() / (r * pressing)
+            } else {
+                0.0
+            },
+            power_w: (torque * dw).abs(),
+            saturated,
+        }
+    }
+}

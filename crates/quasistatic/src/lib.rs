@@ -53,7 +53,7 @@ pub mod solver;
 pub mod studies;
 pub mod sweep;
 
-pub use cage_land::{CageLandInput, CageLandModel, CageLandOutput, ShortBearing};
+pub use cage_land::{CageLandInput, CageLandModel, CageLandOutput, FiniteLand, ShortBearing};
 pub use conditions::{
     BarFriction, CageLandInputs, ContactTemperatures, DragCoefficient, DragInputs, EndFriction,
     FrictionModel, MixtureDensity, Mounting, OperatingConditions, PartMaterial, PartTemperatures,

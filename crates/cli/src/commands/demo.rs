@@ -77,8 +77,17 @@ pub fn run(args: Args) -> Result<(), Failure> {
         mixed: None,
         film: rolldyn_lubrication::FilmFormula::Auto,
     };
-    let skid = rolldyn_quasistatic::solve(bearing, &qs_conditions, &QuasiStaticOptions::default())
-        .map_err(|e| Failure::Run(format!("quasi-static model: {e}")))?;
+    let inner_land = bearing
+        .cage
+        .as_ref()
+        .is_some_and(|c| c.guidance == rolldyn_geometry::CageGuidance::InnerLand);
+    let skid = rolldyn_quasistatic::solve_with_land_model(
+        bearing,
+        &qs_conditions,
+        &QuasiStaticOptions::default(),
+        &rolldyn_quasistatic::FiniteLand::new(inner_land),
+    )
+    .map_err(|e| Failure::Run(format!("quasi-static model: {e}")))?;
     if !args.json {
         println!(
             "\nQuasi-static skidding at {:.0} rpm, {:.0} N, oil {:.0} °C:",

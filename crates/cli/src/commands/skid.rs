@@ -7,8 +7,11 @@ use rolldyn_geometry::BearingModel;
 use rolldyn_lubrication::{FilmFormula, MurakiSettings};
 use rolldyn_model::Model;
 use rolldyn_plot::{Labels, Series, line_plot};
-use rolldyn_quasistatic::sweep::{SweepVariable, sweep};
-use rolldyn_quasistatic::{FrictionModel, OperatingConditions, QuasiStaticOptions, SkidResult};
+use rolldyn_quasistatic::sweep::{SweepPoint, SweepVariable, apply};
+use rolldyn_quasistatic::{
+    CageLandModel, FiniteLand, FrictionModel, OperatingConditions, QuasiStaticOptions,
+    ShortBearing, SkidResult,
+};
 use rolldyn_units::{AngularSpeed, Force, Quantity, QuantityRange, Temperature};
 use serde::Serialize;
 use std::path::PathBuf;
@@ -19,6 +22,14 @@ pub enum FrictionName {
     Muraki,
     /// Asperity fraction + film shear + flash temperature (seed 001).
     Seed001,
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum LandName {
+    /// Finite journal bearing (Reynolds crate table, SPEC §8.6).
+    Finite,
+    /// Short (Ocvirk) journal bearing.
+    Short,
 }
 
 #[derive(clap::Args)]
@@ -41,6 +52,9 @@ pub struct Args {
     pub temperatures: Option<Vec<(String, f64)>>,
     #[arg(long, value_enum, default_value = "muraki")]
     pub friction: FrictionName,
+    /// Cage–guiding-land model.
+    #[arg(long, value_enum, default_value = "finite")]
+    pub cage_land: LandName,
     #[arg(long)]
     pub json: bool,
     /// Folder for the sweep table (CSV) and plot (SVG).
@@ -158,6 +172,17 @@ pub fn run(args: Args) -> Result<(), Failure> {
     };
     let base = conditions(&args, &model)?;
     let options = QuasiStaticOptions::default();
+    let land: Box<dyn CageLandModel> = match args.cage_land {
+        LandName::Finite => {
+            Box::new(FiniteLand::new(bearing.cage.as_ref().is_some_and(|c| {
+                c.guidance == rolldyn_geometry::CageGuidance::InnerLand
+            })))
+        }
+        LandName::Short => Box::new(ShortBearing::default()),
+    };
+    let solve = |c: &OperatingConditions, o: &QuasiStaticOptions| {
+        rolldyn_quasistatic::solve_with_land_model(bearing, c, o, land.as_ref())
+    };
     let swept: Vec<(SweepVariable, &str, &str, Vec<f64>)> = [
         (
             SweepVariable::InnerSpeed,
@@ -203,7 +228,18 @@ pub fn run(args: Args) -> Result<(), Failure> {
             }
         }
         [(variable, key, label, values)] => {
-            let points = sweep(bearing, &base, &options, *variable, values);
+            // Each point starts from the previous point's cage slip (as `sweep::sweep` does).
+            let mut warm = options.clone();
+            let points: Vec<SweepPoint> = values
+                .iter()
+                .map(|&value| {
+                    let result = solve(&apply(&base, *variable, value), &warm);
+                    if let Ok(r) = &result {
+                        warm.initial_cage_slip = r.cage_slip;
+                    }
+                    SweepPoint { value, result }
+                })
+                .collect();
             if let Some(Err(e)) = points
                 .iter()
                 .map(|p| &p.result)
