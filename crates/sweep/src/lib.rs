@@ -1,0 +1,28 @@
+//! Parameter sweeps: a table of variants of one model, each overriding any model-file keys,
+//! run in parallel, one summary row per variant.
+//!
+//! A sweep file (TOML) names the base model (relative to the sweep file), the analysis and its
+//! settings, and the variants:
+//!
+//! ```toml
+//! model = "../2002834.toml"
+//! analysis = "simulate"          # or "skid"
+//! duration = "5rev"              # simulate only
+//!
+//! [[variant]]
+//! name = "11"
+//! "clearance.radial" = "0 mm"
+//! "misalignment.inner_ring" = "4 arcmin"
+//! ```
+//!
+//! Running a sweep ([`run`]) writes `variants/<name>.json` for every finished variant (written
+//! to a temporary file and renamed, so an interrupted sweep loses only the variants in flight),
+//! skips finished variants with `resume`, runs every n-th variant with a shard `k/n`, and
+//! collects all finished variants into `summary.csv`, `summary.parquet` and one SVG per summary
+//! column ([`collect`]).
+
+mod file;
+mod run;
+
+pub use file::{Analysis, SweepError, SweepFile, Variant, apply_overrides};
+pub use run::{RunOptions, Shard, VariantOutcome, collect, run};
