@@ -152,8 +152,9 @@ pub enum InnerRingLoad {
 pub struct InnerRingSupport {
     /// Radial (x, y) translation free (default true: the centre trajectory is an output).
     pub radial_free: bool,
-    /// Axial translation free (default false: without the rib contacts of the next issue there
-    /// is no axial load path between the rings).
+    /// Axial translation free (default false). With the roller-end ↔ rib contacts (pair 56)
+    /// the ribs carry the axial load path between inner ring and rollers, so `true` is usable;
+    /// without ribs on the inner ring (or with them switched off) nothing holds the ring axially.
     pub axial_free: bool,
     /// Mass moved with the inner ring, kg (`None` → the ring's own mass; set the rotor share
     /// for a shaft-mounted ring).

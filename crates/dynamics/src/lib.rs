@@ -60,12 +60,20 @@
 //! `s = v_ref = max(|ω_i| R_i, |ω_o| R_o, 1 m/s)` with `ρ = 1`, angular momenta
 //! `I_a v_ref/R`. See `docs/dynamics-integrator.md` for the integrator choice.
 //!
+//! * *Roller ends*: each end disc against the rib faces of both rings (pair 56: flat, conical,
+//!   convex/concave toroidal faces, rim edge break, spherical or flat roller ends) and against
+//!   the axial faces of its cage pocket (pair 54): deepest point of the end disc inside the face
+//!   band, `K_p δⁿ + STEP(δ,0,0,d,C_h)δ̇`, boundary friction 0.065 / Kragelsky / EHL with the
+//!   SPEC §6.7 regime (module `ends`, [`RollerEndParameters`]). The ribs bound roller skew to
+//!   the rib clearance (2002834: ≈ 0.0046 rad instead of the cage-bar bound ≈ 0.05 rad).
+//!
 //! ## Not in this crate (yet)
-//! Roller ends ↔ ribs and cage pocket faces, hydrodynamic cage land (plug in through
-//! [`CageLandModel`]), free inner-ring tilt, tabulated clearance schedules — next issue.
+//! Hydrodynamic cage land (plug in through [`CageLandModel`]), free inner-ring tilt, tabulated
+//! clearance schedules, tabulated (FE) end–rib compliance curves — next issue.
 
 mod checkpoint;
 pub mod conditions;
+mod ends;
 mod error;
 mod initial;
 pub mod integrator;
@@ -87,6 +95,7 @@ pub use conditions::{
     CAGE_DRAG_2002834_100C, ContactTemperatures, InnerRingLoad, InnerRingSupport,
     OperatingConditions, SpeedLaw,
 };
+pub use ends::EndContactRegime;
 pub use error::DynError;
 pub use initial::{InitialState, RollerStart, StaticRoller, StaticSolution, pure_rolling_spin};
 pub use integrator::{Dopri5, OdeSystem, StepStats};
@@ -96,7 +105,9 @@ pub use model::RacewayTraction;
 pub use output::{
     ContactSnapshot, NullSink, OutputSink, RevolutionSummary, RollerSnapshot, RunSummary, Snapshot,
 };
-pub use parameters::{ContactParameters, PairParameters, RacewayParameters};
+pub use parameters::{
+    ContactParameters, EndFriction, PairParameters, RacewayParameters, RollerEndParameters,
+};
 pub use rhs::axisymmetric_omega;
 pub use rosenbrock::{JacobianBlock, RosenbrockW};
 pub use settings::{DynamicsSettings, IntegratorMethod, IntegratorSettings};

@@ -3,12 +3,15 @@
 //! operating conditions.
 
 use crate::conditions::OperatingConditions;
+use crate::ends::{EndGeometry, FaceGeometry};
 use crate::error::DynError;
 use crate::land::{CageLandModel, TwoLevelLand};
 use crate::layout::Layout;
 use crate::parameters::ContactParameters;
 use rolldyn_contact::damping::SliceDamping;
-use rolldyn_geometry::{CageGuidance, CylindricalRollerBearing, Profile};
+use rolldyn_geometry::{
+    CageGuidance, CylindricalRollerBearing, EndFace, Profile, RibFace, RibSide, Ring,
+};
 use rolldyn_lubrication::TractionModel;
 
 /// Traction models of the two raceways (the same model twice is the usual case).
@@ -60,6 +63,80 @@ pub(crate) struct LandGeometry {
     pub width: f64,
 }
 
+/// Roller-end contacts: end geometry, rib faces of both rings, cage pocket faces.
+#[derive(Debug, Clone)]
+pub(crate) struct EndContacts {
+    pub end: EndGeometry,
+    /// inner-ring rib faces (ring frame)
+    pub inner_ribs: Vec<FaceGeometry>,
+    /// outer-ring rib faces
+    pub outer_ribs: Vec<FaceGeometry>,
+    /// the two pocket faces of every pocket (cage frame)
+    pub pocket: [FaceGeometry; 2],
+    pub rib_damping: SliceDamping,
+    pub pocket_damping: SliceDamping,
+    /// EHL data of the end–rib pair: reduced radius (∞: flat–flat, no film model), m
+    pub rib_reduced_radius: f64,
+    pub rib_reduced_modulus: f64,
+    pub rib_roughness: [f64; 2],
+}
+
+/// Rib faces of a ring (SPEC §1.2): face position from the rib spacing (or roller length plus
+/// the roller–rib axial clearance), band from the raceway to the rim minus its edge break,
+/// crest of a convex torus at mid-height shifted by `crest_offset` toward the raceway.
+fn rib_faces(
+    ring: &Ring,
+    inner: bool,
+    raceway_radius: f64,
+    spacing: f64,
+) -> Result<Vec<FaceGeometry>, DynError> {
+    let mut out = Vec::with_capacity(ring.ribs.len());
+    for rib in &ring.ribs {
+        let side = match rib.side {
+            RibSide::Left => -1.0,
+            RibSide::Right => 1.0,
+        };
+        let rim = 0.5 * rib.diameter;
+        // σ = +1 when ρ grows away from the raceway (inner ring)
+        let sigma = if inner { 1.0 } else { -1.0 };
+        let (rho_lo, rho_hi) = if inner {
+            (raceway_radius, rim - rib.edge_break)
+        } else {
+            (rim + rib.edge_break, raceway_radius)
+        };
+        if rho_hi <= rho_lo {
+            return Err(DynError::InvalidInput(format!(
+                "rib rim Ø{:.3} mm leaves no face on the {} ring",
+                rib.diameter * 1e3,
+                if inner { "inner" } else { "outer" }
+            )));
+        }
+        let mid = 0.5 * (raceway_radius + rim);
+        let (rho_c, slope, curvature) = match rib.face {
+            RibFace::Flat => (mid, 0.0, 0.0),
+            // face inclined by α from the radial plane; positive α leans the face rim toward
+            // the roller
+            RibFace::Cone { angle } => (mid, sigma * angle.tan(), 0.0),
+            RibFace::ConvexTorus {
+                radius,
+                crest_offset,
+            } => (mid - sigma * crest_offset, 0.0, 1.0 / radius),
+            RibFace::ConcaveTorus { radius } => (mid, 0.0, -1.0 / radius),
+        };
+        out.push(FaceGeometry {
+            side,
+            zeta: 0.5 * side * spacing,
+            rho_lo,
+            rho_hi,
+            rho_edge: if inner { rho_hi } else { rho_lo },
+            rho_c,
+            slope,
+            curvature,
+        });
+    }
+    Ok(out)
+}
+
 /// Precomputed model.
 #[derive(Debug)]
 pub(crate) struct Model {
@@ -101,6 +178,8 @@ pub(crate) struct Model {
     pub gamma: f64,
     /// penetration reported as divergence, m
     pub div_limit: f64,
+    /// roller ends ↔ ribs and cage pocket faces
+    pub ends: EndContacts,
 }
 
 impl Model {
@@ -223,6 +302,75 @@ impl Model {
         let (s, c) = conditions.misalignment_azimuth_rad.sin_cos();
         let (sb, cb) = conditions.misalignment_rad.sin_cos();
         let axis_i = [sb * c, sb * s, cb];
+        // roller ends ↔ ribs and pocket faces (SPEC §1.2, §1.3, §3.3 pairs 56 and 54)
+        let spacing_of = |ring: &Ring| {
+            ring.rib_spacing
+                .unwrap_or(roller.length + bearing.roller_rib_axial_clearance().unwrap_or(0.0))
+        };
+        let end_radius = rw - roller.profile.drop(0.5 * roller.length) - roller.edge_break;
+        if end_radius <= 0.0 {
+            return Err(DynError::InvalidInput(
+                "roller end face: chamfer and edge break leave no flat end".into(),
+            ));
+        }
+        let sphere_curvature = match roller.end_face {
+            EndFace::Flat => 0.0,
+            EndFace::Sphere { radius } => 1.0 / radius,
+        };
+        let rib_curvature = bearing
+            .inner_ring
+            .ribs
+            .iter()
+            .chain(&bearing.outer_ring.ribs)
+            .map(|r| match r.face {
+                RibFace::ConvexTorus { radius, .. } => 1.0 / radius,
+                RibFace::ConcaveTorus { radius } => -1.0 / radius,
+                _ => 0.0,
+            })
+            .fold(0.0_f64, f64::max);
+        let sum_curvature = sphere_curvature + rib_curvature;
+        let pocket_band = (0.5 * cage.inner_diameter, 0.5 * cage.outer_diameter);
+        let pocket_face = |side: f64| FaceGeometry {
+            side,
+            zeta: 0.5 * side * cage.pocket_axial,
+            rho_lo: pocket_band.0,
+            rho_hi: pocket_band.1,
+            rho_edge: pocket_band.1,
+            rho_c: 0.5 * (pocket_band.0 + pocket_band.1),
+            slope: 0.0,
+            curvature: 0.0,
+        };
+        let pe = &params.roller_end_rib.contact;
+        let pc = &params.roller_end_cage.contact;
+        let ends = EndContacts {
+            end: EndGeometry {
+                half_length: 0.5 * roller.length,
+                radius: end_radius,
+                sphere_curvature,
+            },
+            inner_ribs: rib_faces(
+                &bearing.inner_ring,
+                true,
+                ri,
+                spacing_of(&bearing.inner_ring),
+            )?,
+            outer_ribs: rib_faces(
+                &bearing.outer_ring,
+                false,
+                ro,
+                spacing_of(&bearing.outer_ring),
+            )?,
+            pocket: [pocket_face(-1.0), pocket_face(1.0)],
+            rib_damping: SliceDamping::new(pe.c_h, pe.d),
+            pocket_damping: SliceDamping::new(pc.c_h, pc.d),
+            rib_reduced_radius: if sum_curvature > 0.0 {
+                1.0 / sum_curvature
+            } else {
+                f64::INFINITY
+            },
+            rib_reduced_modulus: inner.reduced_modulus,
+            rib_roughness: inner.roughness,
+        };
         Ok(Self {
             layout: Layout { rollers: z },
             z,
@@ -255,6 +403,7 @@ impl Model {
             rm,
             gamma: roller.diameter / bearing.pitch_diameter(),
             div_limit: 1e-4,
+            ends,
         })
     }
 

@@ -2,6 +2,7 @@
 //! [`RevolutionSummary`] at the end of every cage revolution; nothing is kept in memory beyond
 //! the current values. [`RunSummary`] is the final summary of a run.
 
+use crate::ends::EndContactRegime;
 use crate::vec3::V3;
 
 /// Per-roller quantities of one raceway contact (struct of arrays, index = roller). Speeds,
@@ -52,6 +53,23 @@ pub struct RollerSnapshot<'a> {
     pub cage_bar_force_n: &'a [f64],
     /// roller ↔ cage bar friction power, W
     pub cage_bar_power_w: &'a [f64],
+    /// roller ends ↔ ribs normal force (both ends, all ribs), N (pair 56)
+    pub rib_force_n: &'a [f64],
+    /// roller ends ↔ ribs sliding speed (force-weighted), m/s — the wear-relevant speed
+    pub rib_sliding_speed_m_s: &'a [f64],
+    /// distance of the rib contact point from the rib edge (rim minus edge break), m
+    /// (force-weighted; NaN without contact) — seed §3.1.1.7 convex vs flat rib
+    pub rib_edge_distance_m: &'a [f64],
+    /// roller ends ↔ ribs friction coefficient (force-weighted)
+    pub rib_friction_coefficient: &'a [f64],
+    /// roller ends ↔ ribs friction power, W
+    pub rib_power_w: &'a [f64],
+    /// friction regime of the most loaded rib contact (SPEC §6.7)
+    pub rib_regime: &'a [EndContactRegime],
+    /// roller ends ↔ cage pocket faces normal force, N (pair 54)
+    pub pocket_face_force_n: &'a [f64],
+    /// roller ends ↔ cage pocket faces friction power, W
+    pub pocket_face_power_w: &'a [f64],
 }
 
 /// State of the bearing at one output time.
@@ -115,6 +133,10 @@ pub struct RevolutionSummary {
     pub whirl_ratio: f64,
     /// mean total friction power of all contacts, W
     pub friction_power_mean_w: f64,
+    /// largest roller-end ↔ rib force (one roller, both ends), N (seed 000 Table 3.2)
+    pub max_roller_end_rib_force_n: f64,
+    /// largest roller-end ↔ cage pocket-face force (one roller, both ends), N (Table 3.2)
+    pub max_roller_end_cage_force_n: f64,
     /// the mean cage speed changed by less than the steady-state tolerance since the previous
     /// revolution
     pub steady: bool,
@@ -155,6 +177,10 @@ pub struct RunSummary {
     pub rejected_steps: u64,
     /// right-hand-side evaluations of the integrator
     pub rhs_evaluations: u64,
+    /// largest roller-end ↔ rib force, N (seed 000 Table 3.2)
+    pub max_roller_end_rib_force_n: f64,
+    /// largest roller-end ↔ cage pocket-face force, N (seed 000 Table 3.2)
+    pub max_roller_end_cage_force_n: f64,
 }
 
 /// Receiver of the streaming outputs.

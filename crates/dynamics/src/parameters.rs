@@ -2,7 +2,8 @@
 //!
 //! The seed gives no numbers for any of them (⚠ F-21); every default below is a proposal with
 //! its reasoning. Pair indices follow SPEC §3.2: 1 inner ring, 2 outer ring, 3 roller slices,
-//! 4 cage (pairs 13, 23 raceways; 34 roller–cage bar; 14 cage–guiding land).
+//! 4 cage (pairs 13, 23 raceways; 34 roller–cage bar; 14 cage–guiding land), 5 roller ends,
+//! 6 ribs (pair 56 roller ends ↔ ribs, pair 54 roller ends ↔ cage pocket faces).
 
 use crate::error::DynError;
 use rolldyn_contact::damping::TwoLevelFriction;
@@ -104,6 +105,100 @@ impl PairParameters {
     }
 }
 
+/// Friction law of a roller-end contact (SPEC §3.4, ⚠ F-23, §6.7).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum EndFriction {
+    /// Constant boundary friction `μ_s = μ_d` of [`PairParameters::friction`] (default 0.065,
+    /// seed 000 §2.1), regularised to 0 below `v_s`.
+    #[default]
+    Boundary,
+    /// Kragelsky μ_bd(s) of seed 000 (2.10) at the relative slip `s = v/u` of the end contact
+    /// (the F-23 switch; → 0.1 at large slip).
+    Kragelsky,
+    /// EHL point-contact traction of the inner-raceway traction model while the contact spot
+    /// (radius `√(R δ)`) stays inside the overlap of end face and rib face (SPEC §6.7), boundary
+    /// friction otherwise. Needs a finite reduced radius, i.e. a spherical roller end or a
+    /// convex rib; flat–flat pairs always run in boundary friction. Ribs only (cage pocket
+    /// faces use the boundary law).
+    Ehl,
+}
+
+/// Roller end ↔ rib (pair 56) or roller end ↔ cage pocket face (pair 54): power law with STEP
+/// damping (SPEC §3.3) and the friction law.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RollerEndParameters {
+    /// Switch (false: the contact is not evaluated — comparison runs).
+    pub enabled: bool,
+    /// K_p, n, C_h, d and the regularised boundary friction (μ_s = μ_d = μ).
+    pub contact: PairParameters,
+    /// Friction law.
+    pub friction: EndFriction,
+}
+
+impl RollerEndParameters {
+    /// Roller end ↔ rib (pair 56) for a bearing. Defaults (⚠ F-21: the seed's FE curves of
+    /// Fig. 2.5 have no numbers):
+    /// * `n = 1.5`, `K_p = (4/3) E* √R_e` — Hertz point contact of the roller edge (corner of
+    ///   radius `r_b` = roller edge break, floored at 0.1 mm, round the end circle of radius
+    ///   `r_e = D_w/2 − r_b`) on a flat steel rib face, `R_e = √(r_b r_e)`, `1/E* = (1−ν₁²)/E₁ +
+    ///   (1−ν₂²)/E₂` of roller and inner ring. A skewed or tilted flat end always touches with its
+    ///   edge (seed Fig. 2.5: non-linear as soon as the roller rotates); 2002834 gives
+    ///   5.8·10⁹ N/m^1.5 (12 N at 1.5 µm, stiffness 1.2·10⁷ N/m — two orders below the raceway,
+    ///   so the rib never limits the explicit step).
+    /// * `C_h = 100 N·s/m`, `d = 1 µm`: ≈ 10 % of critical for a 15 g roller at 5 µm approach.
+    /// * friction: constant 0.065 (seed 000 §2.1 / SPEC Table "contact pairs", row 56),
+    ///   regularised over `v_s = 5 mm/s` (`v_d = 10 mm/s`); sliding at the ends is of the order
+    ///   of m/s, so the regularisation only acts at standstill.
+    pub fn rib_default(bearing: &CylindricalRollerBearing) -> Self {
+        let r = &bearing.roller;
+        let rb = r.edge_break.max(1e-4);
+        let re = (0.5 * r.diameter - rb).max(rb);
+        let e_star = 1.0 / (r.material.compliance() + bearing.inner_ring.material.compliance());
+        Self {
+            enabled: true,
+            contact: PairParameters {
+                k_p: 4.0 / 3.0 * e_star * (rb * re).sqrt().sqrt(),
+                exponent: 1.5,
+                c_h: 100.0,
+                d: 1e-6,
+                friction: TwoLevelFriction {
+                    mu_static: 0.065,
+                    mu_dynamic: 0.065,
+                    v_static: 5e-3,
+                    v_dynamic: 1e-2,
+                },
+            },
+            friction: EndFriction::Boundary,
+        }
+    }
+
+    /// Roller end ↔ cage pocket face (pair 54). Defaults as [`Self::rib_default`] with the cage
+    /// material, `K_p` halved for the bending of the cage side ring that carries the pocket face
+    /// (a guess: no FE data, ⚠ F-21); two-level friction with `μ_s = μ_d = 0.065` (seed: boundary,
+    /// constant 0.065).
+    pub fn pocket_default(bearing: &CylindricalRollerBearing) -> Self {
+        let mut p = Self::rib_default(bearing);
+        let r = &bearing.roller;
+        let rb = r.edge_break.max(1e-4);
+        let re = (0.5 * r.diameter - rb).max(rb);
+        let cage_c = bearing
+            .cage
+            .as_ref()
+            .map(|c| c.material.compliance())
+            .unwrap_or(r.material.compliance());
+        let e_star = 1.0 / (r.material.compliance() + cage_c);
+        p.contact.k_p = 0.5 * 4.0 / 3.0 * e_star * (rb * re).sqrt().sqrt();
+        p
+    }
+
+    /// Frictionless, undamped copy.
+    pub fn conservative(mut self) -> Self {
+        self.contact = self.contact.conservative();
+        self.friction = EndFriction::Boundary;
+        self
+    }
+}
+
 /// Parameters of the roller-slice ↔ raceway contacts (pairs 13, 23).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct RacewayParameters {
@@ -132,6 +227,10 @@ pub struct ContactParameters {
     pub roller_cage: PairParameters,
     /// Pair 14 (or the outer-ring land), cage ↔ guiding land.
     pub cage_land: PairParameters,
+    /// Pair 56, roller ends ↔ ring ribs (inner and outer ring, whichever have ribs).
+    pub roller_end_rib: RollerEndParameters,
+    /// Pair 54, roller ends ↔ cage pocket faces.
+    pub roller_end_cage: RollerEndParameters,
 }
 
 impl ContactParameters {
@@ -166,6 +265,8 @@ impl ContactParameters {
             },
             roller_cage: PairParameters::roller_cage_default(),
             cage_land: PairParameters::cage_land_default(),
+            roller_end_rib: RollerEndParameters::rib_default(bearing),
+            roller_end_cage: RollerEndParameters::pocket_default(bearing),
         }
     }
 
@@ -176,6 +277,8 @@ impl ContactParameters {
         self.outer_raceway.damping_n_s_m = 0.0;
         self.roller_cage = self.roller_cage.conservative();
         self.cage_land = self.cage_land.conservative();
+        self.roller_end_rib = self.roller_end_rib.conservative();
+        self.roller_end_cage = self.roller_end_cage.conservative();
         self
     }
 
@@ -200,6 +303,12 @@ impl ContactParameters {
         }
         self.roller_cage.validate("roller–cage (34)")?;
         self.cage_land.validate("cage–land (14)")?;
+        self.roller_end_rib
+            .contact
+            .validate("roller end–rib (56)")?;
+        self.roller_end_cage
+            .contact
+            .validate("roller end–cage pocket (54)")?;
         Ok(())
     }
 }

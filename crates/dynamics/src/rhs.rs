@@ -4,6 +4,7 @@
 //!
 //! Allocation-free: all scratch lives in [`Diagnostics`], allocated once.
 
+use crate::ends::{BodyKin, EndContactRegime, EndForce, EndLubrication, RollerState, end_force};
 use crate::land::LandKinematics;
 use crate::layout::{CAGE_DOF, INNER_DOF, ROLLER_DOF};
 use crate::model::{Model, RacewaySlices};
@@ -86,6 +87,22 @@ pub(crate) struct Diagnostics {
     /// roller–cage bar normal force per roller (sum of the evaluation points), N
     pub bar: Vec<f64>,
     pub bar_power: Vec<f64>,
+    /// roller end ↔ rib normal force per roller (sum of both ends and all ribs), N
+    pub rib: Vec<f64>,
+    /// force-weighted sliding speed of the rib contacts per roller, m/s
+    pub rib_sliding: Vec<f64>,
+    /// force-weighted distance of the rib contact point from the rib edge (rim), m (NaN: none)
+    pub rib_edge: Vec<f64>,
+    /// force-weighted friction coefficient of the rib contacts per roller
+    pub rib_mu: Vec<f64>,
+    /// friction power of the rib contacts per roller, W
+    pub rib_power: Vec<f64>,
+    /// regime of the most loaded rib contact per roller
+    pub rib_regime: Vec<EndContactRegime>,
+    /// roller end ↔ cage pocket face normal force per roller, N
+    pub pocket: Vec<f64>,
+    /// friction power of the pocket-face contacts per roller, W
+    pub pocket_power: Vec<f64>,
     /// cage–land normal force (sum of stations), N
     pub land_force: f64,
     pub land_power: f64,
@@ -102,6 +119,14 @@ impl Diagnostics {
             outer: ContactTable::new(z),
             bar: vec![0.0; z],
             bar_power: vec![0.0; z],
+            rib: vec![0.0; z],
+            rib_sliding: vec![0.0; z],
+            rib_edge: vec![f64::NAN; z],
+            rib_mu: vec![0.0; z],
+            rib_power: vec![0.0; z],
+            rib_regime: vec![EndContactRegime::None; z],
+            pocket: vec![0.0; z],
+            pocket_power: vec![0.0; z],
             land_force: 0.0,
             land_power: 0.0,
             inner_speed: 0.0,
@@ -411,6 +436,129 @@ pub(crate) fn rhs(model: &Model, t: f64, y: &[f64], dy: &mut [f64], diag: &mut D
         }
         diag.bar[j] = bar_q;
         diag.bar_power[j] = bar_pw;
+
+        // roller ends ↔ ribs of both rings (pair 56) and ↔ cage pocket faces (pair 54)
+        let rs = RollerState {
+            c: centre,
+            a,
+            v,
+            w,
+            orbit: thd,
+        };
+        let apply = |ef: &EndForce, f: &mut V3, m: &mut V3| {
+            *f = add(*f, ef.force);
+            *m = add(*m, ef.moment);
+        };
+        let ends = &model.ends;
+        let (mut rib_q, mut rib_vs, mut rib_edge, mut rib_mu, mut rib_pw, mut rib_best) =
+            (0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+        let mut rib_regime = EndContactRegime::None;
+        if model.params.roller_end_rib.enabled {
+            for (ring, faces, inner_ring) in [
+                (&inner, &ends.inner_ribs, true),
+                (&outer, &ends.outer_ribs, false),
+            ] {
+                if faces.is_empty() {
+                    continue;
+                }
+                let body = BodyKin {
+                    o: ring.o,
+                    v: ring.v,
+                    axis: ring.axis,
+                    omega: scale(ring.axis, ring.spin),
+                };
+                let lub = EndLubrication {
+                    model: if inner_ring {
+                        &model.traction.inner
+                    } else {
+                        &model.traction.outer
+                    },
+                    reduced_radius: ends.rib_reduced_radius,
+                    reduced_modulus: ends.rib_reduced_modulus,
+                    roughness: ends.rib_roughness,
+                    temperature_k: if inner_ring {
+                        cond.temperatures.inner_raceway_k
+                    } else {
+                        cond.temperatures.outer_raceway_k
+                    },
+                };
+                for face in faces {
+                    let Some(ef) = end_force(
+                        face,
+                        &ends.end,
+                        &body,
+                        &rs,
+                        &model.params.roller_end_rib,
+                        &ends.rib_damping,
+                        Some(&lub),
+                    ) else {
+                        continue;
+                    };
+                    note(diag, "roller end ↔ rib", j, ef.delta, div_limit);
+                    apply(&ef, &mut f, &mut m);
+                    if inner_ring {
+                        f_inner = sub(f_inner, ef.force);
+                    }
+                    rib_q += ef.normal;
+                    rib_vs += ef.normal * ef.sliding;
+                    rib_edge += ef.normal * ef.edge_distance;
+                    rib_mu += ef.normal * ef.mu;
+                    rib_pw += ef.mu * ef.normal * ef.sliding;
+                    if ef.normal > rib_best {
+                        rib_best = ef.normal;
+                        rib_regime = ef.regime;
+                    }
+                }
+            }
+        }
+        diag.rib[j] = rib_q;
+        diag.rib_power[j] = rib_pw;
+        diag.rib_regime[j] = rib_regime;
+        if rib_q > 0.0 {
+            diag.rib_sliding[j] = rib_vs / rib_q;
+            diag.rib_edge[j] = rib_edge / rib_q;
+            diag.rib_mu[j] = rib_mu / rib_q;
+        } else {
+            diag.rib_sliding[j] = 0.0;
+            diag.rib_edge[j] = f64::NAN;
+            diag.rib_mu[j] = 0.0;
+        }
+        let (mut pocket_q, mut pocket_pw) = (0.0, 0.0);
+        if model.params.roller_end_cage.enabled {
+            let body = BodyKin {
+                o: cc,
+                v: vcc,
+                axis: ac,
+                omega: wc,
+            };
+            for face in &ends.pocket {
+                let Some(ef) = end_force(
+                    face,
+                    &ends.end,
+                    &body,
+                    &rs,
+                    &model.params.roller_end_cage,
+                    &ends.pocket_damping,
+                    None,
+                ) else {
+                    continue;
+                };
+                note(
+                    diag,
+                    "roller end ↔ cage pocket face",
+                    j,
+                    ef.delta,
+                    div_limit,
+                );
+                apply(&ef, &mut f, &mut m);
+                f_cage = sub(f_cage, ef.force);
+                m_cage = add(m_cage, ef.body_moment);
+                pocket_q += ef.normal;
+                pocket_pw += ef.mu * ef.normal * ef.sliding;
+            }
+        }
+        diag.pocket[j] = pocket_q;
+        diag.pocket_power[j] = pocket_pw;
 
         // Newton–Euler in cylindrical coordinates (seed 000 (2.1)) and L̇ = M ((2.2) in the
         // inertial frame: the gyroscopic term is contained in ω(L, a))

@@ -386,10 +386,7 @@ impl Simulation {
                     return Err(DynError::Divergence {
                         time_s: self.ig.t(),
                         body: format!("roller {j} attitude"),
-                        detail: format!(
-                            "axis tilted (skew + pitch) by {:.4} rad — no roller-end/rib or pocket-face contact bounds roller skew in this version",
-                            tilt
-                        ),
+                        detail: format!("axis tilted (skew + pitch) by {:.4} rad", tilt),
                         step_s: self.ig.t() - t_before,
                     });
                 }
@@ -416,11 +413,17 @@ impl Simulation {
             max_fo: d.outer.force.iter().fold(0.0_f64, |a, &b| a.max(b)),
             max_bar: d.bar.iter().fold(0.0_f64, |a, &b| a.max(b)),
             land: d.land_force,
+            max_rib: d.rib.iter().fold(0.0_f64, |a, &b| a.max(b)),
+            max_pocket: d.pocket.iter().fold(0.0_f64, |a, &b| a.max(b)),
             ..StepValues::default()
         };
         let mut power = d.land_power;
         for j in 0..m.z {
-            power += d.inner.power[j] + d.outer.power[j] + d.bar_power[j];
+            power += d.inner.power[j]
+                + d.outer.power[j]
+                + d.bar_power[j]
+                + d.rib_power[j]
+                + d.pocket_power[j];
             if d.inner.force[j] > thresh && d.inner.force[j] > 0.0 {
                 let vs = d.inner.sliding[j];
                 let u = d.inner.rolling[j].max(1e-6);
@@ -502,6 +505,8 @@ impl Simulation {
             scuffing_margin: margin,
             whirl_ratio: w.whirl(phi, self.tr.orbit),
             friction_power_mean_w: w.mean_power(),
+            max_roller_end_rib_force_n: w.max_rib,
+            max_roller_end_cage_force_n: w.max_pocket,
             steady,
         };
         self.tr.prev_rev_speed = speed;
@@ -607,6 +612,14 @@ impl Simulation {
                 outer: contact_snapshot(&d.outer, &sb.srr_outer),
                 cage_bar_force_n: &d.bar,
                 cage_bar_power_w: &d.bar_power,
+                rib_force_n: &d.rib,
+                rib_sliding_speed_m_s: &d.rib_sliding,
+                rib_edge_distance_m: &d.rib_edge,
+                rib_friction_coefficient: &d.rib_mu,
+                rib_power_w: &d.rib_power,
+                rib_regime: &d.rib_regime,
+                pocket_face_force_n: &d.pocket,
+                pocket_face_power_w: &d.pocket_power,
             },
         };
         sink.sample(t, &snapshot);
@@ -662,6 +675,8 @@ impl Simulation {
             steps: st.accepted,
             rejected_steps: st.rejected,
             rhs_evaluations: st.rhs_evaluations,
+            max_roller_end_rib_force_n: w.max_rib,
+            max_roller_end_cage_force_n: w.max_pocket,
         }
     }
 

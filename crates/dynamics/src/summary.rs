@@ -17,6 +17,8 @@ pub(crate) struct StepValues {
     pub land: f64,
     pub max_vs: f64,
     pub max_srr: f64,
+    pub max_rib: f64,
+    pub max_pocket: f64,
     /// inner contact state with the largest slip among loaded rollers
     pub worst: Option<ContactState>,
 }
@@ -82,6 +84,8 @@ pub(crate) struct Window {
     pub worst: Option<ContactState>,
     pub worst_srr: f64,
     pub min_margin: f64,
+    pub max_rib: f64,
+    pub max_pocket: f64,
 }
 
 impl Window {
@@ -103,6 +107,8 @@ impl Window {
             worst: None,
             worst_srr: 0.0,
             min_margin: f64::INFINITY,
+            max_rib: 0.0,
+            max_pocket: 0.0,
         }
     }
 
@@ -116,6 +122,8 @@ impl Window {
         self.max_bar = self.max_bar.max(v.max_bar);
         self.max_land = self.max_land.max(v.land);
         self.max_vs = self.max_vs.max(v.max_vs);
+        self.max_rib = self.max_rib.max(v.max_rib);
+        self.max_pocket = self.max_pocket.max(v.max_pocket);
         if v.max_srr > self.max_srr {
             self.max_srr = v.max_srr;
         }
@@ -176,6 +184,8 @@ impl Window {
             self.orbit0,
             self.worst_srr,
             self.min_margin,
+            self.max_rib,
+            self.max_pocket,
         ] {
             w.f64(x);
         }
@@ -185,7 +195,7 @@ impl Window {
     }
 
     pub fn load(r: &mut Reader) -> Result<Self, DynError> {
-        let mut v = [0.0; 15];
+        let mut v = [0.0; 17];
         for x in v.iter_mut() {
             *x = r.f64()?;
         }
@@ -209,6 +219,8 @@ impl Window {
             orbit0: v[12],
             worst_srr: v[13],
             min_margin: v[14],
+            max_rib: v[15],
+            max_pocket: v[16],
             worst: unpack(&p),
         })
     }
