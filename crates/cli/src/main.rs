@@ -34,8 +34,14 @@ enum Command {
     Skid(commands::skid::Args),
     /// Time-domain 6-DOF dynamics of a cylindrical roller bearing.
     Simulate(commands::simulate::Args),
+    /// Run a table of model variants in parallel (any model key can vary).
+    Sweep(commands::sweep::Args),
     /// Re-run a seed's validation study and write its tables and plots.
     Study(commands::study::Args),
+    /// Finite journal bearing by the Reynolds equation: load, attitude, friction, K and C.
+    Journal(commands::journal::Args),
+    /// Lubricated roller–plate line contact (rigid, piezoviscous or full EHL) and load steps.
+    EhlLine(commands::ehl_line::Args),
 }
 
 fn main() -> ExitCode {
@@ -45,11 +51,14 @@ fn main() -> ExitCode {
         Command::Check(args) => commands::check::run(args),
         Command::Contact(args) => commands::contact::run(args),
         Command::Study(args) => commands::study::run(args),
+        Command::Sweep(args) => commands::sweep::run(args),
         Command::Simulate(args) => commands::simulate::run(args),
         Command::Skid(args) => commands::skid::run(args),
         Command::Oils(args) => commands::oils::run(args),
         Command::Traction(args) => commands::traction::run(args),
         Command::Film(args) => commands::film::run(args),
+        Command::Journal(args) => commands::journal::run(args),
+        Command::EhlLine(args) => commands::ehl_line::run(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -380,3 +380,83 @@ fn simulate_short_run_writes_series_and_json() {
     let out = rolldyn(&["simulate", &example("contact/32206-straight.toml")]);
     assert_eq!(out.status.code(), Some(2));
 }
+
+#[test]
+fn simulate_checkpoint_and_resume_equal_an_uninterrupted_run() {
+    let dir = std::env::temp_dir().join(format!("rolldyn-ckpt-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let ckpt = dir.join("state.bin");
+    let model = example("obrien-taylor.toml");
+    let run = |extra: &[&str]| {
+        let mut args = vec!["simulate", model.as_str(), "--json", "--quiet"];
+        args.extend_from_slice(extra);
+        json(&rolldyn(&args))
+    };
+    let whole = run(&["--duration", "0.6ms"]);
+    run(&[
+        "--duration",
+        "0.3ms",
+        "--checkpoint",
+        ckpt.to_str().unwrap(),
+    ]);
+    let resumed = run(&["--duration", "0.6ms", "--resume", ckpt.to_str().unwrap()]);
+    for key in [
+        "cage_speed_mean_rad_s",
+        "max_inner_contact_force_n",
+        "steps",
+        "rhs_evaluations",
+    ] {
+        assert_eq!(whole[key], resumed[key], "{key}");
+    }
+    std::fs::remove_dir_all(dir).ok();
+}
+
+#[test]
+fn sweep_runs_variants_with_shards_and_resume() {
+    let dir = std::env::temp_dir().join(format!("rolldyn-sweep-cli-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let sweep = dir.join("loads.toml");
+    std::fs::write(
+        &sweep,
+        format!(
+            "model = \"{}\"\nanalysis = \"skid\"\n\
+             [[variant]]\nname = \"light\"\n\"operating.radial_load\" = \"104 N\"\n\
+             [[variant]]\nname = \"heavy\"\n\"operating.radial_load\" = \"687 N\"\n",
+            example("obrien-taylor.toml").replace('\\', "/")
+        ),
+    )
+    .unwrap();
+    let out = dir.join("out");
+    let o = out.to_str().unwrap();
+    let first = rolldyn(&[
+        "sweep",
+        sweep.to_str().unwrap(),
+        "--out",
+        o,
+        "--shard",
+        "2/2",
+        "--quiet",
+    ]);
+    assert!(
+        first.status.success(),
+        "{}",
+        String::from_utf8_lossy(&first.stderr)
+    );
+    assert!(out.join("variants/heavy.json").is_file() && !out.join("variants/light.json").exists());
+    let rest = rolldyn(&[
+        "sweep",
+        sweep.to_str().unwrap(),
+        "--out",
+        o,
+        "--resume",
+        "--quiet",
+    ]);
+    assert!(
+        String::from_utf8_lossy(&rest.stdout).contains("ran 1 of 2"),
+        "resume skips the finished variant"
+    );
+    let csv = std::fs::read_to_string(out.join("summary.csv")).unwrap();
+    assert_eq!(csv.lines().count(), 3);
+    assert!(out.join("summary.parquet").is_file() && out.join("cage_slip.svg").is_file());
+    std::fs::remove_dir_all(dir).ok();
+}

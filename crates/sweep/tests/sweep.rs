@@ -148,13 +148,20 @@ fn shards_resume_and_collect() {
 
 #[test]
 fn seed000_table_3_1_sweep_has_21_valid_variants() {
-    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples/2002834/table-3.1.toml");
+    let path =
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples/2002834/table-3.1.toml");
     let sweep = SweepFile::load(&path).unwrap_or_else(|e| panic!("{e}"));
     assert_eq!(sweep.variants.len(), 21);
     let v36 = sweep.variants.iter().find(|v| v.name == "36").unwrap();
     let model = sweep.model_of(v36).unwrap();
-    assert!((model.bearing.misalignment().inner_ring_tilt - 12.0 * std::f64::consts::PI / 10_800.0).abs() < 1e-12);
-    let rolldyn_model::BearingModel::Cylindrical(b) = model.bearing else { panic!() };
+    assert!(
+        (model.bearing.misalignment().inner_ring_tilt - 12.0 * std::f64::consts::PI / 10_800.0)
+            .abs()
+            < 1e-12
+    );
+    let rolldyn_model::BearingModel::Cylindrical(b) = model.bearing else {
+        panic!()
+    };
     assert!((b.clearance.radial - 0.044e-3).abs() < 1e-12);
     assert_eq!(sweep.duration.as_deref(), Some("10rev"));
 }

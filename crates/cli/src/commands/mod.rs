@@ -3,11 +3,14 @@
 pub mod check;
 pub mod contact;
 pub mod demo;
+pub mod ehl_line;
 pub mod film;
+pub mod journal;
 mod oil_args;
 pub mod oils;
 mod rig_args;
 pub mod simulate;
 pub mod skid;
 pub mod study;
+pub mod sweep;
 pub mod traction;

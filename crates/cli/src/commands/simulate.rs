@@ -148,7 +148,7 @@ const BEARING_COLUMNS: [&str; 12] = [
     "cage_land_power_w",
 ];
 
-const ROLLER_COLUMNS: [&str; 25] = [
+const ROLLER_COLUMNS: [&str; 27] = [
     "time_s",
     "roller",
     "azimuth_rad",
@@ -174,9 +174,11 @@ const ROLLER_COLUMNS: [&str; 25] = [
     "outer_traction",
     "outer_friction_power_w",
     "cage_bar_force_n",
+    "rib_force_n",
+    "pocket_face_force_n",
 ];
 
-const REVOLUTION_COLUMNS: [&str; 15] = [
+const REVOLUTION_COLUMNS: [&str; 17] = [
     "revolution",
     "start_s",
     "end_s",
@@ -186,6 +188,8 @@ const REVOLUTION_COLUMNS: [&str; 15] = [
     "max_outer_contact_force_n",
     "max_roller_cage_force_n",
     "max_cage_land_force_n",
+    "max_roller_end_rib_force_n",
+    "max_roller_end_cage_force_n",
     "max_inner_sliding_speed_m_s",
     "max_relative_slip",
     "scuffing_margin",
@@ -371,6 +375,8 @@ impl OutputSink for FileSink {
                 ]);
             }
             self.row.push(r.cage_bar_force_n[j]);
+            self.row.push(r.rib_force_n[j]);
+            self.row.push(r.pocket_face_force_n[j]);
             let result = self.rollers.write_row(&self.row);
             self.keep(result);
         }
@@ -401,6 +407,8 @@ impl OutputSink for FileSink {
             v.max_outer_contact_force_n,
             v.max_roller_cage_force_n,
             v.max_cage_land_force_n,
+            v.max_roller_end_rib_force_n,
+            v.max_roller_end_cage_force_n,
             v.max_inner_sliding_speed_m_s,
             v.max_relative_slip,
             v.scuffing_margin,
@@ -440,6 +448,8 @@ pub(crate) struct Answer<'a> {
     max_outer_contact_force_n: f64,
     max_roller_cage_force_n: f64,
     max_cage_land_force_n: f64,
+    max_roller_end_rib_force_n: f64,
+    max_roller_end_cage_force_n: f64,
     max_inner_sliding_speed_m_s: f64,
     max_relative_slip: f64,
     min_scuffing_margin: f64,
@@ -463,6 +473,8 @@ impl<'a> Answer<'a> {
             max_outer_contact_force_n: s.max_outer_contact_force_n,
             max_roller_cage_force_n: s.max_roller_cage_force_n,
             max_cage_land_force_n: s.max_cage_land_force_n,
+            max_roller_end_rib_force_n: s.max_roller_end_rib_force_n,
+            max_roller_end_cage_force_n: s.max_roller_end_cage_force_n,
             max_inner_sliding_speed_m_s: s.max_inner_sliding_speed_m_s,
             max_relative_slip: s.max_relative_slip,
             min_scuffing_margin: s.min_scuffing_margin,
@@ -477,26 +489,42 @@ impl<'a> Answer<'a> {
     }
 }
 
-/// Operating conditions from the model's `[operating]` section and the flags.
-fn conditions(args: &Args, model: &rolldyn_model::Model) -> Result<OperatingConditions, Failure> {
+/// Values given on the command line that override the model's `[operating]` section.
+#[derive(Clone, Copy, Default)]
+pub struct Overrides {
+    pub speed: Option<f64>,
+    pub outer_speed: Option<f64>,
+    pub radial_load: Option<f64>,
+    pub load_direction: Option<LoadDirectionArg>,
+    pub oil_temperature: Option<f64>,
+}
+
+impl Args {
+    fn overrides(&self) -> Overrides {
+        Overrides {
+            speed: self.speed.map(|q| q.si()),
+            outer_speed: self.outer_speed.map(|q| q.si()),
+            radial_load: self.radial_load.map(|q| q.si()),
+            load_direction: self.load_direction,
+            oil_temperature: self.oil_temperature.map(|q| q.si()),
+        }
+    }
+}
+
+/// Operating conditions from the model's `[operating]` section and the overrides.
+fn conditions(
+    args: &Overrides,
+    model: &rolldyn_model::Model,
+) -> Result<OperatingConditions, Failure> {
     let op = &model.operating;
-    let speed = args
-        .speed
-        .map(|q| q.si())
-        .or(op.inner_speed)
-        .ok_or_else(|| {
-            Failure::Input("no inner-ring speed: give --speed or operating.inner_speed".into())
-        })?;
-    let load = args
-        .radial_load
-        .map(|q| q.si())
-        .or(op.radial_load)
-        .ok_or_else(|| {
-            Failure::Input("no radial load: give --radial-load or operating.radial_load".into())
-        })?;
+    let speed = args.speed.or(op.inner_speed).ok_or_else(|| {
+        Failure::Input("no inner-ring speed: give --speed or operating.inner_speed".into())
+    })?;
+    let load = args.radial_load.or(op.radial_load).ok_or_else(|| {
+        Failure::Input("no radial load: give --radial-load or operating.radial_load".into())
+    })?;
     let oil_t = args
         .oil_temperature
-        .map(|q| q.si())
         .or(op.temperatures.oil)
         .ok_or_else(|| {
             Failure::Input(
@@ -519,7 +547,7 @@ fn conditions(args: &Args, model: &rolldyn_model::Model) -> Result<OperatingCond
             phase_rad: 0.0,
         }];
     }
-    if let Some(outer) = args.outer_speed.map(|q| q.si()).or(op.outer_speed) {
+    if let Some(outer) = args.outer_speed.or(op.outer_speed) {
         c.outer_speed = rolldyn_dynamics::conditions::SpeedLaw::Constant(outer);
     }
     let t = |part: Option<f64>| part.unwrap_or(oil_t);
@@ -541,8 +569,13 @@ fn conditions(args: &Args, model: &rolldyn_model::Model) -> Result<OperatingCond
     Ok(c)
 }
 
-pub fn run(args: Args) -> Result<(), Failure> {
-    let model = load_model(args.model.as_deref())?;
+/// A simulation of `model` ready to run, and its cage revolution period [s].
+pub fn prepare(
+    model: &rolldyn_model::Model,
+    overrides: &Overrides,
+    output_step_s: f64,
+    tolerance: Option<f64>,
+) -> Result<(Simulation, f64), Failure> {
     let BearingModel::Cylindrical(bearing) = &model.bearing else {
         return Err(Failure::Input(format!(
             "{}: simulate needs a complete bearing (bearing.kind = \"cylindrical\")",
@@ -558,26 +591,22 @@ pub fn run(args: Args) -> Result<(), Failure> {
     let traction = lubrication
         .traction_model()
         .map_err(|e| Failure::Input(format!("[lubricant]: {e}")))?;
-    let conditions = conditions(&args, &model)?;
+    let conditions = conditions(overrides, model)?;
     let epicyclic = bearing.epicyclic_cage_speed(
         conditions.inner_speed.speed(0.0),
         conditions.outer_speed.speed(0.0),
     );
     let mut settings = DynamicsSettings {
-        output_step_s: if args.out.is_some() {
-            args.output_step.si()
-        } else {
-            0.0
-        },
+        output_step_s,
         ..DynamicsSettings::default()
     };
-    if let Some(tol) = args.tolerance {
+    if let Some(tol) = tolerance {
         if !(tol > 0.0 && tol < 1.0) {
             return Err(Failure::Input("--tolerance must lie in (0, 1)".into()));
         }
         settings.integrator.tolerance = tol;
     }
-    let mut sim = Simulation::new(
+    let sim = Simulation::new(
         bearing,
         conditions,
         ContactParameters::for_bearing(bearing),
@@ -585,17 +614,34 @@ pub fn run(args: Args) -> Result<(), Failure> {
         RacewayTraction::same(traction),
     )
     .map_err(|e| Failure::Input(e.to_string()))?;
+    Ok((sim, std::f64::consts::TAU / epicyclic.abs().max(1e-9)))
+}
+
+impl Duration {
+    /// The end time for a cage revolution period `revolution` [s].
+    pub fn end_time(self, revolution: f64) -> f64 {
+        match self {
+            Duration::CageRevolutions(n) => n * revolution,
+            Duration::Time(t) => t,
+        }
+    }
+}
+
+pub fn run(args: Args) -> Result<(), Failure> {
+    let model = load_model(args.model.as_deref())?;
+    let output_step = if args.out.is_some() {
+        args.output_step.si()
+    } else {
+        0.0
+    };
+    let (mut sim, revolution) = prepare(&model, &args.overrides(), output_step, args.tolerance)?;
     if let Some(path) = &args.resume {
         let bytes =
             std::fs::read(path).map_err(|e| Failure::Input(format!("{}: {e}", path.display())))?;
         sim.restore(&bytes)
             .map_err(|e| Failure::Input(format!("{}: {e}", path.display())))?;
     }
-    let revolution = std::f64::consts::TAU / epicyclic.abs().max(1e-9);
-    let t_end = match args.duration {
-        Duration::CageRevolutions(n) => n * revolution,
-        Duration::Time(t) => t,
-    };
+    let t_end = args.duration.end_time(revolution);
     let dir = args.out.as_deref().map(out_dir).transpose()?;
     let mut sinks = Sinks(
         dir.as_deref()

@@ -32,6 +32,23 @@ pub enum LandName {
     Short,
 }
 
+impl Args {
+    /// The model's own operating point (no flags), Muraki friction, finite land model.
+    pub(crate) fn from_model_only() -> Self {
+        Self {
+            model: None,
+            speed: None,
+            outer_speed: None,
+            radial_load: None,
+            temperatures: None,
+            friction: FrictionName::Muraki,
+            cage_land: LandName::Finite,
+            json: false,
+            out: None,
+        }
+    }
+}
+
 #[derive(clap::Args)]
 pub struct Args {
     /// Model file with [lubricant] (and optionally [operating]); the embedded 2002834 model when
@@ -98,7 +115,7 @@ fn single<D: rolldyn_units::Dim>(range: &Option<QuantityRange<D>>) -> Option<f64
 }
 
 /// The operating point of the model file, overridden by the flags (first value of a sweep).
-fn conditions(args: &Args, model: &Model) -> Result<OperatingConditions, Failure> {
+pub(crate) fn conditions(args: &Args, model: &Model) -> Result<OperatingConditions, Failure> {
     let op = &model.operating;
     let name = model.bearing.name();
     let lubrication = model

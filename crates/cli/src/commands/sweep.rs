@@ -1,0 +1,141 @@
+//! `rolldyn sweep SWEEP.toml`: a table of model variants run in parallel, one summary row per
+//! variant (CSV + Parquet) and one plot per summary column (seed 000 Figs 3.13–3.30).
+
+use super::simulate::{Duration, Overrides, prepare, summary_json};
+use crate::failure::Failure;
+use rolldyn_dynamics::output::NullSink;
+use rolldyn_quasistatic::{FiniteLand, QuasiStaticOptions};
+use rolldyn_sweep::{
+    Analysis, RunOptions, Shard, SweepFile, Variant, VariantOutcome, collect, run as run_sweep,
+};
+use std::collections::BTreeMap;
+use std::path::PathBuf;
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+#[derive(clap::Args)]
+pub struct Args {
+    /// Sweep file (TOML): base model, analysis and [[variant]] tables (see rolldyn-sweep docs).
+    pub sweep: PathBuf,
+    /// Parallel jobs (default: the number of cores).
+    #[arg(long)]
+    pub jobs: Option<usize>,
+    /// Output folder (default `out/<sweep file name>`).
+    #[arg(long)]
+    pub out: Option<PathBuf>,
+    /// Run every n-th variant only (`k/n`), e.g. one cluster array job of n.
+    #[arg(long)]
+    pub shard: Option<Shard>,
+    /// Skip variants already finished in the output folder.
+    #[arg(long)]
+    pub resume: bool,
+    /// No per-variant progress lines.
+    #[arg(long)]
+    pub quiet: bool,
+}
+
+/// Numeric fields of a JSON object as a summary row.
+fn numbers(value: &serde_json::Value) -> BTreeMap<String, f64> {
+    value
+        .as_object()
+        .map(|o| {
+            o.iter()
+                .filter_map(|(k, v)| v.as_f64().map(|x| (k.clone(), x)))
+                .collect()
+        })
+        .unwrap_or_default()
+}
+
+fn simulate(
+    duration: Duration,
+    model: rolldyn_model::Model,
+) -> Result<BTreeMap<String, f64>, String> {
+    let (mut sim, revolution) =
+        prepare(&model, &Overrides::default(), 0.0, None).map_err(|e| e.to_string())?;
+    let summary = sim
+        .run_until(duration.end_time(revolution), &mut NullSink, &mut |_| {})
+        .map_err(|e| format!("the simulation stopped: {e}"))?;
+    Ok(numbers(&summary_json(model.bearing.name(), &summary)))
+}
+
+fn skid(model: rolldyn_model::Model) -> Result<BTreeMap<String, f64>, String> {
+    let rolldyn_geometry::BearingModel::Cylindrical(bearing) = &model.bearing else {
+        return Err("skid needs a cylindrical bearing".into());
+    };
+    let c = super::skid::conditions(&super::skid::Args::from_model_only(), &model)
+        .map_err(|e| e.to_string())?;
+    let inner_land = bearing
+        .cage
+        .as_ref()
+        .is_some_and(|c| c.guidance == rolldyn_geometry::CageGuidance::InnerLand);
+    let result = rolldyn_quasistatic::solve_with_land_model(
+        bearing,
+        &c,
+        &QuasiStaticOptions::default(),
+        &FiniteLand::new(inner_land),
+    )
+    .map_err(|e| e.to_string())?;
+    Ok(numbers(
+        &serde_json::to_value(&result).map_err(|e| e.to_string())?,
+    ))
+}
+
+pub fn run(args: Args) -> Result<(), Failure> {
+    let sweep = SweepFile::load(&args.sweep).map_err(|e| Failure::Input(e.to_string()))?;
+    let duration: Duration = sweep
+        .duration
+        .as_deref()
+        .unwrap_or("5rev")
+        .parse()
+        .map_err(|e: String| Failure::Input(format!("{}: duration — {e}", args.sweep.display())))?;
+    let stem = args
+        .sweep
+        .file_stem()
+        .map_or("sweep".into(), |s| s.to_string_lossy().to_string());
+    let out_dir = args
+        .out
+        .clone()
+        .unwrap_or_else(|| PathBuf::from("out").join(stem));
+    let jobs = args
+        .jobs
+        .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
+        .max(1);
+    let analysis = sweep.analysis;
+    let analyse = move |_: &Variant, model: rolldyn_model::Model| match analysis {
+        Analysis::Simulate => simulate(duration, model),
+        Analysis::Skid => skid(model),
+    };
+    let done = AtomicUsize::new(0);
+    let total = sweep.variants.len();
+    let quiet = args.quiet;
+    let progress = |o: &VariantOutcome| {
+        let n = done.fetch_add(1, Ordering::SeqCst) + 1;
+        if !quiet {
+            match &o.error {
+                None => eprintln!("[{n}] variant {} done in {:.1} s", o.name, o.wall_time_s),
+                Some(e) => eprintln!("[{n}] variant {} failed: {e}", o.name),
+            }
+        }
+    };
+    let options = RunOptions {
+        out_dir: out_dir.clone(),
+        jobs,
+        shard: args.shard,
+        resume: args.resume,
+    };
+    let outcomes = run_sweep(&sweep, &options, &analyse, &progress)
+        .map_err(|e| Failure::Run(e.to_string()))?;
+    let collected = collect(&sweep, &out_dir).map_err(|e| Failure::Run(e.to_string()))?;
+    let failed = outcomes.iter().filter(|o| o.error.is_some()).count();
+    println!(
+        "{}: ran {} of {total} variants ({failed} failed); {collected} collected in {}",
+        args.sweep.display(),
+        outcomes.len(),
+        out_dir.join("summary.csv").display()
+    );
+    if failed > 0 && failed == outcomes.len() {
+        return Err(Failure::Run(
+            "every variant failed; see the variants/*.json files".into(),
+        ));
+    }
+    Ok(())
+}
