@@ -111,7 +111,7 @@ fn bad_model_exits_2_with_one_line_naming_file_line_key() {
     std::fs::create_dir_all(&dir).unwrap();
     let good = std::fs::read_to_string(example("2002834.toml")).unwrap();
     let cases = [
-        ("slices = 30", "slices = 30\nspeed = 1", "roller.speed"),
+        ("slices = 10", "slices = 10\nspeed = 1", "roller.speed"),
         (
             "diameter = \"15 mm\"",
             "diameter = \"15 N\"",

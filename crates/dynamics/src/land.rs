@@ -52,6 +52,9 @@ pub struct LandForce {
     pub power_w: f64,
     /// Penetration beyond the nominal clearance, m (≤ 0: no contact).
     pub penetration_m: f64,
+    /// Couple on the cage in addition to the moment of the force about its centre, N·m
+    /// (e.g. the friction torque of a fluid film).
+    pub moment_on_cage_n_m: V3,
 }
 
 /// A cage ↔ guiding-land force law. Implementations must be deterministic, allocation-free and
@@ -111,6 +114,110 @@ impl CageLandModel for TwoLevelLand {
             normal_force_n: fn_,
             power_w: mu * fn_ * vs,
             penetration_m: delta,
+            moment_on_cage_n_m: [0.0; 3],
+        }
+    }
+}
+
+/// Hydrodynamic cage land (issue 7; SPEC §8.6, seed 001 "narrow journal bearing"): the film
+/// force and friction torque of the Reynolds crate's [`rolldyn_reynolds::cage_land::CageLand`]
+/// (short-bearing theory corrected by a table of the finite Reynolds solver) at every station,
+/// plus the compliant metal contact of [`TwoLevelLand`] once the film is squeezed out (the
+/// cage touching the land beyond its floating clearance).
+#[derive(Debug, Clone)]
+pub struct HydrodynamicLand {
+    film: rolldyn_reynolds::cage_land::CageLand,
+    /// Oil viscosity in the land film, Pa·s (constant during a run).
+    pub viscosity_pa_s: f64,
+    contact: TwoLevelLand,
+}
+
+impl HydrodynamicLand {
+    /// Land of radius `radius_m`, total width `width_m` split over `stations` stations, radial
+    /// clearance `gap_m`, on the inner (`inner_land`) or outer ring; `contact` is the metal
+    /// contact beyond the clearance. Builds the correction table (≈ 0.3 s).
+    pub fn new(
+        radius_m: f64,
+        width_m: f64,
+        stations: usize,
+        gap_m: f64,
+        inner_land: bool,
+        viscosity_pa_s: f64,
+        contact: TwoLevelLand,
+    ) -> Result<Self, crate::DynError> {
+        use rolldyn_reynolds::cage_land::{
+            CageLand, CageLandGeometry, CageLandOptions, LandPosition,
+        };
+        if !(viscosity_pa_s > 0.0 && viscosity_pa_s.is_finite()) {
+            return Err(crate::DynError::InvalidInput(format!(
+                "land film viscosity {viscosity_pa_s} Pa s must be positive"
+            )));
+        }
+        let geometry = CageLandGeometry {
+            radius: radius_m,
+            width: width_m / stations.max(1) as f64,
+            clearance: gap_m,
+            position: if inner_land {
+                LandPosition::InnerRing
+            } else {
+                LandPosition::OuterRing
+            },
+        };
+        let film = CageLand::new(geometry, &CageLandOptions::default())
+            .map_err(|e| crate::DynError::InvalidInput(format!("hydrodynamic cage land: {e}")))?;
+        Ok(Self {
+            film,
+            viscosity_pa_s,
+            contact,
+        })
+    }
+}
+
+impl CageLandModel for HydrodynamicLand {
+    fn force(&self, k: &LandKinematics) -> LandForce {
+        let metal = self.contact.force(k);
+        // Orthonormal basis (u, v) of the station plane, u along the projection of x.
+        let mut u = perp([1.0, 0.0, 0.0], k.land_axis);
+        if norm(u) < 1e-6 {
+            u = perp([0.0, 1.0, 0.0], k.land_axis);
+        }
+        let u = scale(u, 1.0 / norm(u));
+        let v = cross(k.land_axis, u);
+        let e = perp(sub(k.cage_center, k.land_center), k.land_axis);
+        let edot = perp(sub(k.cage_velocity, k.land_velocity), k.land_axis);
+        let film = self.film.evaluate(
+            [dot(e, u), dot(e, v)],
+            [dot(edot, u), dot(edot, v)],
+            dot(k.cage_omega, k.land_axis),
+            dot(k.land_omega, k.land_axis),
+            self.viscosity_pa_s,
+        );
+        // The film force acts through the cage axis at this station; its friction torque is a
+        // couple about the land axis.
+        let radial = add(scale(u, film.force_n[0]), scale(v, film.force_n[1]));
+        let slip = dot(sub(k.cage_omega, k.land_omega), k.land_axis);
+        let film_power = (film.torque_nm * slip).abs();
+        let couple = scale(k.land_axis, film.torque_nm);
+        if metal.normal_force_n <= 0.0 {
+            return LandForce {
+                force_on_cage_n: radial,
+                point_m: k.cage_center,
+                normal_force_n: norm(radial),
+                power_w: film_power,
+                penetration_m: metal.penetration_m,
+                moment_on_cage_n_m: couple,
+            };
+        }
+        // Film and metal contact together: one resultant at the metal contact point, with the
+        // couple that moves the film force back to the cage axis.
+        let shift = cross(sub(k.cage_center, metal.point_m), radial);
+        LandForce {
+            force_on_cage_n: add(metal.force_on_cage_n, radial),
+            point_m: metal.point_m,
+            normal_force_n: metal.normal_force_n + norm(radial),
+            power_w: metal.power_w + film_power,
+            penetration_m: metal.penetration_m,
+            moment_on_cage_n_m: add(add(metal.moment_on_cage_n_m, couple), shift),
         }
     }
 }

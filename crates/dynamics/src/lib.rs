@@ -99,7 +99,7 @@ pub use ends::EndContactRegime;
 pub use error::DynError;
 pub use initial::{InitialState, RollerStart, StaticRoller, StaticSolution, pure_rolling_spin};
 pub use integrator::{Dopri5, OdeSystem, StepStats};
-pub use land::{CageLandModel, LandForce, LandKinematics, TwoLevelLand};
+pub use land::{CageLandModel, HydrodynamicLand, LandForce, LandKinematics, TwoLevelLand};
 pub use layout::Layout;
 pub use model::RacewayTraction;
 pub use output::{

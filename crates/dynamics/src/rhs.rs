@@ -605,6 +605,7 @@ pub(crate) fn rhs(model: &Model, t: f64, y: &[f64], dy: &mut [f64], diag: &mut D
                 note(diag, "cage ↔ guiding land", 0, lf.penetration_m, div_limit);
                 f_cage = add(f_cage, lf.force_on_cage_n);
                 m_cage = add(m_cage, cross(sub(lf.point_m, cc), lf.force_on_cage_n));
+                m_cage = add(m_cage, lf.moment_on_cage_n_m);
                 if land.inner {
                     f_inner = sub(f_inner, lf.force_on_cage_n);
                 }

@@ -24,13 +24,13 @@ fn line_of(text: &str, needle: &str) -> usize {
 
 #[test]
 fn unknown_key() {
-    let m = error_after("slices = 30", "slices = 30\ncolour = \"red\"");
+    let m = error_after("slices = 10", "slices = 10\ncolour = \"red\"");
     assert!(
         m.contains("roller.colour") && m.contains("unknown key"),
         "{m}"
     );
     let line = line_of(
-        &GOOD.replacen("slices = 30", "slices = 30\ncolour = \"red\"", 1),
+        &GOOD.replacen("slices = 10", "slices = 10\ncolour = \"red\"", 1),
         "colour",
     );
     assert!(m.contains(&format!("bad.toml:{line}:")), "{m}");

@@ -606,14 +606,51 @@ pub fn prepare(
         }
         settings.integrator.tolerance = tol;
     }
-    let sim = Simulation::new(
+    let parameters = ContactParameters::for_bearing(bearing);
+    let cage_temperature = conditions.temperatures.cage_k;
+    let land_contact = rolldyn_dynamics::TwoLevelLand {
+        parameters: parameters.cage_land,
+    };
+    let mut sim = Simulation::new(
         bearing,
         conditions,
-        ContactParameters::for_bearing(bearing),
+        parameters,
         settings,
         RacewayTraction::same(traction),
     )
     .map_err(|e| Failure::Input(e.to_string()))?;
+    // Hydrodynamic cage land (Reynolds crate) wherever a land guides the cage (issue 7 item 3).
+    if let Some(cage) = bearing
+        .cage
+        .as_ref()
+        .filter(|c| c.guidance != rolldyn_geometry::CageGuidance::Rollers)
+    {
+        let inner = cage.guidance == rolldyn_geometry::CageGuidance::InnerLand;
+        let ring = if inner {
+            &bearing.inner_ring
+        } else {
+            &bearing.outer_ring
+        };
+        let width = ring
+            .guiding_land
+            .map_or(cage.width, |l| l.width)
+            .min(cage.width);
+        let viscosity = lubrication
+            .oil
+            .dynamic_viscosity(lubrication.oil.clamp_temperature(cage_temperature))
+            .map_err(|e| Failure::Input(format!("[lubricant]: {e}")))?;
+        let land = rolldyn_dynamics::HydrodynamicLand::new(
+            0.5 * cage.land_diameter().unwrap_or(0.0),
+            width,
+            2,
+            0.5 * cage.floating_clearance,
+            inner,
+            viscosity,
+            land_contact,
+        )
+        .map_err(|e| Failure::Input(e.to_string()))?;
+        sim.set_cage_land_model(Box::new(land));
+    }
     Ok((sim, std::f64::consts::TAU / epicyclic.abs().max(1e-9)))
 }
 
