@@ -771,20 +771,26 @@ fn default_initial_state(model: &Model) -> Result<InitialState, DynError> {
     let wo = c.outer_speed.speed(0.0);
     let wc = model.epicyclic(c.inner_speed.speed(0.0), wo);
     let st = static_solution(model)?;
+    let e = st.ring_displacement_m;
+    let a = model.axis_i;
+    // With a misaligned inner ring the roller starts on the ring's mid-plane (between its ribs):
+    // the plane through the ring centre normal to its axis, z = z_c − ((x−x_c)a_x + (y−y_c)a_y)/a_z.
+    let mid_plane_z = |r: f64, psi: f64| {
+        e[2] - ((r * psi.cos() - e[0]) * a[0] + (r * psi.sin() - e[1]) * a[1]) / a[2]
+    };
     let rollers = st
         .rollers
         .iter()
         .map(|r| RollerStart {
             azimuth_rad: r.azimuth_rad,
             radius_m: r.radius_m,
-            axial_m: 0.0,
+            axial_m: mid_plane_z(r.radius_m, r.azimuth_rad),
             orbital_speed_rad_s: wc,
             spin_speed_rad_s: pure_rolling_spin(wc, wo, r.radius_m, model.rw),
             yaw_rad: 0.0,
             pitch_rad: 0.0,
         })
         .collect();
-    let e = st.ring_displacement_m;
     let cage_center = match model.land {
         Some(l) if l.inner => e,
         _ => [0.0; 3],
@@ -844,8 +850,16 @@ fn pack_state(model: &Model, init: &InitialState) -> Result<Vec<f64>, DynError> 
     let ci = lay.cage();
     y[ci..ci + 3].copy_from_slice(&init.cage_center_m);
     y[ci + 3] = init.cage_angle_rad;
-    y[ci + 6] = 1.0;
-    y[ci + 12] = model.ia_c * init.cage_speed_rad_s;
+    // A cage centred on an inner-ring land starts aligned with that (possibly misaligned) ring,
+    // so that its pockets hold the rollers on the ring's mid-plane.
+    let cage_axis = match model.land {
+        Some(l) if l.inner => model.axis_i,
+        _ => [0.0, 0.0, 1.0],
+    };
+    y[ci + 4..ci + 7].copy_from_slice(&cage_axis);
+    for k in 0..3 {
+        y[ci + 10 + k] = model.ia_c * init.cage_speed_rad_s * cage_axis[k];
+    }
     let ii = lay.inner();
     y[ii..ii + 3].copy_from_slice(&init.inner_ring_center_m);
     if !y.iter().all(|v| v.is_finite()) {
