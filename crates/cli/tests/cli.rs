@@ -1,32 +1,8 @@
 //! End-to-end checks of the `rolldyn` binary: JSON answers and bad-input exit codes.
 
-use std::path::PathBuf;
-use std::process::{Command, Output};
+mod common;
 
-fn rolldyn(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_rolldyn"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .expect("rolldyn runs")
-}
-
-fn example(name: &str) -> String {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("../../examples")
-        .join(name)
-        .display()
-        .to_string()
-}
-
-fn json(output: &Output) -> serde_json::Value {
-    assert!(
-        output.status.success(),
-        "{}",
-        String::from_utf8_lossy(&output.stderr)
-    );
-    serde_json::from_slice(&output.stdout).expect("stdout is JSON")
-}
+use common::{example, json, rolldyn};
 
 #[test]
 fn contact_json_has_the_documented_fields() {

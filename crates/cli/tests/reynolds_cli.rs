@@ -2,33 +2,11 @@
 //! JSON fields, a Raimondi–Boyd point, the analytic (Martin) rigid line-contact load, load steps
 //! and bad-input exit codes. Grids are kept coarse where the check allows (debug builds).
 
+mod common;
+
+use common::{example, json, rolldyn};
 use std::path::PathBuf;
-use std::process::{Command, Output};
-
-fn rolldyn(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_rolldyn"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .expect("rolldyn runs")
-}
-
-fn example(name: &str) -> String {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("../../examples")
-        .join(name)
-        .display()
-        .to_string()
-}
-
-fn json(output: &Output) -> serde_json::Value {
-    assert!(
-        output.status.success(),
-        "{}",
-        String::from_utf8_lossy(&output.stderr)
-    );
-    serde_json::from_slice(&output.stdout).expect("stdout is JSON")
-}
+use std::process::Output;
 
 fn num(v: &serde_json::Value, key: &str) -> f64 {
     v[key]

@@ -181,13 +181,13 @@ impl CylindricalRollerBearing {
                 ),
             ));
         }
-        if let Some(c) = self.clearance.roller_rib_axial {
-            if !(c >= 0.0) {
-                return Err(GeometryError::new(
-                    "clearance.roller_rib_axial",
-                    "must not be negative",
-                ));
-            }
+        if let Some(c) = self.clearance.roller_rib_axial
+            && !(c >= 0.0)
+        {
+            return Err(GeometryError::new(
+                "clearance.roller_rib_axial",
+                "must not be negative",
+            ));
         }
         for (key, ring) in [
             ("inner_ring", &self.inner_ring),

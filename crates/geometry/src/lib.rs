@@ -3,6 +3,9 @@
 //! Everything here is in SI units and free of file formats: the `rolldyn-model` crate reads
 //! model files and builds these types; analyses consume them.
 
+// Validation reads `!(x > 0.0)` on purpose: it is also true for NaN, which must be rejected.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
 mod bearing;
 mod cage;
 mod error;

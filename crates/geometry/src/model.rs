@@ -17,7 +17,9 @@ pub struct RollerRacewayPair {
     pub misalignment: Misalignment,
 }
 
-/// Everything a model file can describe.
+/// Everything a model file can describe. (One value per model file, so the size difference
+/// between the variants does not matter.)
+#[allow(clippy::large_enum_variant)]
 #[derive(Debug, Clone, PartialEq)]
 pub enum BearingModel {
     Cylindrical(CylindricalRollerBearing),

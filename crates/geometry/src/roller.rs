@@ -99,17 +99,17 @@ impl Roller {
             ));
         }
         validate_profile(&self.profile, self.diameter, "roller.profile")?;
-        if let EndFace::Sphere { radius } = self.end_face {
-            if radius < 0.5 * self.diameter {
-                return Err(GeometryError::new(
-                    "roller.end_face.radius",
-                    format!(
-                        "spherical end radius {:.3} mm is smaller than the roller radius {:.3} mm",
-                        radius * 1e3,
-                        0.5e3 * self.diameter
-                    ),
-                ));
-            }
+        if let EndFace::Sphere { radius } = self.end_face
+            && radius < 0.5 * self.diameter
+        {
+            return Err(GeometryError::new(
+                "roller.end_face.radius",
+                format!(
+                    "spherical end radius {:.3} mm is smaller than the roller radius {:.3} mm",
+                    radius * 1e3,
+                    0.5e3 * self.diameter
+                ),
+            ));
         }
         Ok(())
     }

@@ -237,32 +237,32 @@ impl Lubricant {
                 ("thermal_conductivity", p.thermal_conductivity),
             ];
             for (name, value) in positive {
-                if let Some(v) = value {
-                    if !(v.is_finite() && v > 0.0) {
-                        return bad(format!(
-                            "{name} is {v} at {:.1} K; it must be finite and positive",
-                            t
-                        ));
-                    }
+                if let Some(v) = value
+                    && !(v.is_finite() && v > 0.0)
+                {
+                    return bad(format!(
+                        "{name} is {v} at {:.1} K; it must be finite and positive",
+                        t
+                    ));
                 }
             }
             for (name, value) in [("beta0", p.beta0), ("kappa", p.kappa)] {
-                if let Some(v) = value {
-                    if !v.is_finite() || v < -1e-12 {
-                        return bad(format!(
-                            "{name} is {v} at {t:.1} K; it must be finite and not negative"
-                        ));
-                    }
+                if let Some(v) = value
+                    && (!v.is_finite() || v < -1e-12)
+                {
+                    return bad(format!(
+                        "{name} is {v} at {t:.1} K; it must be finite and not negative"
+                    ));
                 }
             }
         }
-        if let Some(m) = self.mixed_friction {
-            if !(m.lambda_bd >= 0.0 && m.lambda_hd > m.lambda_bd) {
-                return bad(format!(
-                    "mixed_friction needs 0 ≤ lambda_bd < lambda_hd, got {} and {}",
-                    m.lambda_bd, m.lambda_hd
-                ));
-            }
+        if let Some(m) = self.mixed_friction
+            && !(m.lambda_bd >= 0.0 && m.lambda_hd > m.lambda_bd)
+        {
+            return bad(format!(
+                "mixed_friction needs 0 ≤ lambda_bd < lambda_hd, got {} and {}",
+                m.lambda_bd, m.lambda_hd
+            ));
         }
         Ok(())
     }

@@ -92,13 +92,13 @@ pub(crate) fn operating(section: Option<&OperatingSection>) -> Result<Operating,
             housing: kelvin(t.housing, "housing")?,
         },
     };
-    if let Some(load) = operating.radial_load {
-        if load < 0.0 {
-            return Err(GeometryError::new(
-                "operating.radial_load",
-                "must not be negative",
-            ));
-        }
+    if let Some(load) = operating.radial_load
+        && load < 0.0
+    {
+        return Err(GeometryError::new(
+            "operating.radial_load",
+            "must not be negative",
+        ));
     }
     Ok(operating)
 }

@@ -120,49 +120,88 @@ impl CageLandModel for ShortBearing {
         let k = rails * eta * u * l * l * l / (4.0 * c * c);
         let kc = inp.cage_mass_kg * c * inp.cage_speed_rad_s * inp.cage_speed_rad_s;
         let f_ext = inp.roller_force_n.max(0.0);
-        let g = |e: f64| k * Self::load_function(e) - kc * e - f_ext;
+        let capacity = |e: f64| k * Self::load_function(e);
         let e_max = self.max_eccentricity_ratio.clamp(0.0, 0.999);
-        let (eps, saturated) = if f_ext == 0.0 && k * PI >= kc {
-            (0.0, false)
-        } else if g(e_max) <= 0.0 {
-            (e_max, true)
-        } else {
-            // g(0) = −F_ext ≤ 0 < g(e_max): bisection (g is continuous; 60 halvings → 1e-18)
-            let (mut a, mut b) = (0.0, e_max);
-            for _ in 0..60 {
-                let m = 0.5 * (a + b);
-                if g(m) > 0.0 {
-                    b = m;
-                } else {
-                    a = m;
-                }
-            }
-            (0.5 * (a + b), false)
-        };
+        let (eps, saturated) =
+            film_equilibrium(&capacity, kc, f_ext, e_max, f_ext == 0.0 && k * PI >= kc);
         let dw = inp.cage_speed_rad_s - inp.land_speed_rad_s;
-        let pressing = f_ext + kc * eps;
-        // asperity contact carries what the film cannot (sign smoothed over ±1 mm/s sliding)
-        let excess = if saturated {
-            (pressing - k * Self::load_function(eps)).max(0.0)
+        let film_torque =
+            -rails * 2.0 * PI * eta * r * r * r * l * dw / (c * (1.0 - eps * eps).sqrt());
+        land_output(
+            inp,
+            eps,
+            saturated,
+            capacity(eps),
+            film_torque,
+            kc,
+            self.boundary_friction,
+        )
+    }
+}
+
+/// Eccentricity ratio at which the film carries the pressing force: the root of
+/// `capacity(ε) − k_c ε − F_ext` on [0, ε_max] (bisection, 60 halvings; capacity − k_c ε is
+/// continuous and the root is bracketed by g(0) = −F_ext ≤ 0 < g(ε_max)), ε_max with
+/// `saturated` when the film cannot carry it, 0 when `unloaded`.
+fn film_equilibrium(
+    capacity: &dyn Fn(f64) -> f64,
+    kc: f64,
+    f_ext: f64,
+    e_max: f64,
+    unloaded: bool,
+) -> (f64, bool) {
+    let g = |e: f64| capacity(e) - kc * e - f_ext;
+    if unloaded {
+        return (0.0, false);
+    }
+    if g(e_max) <= 0.0 {
+        return (e_max, true);
+    }
+    let (mut a, mut b) = (0.0, e_max);
+    for _ in 0..60 {
+        let m = 0.5 * (a + b);
+        if g(m) > 0.0 {
+            b = m;
+        } else {
+            a = m;
+        }
+    }
+    (0.5 * (a + b), false)
+}
+
+/// Land output at the equilibrium eccentricity: the film torque plus asperity friction on the
+/// pressing force the film cannot carry (sign smoothed over ±1 mm/s sliding).
+fn land_output(
+    inp: &CageLandInput,
+    eps: f64,
+    saturated: bool,
+    film_capacity: f64,
+    film_torque: f64,
+    kc: f64,
+    boundary_friction: f64,
+) -> CageLandOutput {
+    let r = inp.land_radius_m;
+    let dw = inp.cage_speed_rad_s - inp.land_speed_rad_s;
+    let pressing = inp.roller_force_n.max(0.0) + kc * eps;
+    let excess = if saturated {
+        (pressing - film_capacity).max(0.0)
+    } else {
+        0.0
+    };
+    let sign = rolldyn_lubrication::traction::regularisation(dw * r, 1e-3);
+    let torque = film_torque - sign * boundary_friction * excess * r;
+    CageLandOutput {
+        torque_on_cage_n_m: torque,
+        pressing_force_n: pressing,
+        eccentricity_ratio: eps,
+        min_film_m: inp.radial_clearance_m * (1.0 - eps),
+        friction_coefficient: if pressing > 0.0 {
+            torque.abs() / (r * pressing)
         } else {
             0.0
-        };
-        let sign = rolldyn_lubrication::traction::regularisation(dw * r, 1e-3);
-        let torque = -rails * 2.0 * PI * eta * r * r * r * l * dw / (c * (1.0 - eps * eps).sqrt())
-            - sign * self.boundary_friction * excess * r;
-        CageLandOutput {
-            torque_on_cage_n_m: torque,
-            pressing_force_n: pressing,
-            eccentricity_ratio: eps,
-            min_film_m: c * (1.0 - eps),
-            friction_coefficient: if pressing > 0.0 {
-                torque.abs() / (r * pressing)
-            } else {
-                0.0
-            },
-            power_w: (torque * dw).abs(),
-            saturated,
-        }
+        },
+        power_w: (torque * dw).abs(),
+        saturated,
     }
 }
 
@@ -308,13 +347,9 @@ impl FiniteLand {
         land: &rolldyn_reynolds::cage_land::CageLand,
         inp: &CageLandInput,
     ) -> CageLandOutput {
-        let (c, r, eta) = (
-            inp.radial_clearance_m,
-            inp.land_radius_m,
-            inp.viscosity_pa_s,
-        );
+        let (c, eta) = (inp.radial_clearance_m, inp.viscosity_pa_s);
         let rails = inp.rails.max(1) as f64;
-        if !(eta > 0.0) {
+        if eta.is_nan() || eta <= 0.0 {
             return CageLandOutput::default();
         }
         // In the frame of the load direction the film sees the cage and land speeds relative to it.
@@ -329,46 +364,17 @@ impl FiniteLand {
         };
         let kc = inp.cage_mass_kg * c * inp.cage_speed_rad_s * inp.cage_speed_rad_s;
         let f_ext = inp.roller_force_n.max(0.0);
-        let g = |e: f64| capacity(e) - kc * e - f_ext;
-        let e_max = self.max_eccentricity_ratio;
-        let (eps, saturated) = if f_ext == 0.0 && g(1e-3) >= 0.0 {
-            (0.0, false)
-        } else if g(e_max) <= 0.0 {
-            (e_max, true)
-        } else {
-            // g(0) = −F_ext ≤ 0 < g(e_max): bisection, 50 halvings (the table is smooth in ε).
-            let (mut a, mut b) = (0.0, e_max);
-            for _ in 0..50 {
-                let m = 0.5 * (a + b);
-                if g(m) > 0.0 {
-                    b = m;
-                } else {
-                    a = m;
-                }
-            }
-            (0.5 * (a + b), false)
-        };
-        let dw = inp.cage_speed_rad_s - inp.land_speed_rad_s;
-        let pressing = f_ext + kc * eps;
-        let excess = if saturated {
-            (pressing - capacity(eps)).max(0.0)
-        } else {
-            0.0
-        };
-        let sign = rolldyn_lubrication::traction::regularisation(dw * r, 1e-3);
-        let torque = rails * at(eps).torque_nm - sign * self.boundary_friction * excess * r;
-        CageLandOutput {
-            torque_on_cage_n_m: torque,
-            pressing_force_n: pressing,
-            eccentricity_ratio: eps,
-            min_film_m: c * (1.0 - eps),
-            friction_coefficient: if pressing > 0.0 {
-                torque.abs() / (r * pressing)
-            } else {
-                0.0
-            },
-            power_w: (torque * dw).abs(),
+        let unloaded = f_ext == 0.0 && capacity(1e-3) >= kc * 1e-3;
+        let (eps, saturated) =
+            film_equilibrium(&capacity, kc, f_ext, self.max_eccentricity_ratio, unloaded);
+        land_output(
+            inp,
+            eps,
             saturated,
-        }
+            capacity(eps),
+            rails * at(eps).torque_nm,
+            kc,
+            self.boundary_friction,
+        )
     }
 }

@@ -25,4 +25,4 @@ mod file;
 mod run;
 
 pub use file::{Analysis, SweepError, SweepFile, Variant, apply_overrides};
-pub use run::{RunOptions, Shard, VariantOutcome, collect, run};
+pub use run::{RunOptions, Shard, VariantAnalysis, VariantOutcome, collect, run};

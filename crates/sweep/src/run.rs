@@ -40,6 +40,10 @@ impl FromStr for Shard {
     }
 }
 
+/// The analysis of one variant: its summary figures (SI) or an error message.
+pub type VariantAnalysis<'a> =
+    dyn Fn(&Variant, rolldyn_model::Model) -> Result<BTreeMap<String, f64>, String> + Sync + 'a;
+
 /// How to run a sweep.
 #[derive(Debug, Clone)]
 pub struct RunOptions {
@@ -81,9 +85,7 @@ fn finished(out: &Path, name: &str) -> bool {
 pub fn run(
     sweep: &SweepFile,
     options: &RunOptions,
-    analysis: &(
-         dyn Fn(&Variant, rolldyn_model::Model) -> Result<BTreeMap<String, f64>, String> + Sync
-     ),
+    analysis: &VariantAnalysis<'_>,
     progress: &(dyn Fn(&VariantOutcome) + Sync),
 ) -> Result<Vec<VariantOutcome>, SweepError> {
     let dir = options.out_dir.join("variants");

@@ -120,12 +120,12 @@ impl Decimated {
     }
 
     fn push(&mut self, x: f64, y: f64) {
-        if self.seen % self.stride == 0 {
+        if self.seen.is_multiple_of(self.stride) {
             if self.points.len() == self.capacity {
                 self.points = self.points.iter().step_by(2).copied().collect();
                 self.stride *= 2;
             }
-            if self.seen % self.stride == 0 {
+            if self.seen.is_multiple_of(self.stride) {
                 self.points.push((x, y));
             }
         }
