@@ -37,10 +37,15 @@ const BEARING: [&str; 11] = [
     "3000rpm",
 ];
 
-fn journal(extra: &[&str]) -> Output {
-    let mut a: Vec<&str> = BEARING.to_vec();
+/// Runs `base` followed by `extra` arguments.
+fn with(base: &[&str], extra: &[&str]) -> Output {
+    let mut a: Vec<&str> = base.to_vec();
     a.extend_from_slice(extra);
     rolldyn(&a)
+}
+
+fn journal(extra: &[&str]) -> Output {
+    with(&BEARING, extra)
 }
 
 /// Raimondi–Boyd chart point L/D = 1, ε = 0.6 (full bearing, Reynolds cavitation, film from the
@@ -215,9 +220,7 @@ const CONTACT: [&str; 7] = [
 ];
 
 fn ehl(extra: &[&str]) -> Output {
-    let mut a: Vec<&str> = CONTACT.to_vec();
-    a.extend_from_slice(extra);
-    rolldyn(&a)
+    with(&CONTACT, extra)
 }
 
 /// Rigid isoviscous contact at h_m = 1 µm (seed 002 §3.5): the load per length equals the
