@@ -417,6 +417,15 @@ impl Simulation {
             max_pocket: d.pocket.iter().fold(0.0_f64, |a, &b| a.max(b)),
             ..StepValues::default()
         };
+        let ci = m.layout.cage();
+        let (x, yc, vx, vy) = (
+            self.ig.y()[ci],
+            self.ig.y()[ci + 1],
+            self.ig.y()[ci + 7],
+            self.ig.y()[ci + 8],
+        );
+        v.orbit_moment = x * vy - yc * vx;
+        v.orbit_r2 = x * x + yc * yc;
         let mut power = d.land_power;
         for j in 0..m.z {
             power += d.inner.power[j]

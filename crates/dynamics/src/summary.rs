@@ -19,6 +19,10 @@ pub(crate) struct StepValues {
     pub max_srr: f64,
     pub max_rib: f64,
     pub max_pocket: f64,
+    /// z-component of r × v of the cage centre (r in the radial plane), m²/s
+    pub orbit_moment: f64,
+    /// |r|² of the cage centre in the radial plane, m²
+    pub orbit_r2: f64,
     /// inner contact state with the largest slip among loaded rollers
     pub worst: Option<ContactState>,
 }
@@ -86,6 +90,8 @@ pub(crate) struct Window {
     pub min_margin: f64,
     pub max_rib: f64,
     pub max_pocket: f64,
+    pub orbit_moment_int: f64,
+    pub orbit_r2_int: f64,
 }
 
 impl Window {
@@ -109,11 +115,15 @@ impl Window {
             min_margin: f64::INFINITY,
             max_rib: 0.0,
             max_pocket: 0.0,
+            orbit_moment_int: 0.0,
+            orbit_r2_int: 0.0,
         }
     }
 
     pub fn add(&mut self, h: f64, v: &StepValues) {
         self.dur += h;
+        self.orbit_moment_int += h * v.orbit_moment;
+        self.orbit_r2_int += h * v.orbit_r2;
         self.speed_int += h * v.cage_speed;
         self.slip_int += h * v.slip;
         self.power_int += h * v.power;
@@ -157,13 +167,20 @@ impl Window {
         }
     }
 
-    /// Whirl ratio = cage rotation / cage-centre orbit over the window.
-    pub fn whirl(&self, cage_angle: f64, orbit: f64) -> f64 {
-        let d_orbit = orbit - self.orbit0;
-        if d_orbit.abs() > 1e-9 {
-            (cage_angle - self.cage_angle0) / d_orbit
+    /// Whirl ratio = mean cage spin / orbital speed of the cage centre over the window. The
+    /// orbital speed is the |r|²-weighted mean ∫(r × v)_z dt / ∫|r|² dt, so that jitter of a
+    /// nearly centred cage (small |r|) does not dominate, as the unwrapped angle of the centre
+    /// would. NaN when the centre does not move.
+    pub fn whirl(&self, cage_angle: f64, _orbit: f64) -> f64 {
+        if !(self.dur > 0.0 && self.orbit_r2_int > 0.0) {
+            return f64::NAN;
+        }
+        let orbital = self.orbit_moment_int / self.orbit_r2_int;
+        let spin = (cage_angle - self.cage_angle0) / self.dur;
+        if orbital.abs() > 1e-9 * spin.abs().max(1.0) {
+            spin / orbital
         } else {
-            f64::INFINITY
+            f64::NAN
         }
     }
 
@@ -186,6 +203,8 @@ impl Window {
             self.min_margin,
             self.max_rib,
             self.max_pocket,
+            self.orbit_moment_int,
+            self.orbit_r2_int,
         ] {
             w.f64(x);
         }
@@ -195,7 +214,7 @@ impl Window {
     }
 
     pub fn load(r: &mut Reader) -> Result<Self, DynError> {
-        let mut v = [0.0; 17];
+        let mut v = [0.0; 19];
         for x in v.iter_mut() {
             *x = r.f64()?;
         }
@@ -221,6 +240,8 @@ impl Window {
             min_margin: v[14],
             max_rib: v[15],
             max_pocket: v[16],
+            orbit_moment_int: v[17],
+            orbit_r2_int: v[18],
             worst: unpack(&p),
         })
     }
