@@ -9,11 +9,7 @@ use super::simulate::print_summary;
 use crate::failure::Failure;
 use crate::output::{load_model, print_json};
 use rolldyn_contact::roller_raceway::{ContactReport, RollerRacewayContact};
-use rolldyn_dynamics::conditions::{ContactTemperatures, InnerRingLoad, OperatingConditions};
 use rolldyn_dynamics::output::NullSink;
-use rolldyn_dynamics::parameters::ContactParameters;
-use rolldyn_dynamics::settings::DynamicsSettings;
-use rolldyn_dynamics::{RacewayTraction, Simulation};
 use rolldyn_geometry::BearingModel;
 use rolldyn_quasistatic::QuasiStaticOptions;
 use rolldyn_units::ARCMIN;
@@ -54,9 +50,6 @@ pub fn run(args: Args) -> Result<(), Failure> {
         .lubrication
         .as_ref()
         .ok_or_else(|| missing("[lubricant]"))?;
-    let traction = lubrication
-        .traction_model()
-        .map_err(|e| Failure::Run(e.to_string()))?;
     let summary = summarise(&model.bearing, speed, 0.0);
     if !args.json {
         describe(&summary).iter().for_each(|l| println!("{l}"));
@@ -104,27 +97,9 @@ pub fn run(args: Args) -> Result<(), Failure> {
         );
     }
 
-    let mut conditions = OperatingConditions::new(speed, load);
-    if op.load_rotates {
-        conditions.loads = vec![InnerRingLoad::Rotating {
-            magnitude_n: load,
-            phase_rad: 0.0,
-        }];
-    }
-    conditions.temperatures = ContactTemperatures::uniform(oil_t);
-    let mut sim = Simulation::new(
-        bearing,
-        conditions,
-        ContactParameters::for_bearing(bearing),
-        DynamicsSettings {
-            output_step_s: 0.0,
-            ..DynamicsSettings::default()
-        },
-        RacewayTraction::same(traction),
-    )
-    .map_err(|e| Failure::Run(e.to_string()))?;
-    let t_end = args.revolutions.max(0.1) * std::f64::consts::TAU
-        / sim.epicyclic_cage_speed().abs().max(1e-9);
+    let (mut sim, revolution) =
+        super::simulate::prepare(&model, &super::simulate::Overrides::default(), 0.0, None)?;
+    let t_end = args.revolutions.max(0.1) * revolution;
     let dynamics = sim
         .run_until(t_end, &mut NullSink, &mut |_| {})
         .map_err(|e| Failure::Run(format!("dynamics: {e}")))?;
