@@ -240,7 +240,7 @@ pub fn mn_7_5u() -> Lubricant {
 }
 
 /// IPM-10 — seed 001 test oil, name only. seed 001 requires μ0(t), α(t), λ(t), β.
-/// Range: not given (placeholder 0…200 °C).
+/// Range: not given by the seed; the entry accepts 0…200 °C (nothing in it depends on temperature).
 ///
 /// Missing: everything.
 pub fn ipm_10() -> Lubricant {
@@ -256,7 +256,7 @@ pub fn ipm_10() -> Lubricant {
 }
 
 /// seed 002 roller–plate test oil: μ = 0.024 Pa·s, α = 0.75×10⁻⁸ 1/Pa (temperature not given: the
-/// laws are constants; range placeholder 0…200 °C).
+/// laws are constants, so the entry accepts 0…200 °C).
 pub fn seed002_test_oil() -> Lubricant {
     Lubricant {
         viscosity: Some(ViscosityLaw::Dynamic {
