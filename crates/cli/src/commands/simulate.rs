@@ -611,12 +611,17 @@ pub fn prepare(
     let land_contact = rolldyn_dynamics::TwoLevelLand {
         parameters: parameters.cage_land,
     };
-    let mut sim = Simulation::new(
+    let traction = RacewayTraction::same(traction);
+    let mut initial = Simulation::default_initial_state(
         bearing,
-        conditions,
+        conditions.clone(),
         parameters,
-        settings,
-        RacewayTraction::same(traction),
+        traction.clone(),
+    )
+    .map_err(|e| Failure::Input(e.to_string()))?;
+    start_at_quasi_static_speeds(bearing, &conditions, lubrication, &mut initial);
+    let mut sim = Simulation::with_initial_state(
+        bearing, conditions, parameters, settings, traction, &initial,
     )
     .map_err(|e| Failure::Input(e.to_string()))?;
     // Hydrodynamic cage land (Reynolds crate) wherever a land guides the cage (issue 7 item 3).
@@ -652,6 +657,52 @@ pub fn prepare(
         sim.set_cage_land_model(Box::new(land));
     }
     Ok((sim, std::f64::consts::TAU / epicyclic.abs().max(1e-9)))
+}
+
+/// Issue 6 "start from the quasi-static solution": the rollers keep the static load
+/// distribution of the default start, but cage and roller orbit speeds take the quasi-static
+/// cage speed (Muraki friction, short-bearing land), spins pure rolling on the outer raceway at
+/// that speed. When the quasi-static model cannot solve the point the epicyclic start is kept.
+fn start_at_quasi_static_speeds(
+    bearing: &rolldyn_geometry::CylindricalRollerBearing,
+    conditions: &OperatingConditions,
+    lubrication: &rolldyn_model::Lubrication,
+    initial: &mut rolldyn_dynamics::InitialState,
+) {
+    let (wi, wo) = (
+        conditions.inner_speed.speed(0.0),
+        conditions.outer_speed.speed(0.0),
+    );
+    let load = conditions.inner_ring_force(0.0);
+    let t = conditions.temperatures;
+    let mut qs = rolldyn_quasistatic::OperatingConditions::new(
+        wi,
+        wo,
+        load[0].hypot(load[1]),
+        lubrication.oil.clone(),
+        t.inner_raceway_k,
+    );
+    qs.temperatures.outer_ring = t.outer_raceway_k;
+    qs.temperatures.cage = t.cage_k;
+    qs.friction = rolldyn_quasistatic::FrictionModel::Muraki {
+        settings: rolldyn_lubrication::MurakiSettings {
+            rheology: lubrication.rheology,
+            ..Default::default()
+        },
+        mixed: None,
+        film: rolldyn_lubrication::FilmFormula::Auto,
+    };
+    let options = rolldyn_quasistatic::QuasiStaticOptions::default();
+    let Ok(result) = rolldyn_quasistatic::solve(bearing, &qs, &options) else {
+        return;
+    };
+    let wc = result.cage_speed_rad_s;
+    initial.cage_speed_rad_s = wc;
+    for r in &mut initial.rollers {
+        r.orbital_speed_rad_s = wc;
+        r.spin_speed_rad_s =
+            rolldyn_dynamics::pure_rolling_spin(wc, wo, r.radius_m, 0.5 * bearing.roller.diameter);
+    }
 }
 
 impl Duration {
