@@ -216,14 +216,14 @@ pub(crate) fn validate_profile(
         Polyline { points } => {
             if points.len() < 2 {
                 return Err(GeometryError::new(
-                    format!("{key}.points"),
+                    format!("{key}.x"),
                     "needs at least two points",
                 ));
             }
             for (i, w) in points.windows(2).enumerate() {
                 if !(w[1].0 > w[0].0) {
                     return Err(GeometryError::new(
-                        format!("{key}.points[{}]", i + 1),
+                        format!("{key}.x[{}]", i + 1),
                         "axial positions must increase strictly",
                     ));
                 }
@@ -234,7 +234,7 @@ pub(crate) fn validate_profile(
                 .find(|(_, p)| !p.1.is_finite() || p.1 < 0.0 || p.1 >= 0.5 * diameter)
             {
                 return Err(GeometryError::new(
-                    format!("{key}.points[{i}]"),
+                    format!("{key}.drop[{i}]"),
                     "drop must be ≥ 0 and smaller than the roller radius",
                 ));
             }

@@ -94,3 +94,39 @@ fn operating_and_lubricant_sections() {
     let nu = oil.kinematic_viscosity(373.15).unwrap();
     assert!((nu / 3.2e-6 - 1.0).abs() < 1e-9, "{nu}");
 }
+
+/// The Johns–Gohar and polyline profile families load from a model file: the Johns–Gohar crown
+/// grows monotonically toward the ends (design load 2 kN on the 32206 contact), the polyline is
+/// interpolated linearly and may be asymmetric (worn profile).
+#[test]
+fn johns_gohar_and_polyline_profiles() {
+    let base = std::fs::read_to_string(examples().join("contact/32206-straight.toml")).unwrap();
+    let jg = base.replace(
+        "kind = \"straight\"",
+        "kind = \"johns-gohar\"\ndesign_load = \"2 kN\"\nchamfer = { axial = \"0.5 mm\", radial = \"0.5 mm\", radius = \"0.6 mm\" }",
+    );
+    let m = parse(&jg, "jg.toml").unwrap_or_else(|e| panic!("{e}"));
+    let p = &m.bearing.roller().profile;
+    let (z1, z2, z3) = (p.drop(1e-3), p.drop(2.5e-3), p.drop(3.2e-3));
+    assert!(
+        0.0 < z1 && z1 < z2 && z2 < z3 && z3 < 20e-6,
+        "{z1} {z2} {z3}"
+    );
+    assert!((p.drop(-2.5e-3) - z2).abs() < 1e-15, "symmetric");
+    let poly = base.replace(
+        "kind = \"straight\"",
+        "kind = \"polyline\"\nx = [\"-3.75 mm\", \"0 mm\", \"3.75 mm\"]\ndrop = [\"4 um\", \"0 um\", \"1 um\"]",
+    );
+    let m = parse(&poly, "poly.toml").unwrap_or_else(|e| panic!("{e}"));
+    let p = &m.bearing.roller().profile;
+    assert!((p.drop(-1.875e-3) - 2e-6).abs() < 1e-15 && (p.drop(1.875e-3) - 0.5e-6).abs() < 1e-15);
+    let bad = base.replace(
+        "kind = \"straight\"",
+        "kind = \"polyline\"\nx = [\"1 mm\", \"0 mm\"]\ndrop = [\"1 um\", \"0 um\"]",
+    );
+    let e = parse(&bad, "bad.toml").unwrap_err().to_string();
+    assert!(
+        e.contains("roller.profile.x[1]") && e.contains("increase"),
+        "{e}"
+    );
+}
