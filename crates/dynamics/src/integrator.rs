@@ -266,13 +266,7 @@ impl Dopri5 {
                 self.k.swap(0, 6);
                 self.t = t + h;
                 self.stats.accepted += 1;
-                let e = err.max(1e-10);
-                let mut fac = set.safety * e.powf(-expo1) * self.err_old.powf(set.pi_beta);
-                fac = fac.clamp(set.min_shrink, set.max_growth);
-                if self.last_rejected {
-                    fac = fac.min(1.0);
-                }
-                self.h = (h * fac).min(set.max_step_s);
+                self.h = accepted_step(h, err, self.err_old, self.last_rejected, expo1, set);
                 self.err_old = err.max(1e-4);
                 self.last_rejected = false;
                 return Ok(());
@@ -317,6 +311,26 @@ impl Dopri5 {
     pub(crate) fn dense_parts_mut(&mut self) -> &mut [Vec<f64>; 5] {
         &mut self.dense
     }
+}
+
+/// Next step size after an accepted step: PI controller (Hairer, Nørsett & Wanner I, §II.4;
+/// Gustafsson) `h · safety · err^(−expo1) · err_old^β`, bounded by the shrink/growth limits,
+/// no growth right after a rejection, at most `max_step_s`. Shared by DOPRI5 and the
+/// Rosenbrock-W method (which pass their own `expo1`).
+pub(crate) fn accepted_step(
+    h: f64,
+    err: f64,
+    err_old: f64,
+    last_rejected: bool,
+    expo1: f64,
+    set: &IntegratorSettings,
+) -> f64 {
+    let mut fac = set.safety * err.max(1e-10).powf(-expo1) * err_old.powf(set.pi_beta);
+    fac = fac.clamp(set.min_shrink, set.max_growth);
+    if last_rejected {
+        fac = fac.min(1.0);
+    }
+    (h * fac).min(set.max_step_s)
 }
 
 #[cfg(test)]

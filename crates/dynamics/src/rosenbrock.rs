@@ -531,13 +531,14 @@ impl RosenbrockW {
                 self.dense_h = h;
                 self.t = t + h;
                 self.stats.accepted += 1;
-                let e = err.max(1e-10);
-                let mut fac = set.safety * e.powf(-expo1) * self.err_old.powf(set.pi_beta);
-                fac = fac.clamp(set.min_shrink, set.max_growth);
-                if self.last_rejected {
-                    fac = fac.min(1.0);
-                }
-                self.h = (h * fac).min(set.max_step_s);
+                self.h = crate::integrator::accepted_step(
+                    h,
+                    err,
+                    self.err_old,
+                    self.last_rejected,
+                    expo1,
+                    set,
+                );
                 self.err_old = err.max(1e-4);
                 self.last_rejected = false;
                 self.jac_age += 1;
