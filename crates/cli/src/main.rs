@@ -39,6 +39,8 @@ enum Command {
     Simulate(commands::simulate::Args),
     /// Run a table of model variants in parallel (any model key can vary).
     Sweep(commands::sweep::Args),
+    /// Engine start-up: dynamics at the frozen time points of the model's schedules.
+    Startup(commands::startup::Args),
     /// Re-run a seed's validation study and write its tables and plots.
     Study(commands::study::Args),
     /// Finite journal bearing by the Reynolds equation: load, attitude, friction, K and C.
@@ -62,6 +64,7 @@ fn main() -> ExitCode {
         Command::Contact(args) => commands::contact::run(args),
         Command::Study(args) => commands::study::run(args),
         Command::Sweep(args) => commands::sweep::run(args),
+        Command::Startup(args) => commands::startup::run(args),
         Command::Simulate(args) => commands::simulate::run(args),
         Command::Skid(args) => commands::skid::run(args),
         Command::Oils(args) => commands::oils::run(args),

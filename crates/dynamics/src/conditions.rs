@@ -45,18 +45,7 @@ impl SpeedLaw {
                     from + (to - from) * (t - t0_s) / (t1_s - t0_s)
                 }
             }
-            SpeedLaw::Schedule(p) => {
-                let Some(first) = p.first() else { return 0.0 };
-                if t <= first.0 {
-                    return first.1;
-                }
-                for w in p.windows(2) {
-                    if t <= w[1].0 {
-                        return w[0].1 + (w[1].1 - w[0].1) * (t - w[0].0) / (w[1].0 - w[0].0);
-                    }
-                }
-                p[p.len() - 1].1
-            }
+            SpeedLaw::Schedule(p) => piecewise_linear(p, t),
         }
     }
 
@@ -96,6 +85,21 @@ impl SpeedLaw {
             _ => Ok(()),
         }
     }
+}
+
+/// Value at `t` of the piecewise-linear function through `pts` (constant beyond the ends; 0
+/// for no points).
+fn piecewise_linear(pts: &[(f64, f64)], t: f64) -> f64 {
+    let Some(first) = pts.first() else { return 0.0 };
+    if t <= first.0 {
+        return first.1;
+    }
+    for w in pts.windows(2) {
+        if t <= w[1].0 {
+            return w[0].1 + (w[1].1 - w[0].1) * (t - w[0].0) / (w[1].0 - w[0].0);
+        }
+    }
+    pts[pts.len() - 1].1
 }
 
 /// ∫₀ᵗ of the piecewise-linear function through `pts` (constant beyond the ends).
@@ -145,6 +149,38 @@ pub enum InnerRingLoad {
         /// direction at t = 0, rad from +x
         phase_rad: f64,
     },
+    /// Force fixed in space with one step: `before_n` for t ≤ `at_s`, `after_n` for t > `at_s`
+    /// (SPEC §3.7: 1032930 gearbox load 3708.8 N before, 406.5 N after starter cut-off). At the
+    /// instant of the step the force still has its `before_n` value.
+    FixedStep {
+        /// force vector up to and including `at_s`, N
+        before_n: V3,
+        /// force vector after `at_s`, N
+        after_n: V3,
+        /// time of the step, s
+        at_s: f64,
+    },
+}
+
+impl InnerRingLoad {
+    /// The fixed-in-space part of this load at `t`, N (zero for rotating loads).
+    fn fixed_force(&self, t: f64) -> V3 {
+        match *self {
+            InnerRingLoad::Fixed { force_n } => force_n,
+            InnerRingLoad::FixedStep {
+                before_n,
+                after_n,
+                at_s,
+            } => {
+                if t <= at_s {
+                    before_n
+                } else {
+                    after_n
+                }
+            }
+            InnerRingLoad::Rotating { .. } | InnerRingLoad::Unbalance { .. } => [0.0; 3],
+        }
+    }
 }
 
 /// How the inner ring may move (its spin is always prescribed).
@@ -216,6 +252,11 @@ pub struct OperatingConditions {
     /// Direction of the misalignment: the inner-ring axis tilts toward this azimuth, rad from
     /// +x (default 0).
     pub misalignment_azimuth_rad: f64,
+    /// Operating radial (diametral) clearance over time, `(t s, G_r m)` piecewise linear and
+    /// constant beyond the ends (SPEC §3.7 "operating clearance as a function of time"); `None`
+    /// keeps the bearing's clearance. The change against the bearing's clearance moves the outer
+    /// raceway radially by half of it.
+    pub clearance_schedule: Option<Vec<(f64, f64)>>,
 }
 
 /// Cage drag coefficient of 2002834 at 100 °C from seed 000 §3.1.1 (M = −662 ω in N·mm and
@@ -239,7 +280,15 @@ impl OperatingConditions {
             cage_drag_n_m_s: 0.0,
             misalignment_rad: 0.0,
             misalignment_azimuth_rad: 0.0,
+            clearance_schedule: None,
         }
+    }
+
+    /// Operating radial clearance at `t` from the schedule, m (`None` without a schedule).
+    pub fn clearance_at(&self, t: f64) -> Option<f64> {
+        self.clearance_schedule
+            .as_ref()
+            .map(|p| piecewise_linear(p, t))
     }
 
     /// Total external force on the inner ring at time `t`, N.
@@ -247,7 +296,8 @@ impl OperatingConditions {
         let mut f = [0.0; 3];
         for l in &self.loads {
             match *l {
-                InnerRingLoad::Fixed { force_n } => {
+                InnerRingLoad::Fixed { .. } | InnerRingLoad::FixedStep { .. } => {
+                    let force_n = l.fixed_force(t);
                     for k in 0..3 {
                         f[k] += force_n[k];
                     }
@@ -275,6 +325,84 @@ impl OperatingConditions {
         f
     }
 
+    /// Sum of the loads fixed in space at `t` (fixed loads and load steps), N.
+    pub fn fixed_force(&self, t: f64) -> V3 {
+        let mut f = [0.0; 3];
+        for l in &self.loads {
+            let g = l.fixed_force(t);
+            for k in 0..3 {
+                f[k] += g[k];
+            }
+        }
+        f
+    }
+
+    /// Magnitude of the sum of the loads rotating with the shaft at `t` (rotating loads and
+    /// the unbalance force `U ω²`), N. They all turn with the inner ring, so the magnitude of
+    /// their sum does not depend on the shaft angle.
+    pub fn rotating_force_magnitude(&self, t: f64) -> f64 {
+        let w = self.inner_speed.speed(t);
+        let (mut x, mut y) = (0.0, 0.0);
+        for l in &self.loads {
+            let (m, phase) = match *l {
+                InnerRingLoad::Rotating {
+                    magnitude_n,
+                    phase_rad,
+                } => (magnitude_n, phase_rad),
+                InnerRingLoad::Unbalance {
+                    unbalance_kg_m,
+                    phase_rad,
+                } => (unbalance_kg_m * w * w, phase_rad),
+                InnerRingLoad::Fixed { .. } | InnerRingLoad::FixedStep { .. } => continue,
+            };
+            x += m * phase.cos();
+            y += m * phase.sin();
+        }
+        x.hypot(y)
+    }
+
+    /// The conditions frozen at time `t` (seed 000 §3.1.2, SPEC §3.1: quasi-steady runs at
+    /// frozen points of a start-up): speeds become constants `ω(t)`, load steps the fixed force
+    /// they have at `t` (the value before the step when `t` is the step time), rotating loads
+    /// and the unbalance keep turning with the shaft from the direction they have at `t`, and a
+    /// clearance schedule becomes its value at `t`. Temperatures, drag and misalignment are
+    /// already constant.
+    pub fn frozen_at(&self, t: f64) -> OperatingConditions {
+        let angle = self.inner_speed.angle(t);
+        let loads = self
+            .loads
+            .iter()
+            .map(|l| match *l {
+                InnerRingLoad::Fixed { .. } | InnerRingLoad::FixedStep { .. } => {
+                    InnerRingLoad::Fixed {
+                        force_n: l.fixed_force(t),
+                    }
+                }
+                InnerRingLoad::Rotating {
+                    magnitude_n,
+                    phase_rad,
+                } => InnerRingLoad::Rotating {
+                    magnitude_n,
+                    phase_rad: (phase_rad + angle).rem_euclid(std::f64::consts::TAU),
+                },
+                InnerRingLoad::Unbalance {
+                    unbalance_kg_m,
+                    phase_rad,
+                } => InnerRingLoad::Unbalance {
+                    unbalance_kg_m,
+                    phase_rad: (phase_rad + angle).rem_euclid(std::f64::consts::TAU),
+                },
+            })
+            .collect();
+        OperatingConditions {
+            inner_speed: SpeedLaw::Constant(self.inner_speed.speed(t)),
+            outer_speed: SpeedLaw::Constant(self.outer_speed.speed(t)),
+            loads,
+            clearance_schedule: self.clearance_at(t).map(|g| vec![(0.0, g)]),
+            ..self.clone()
+        }
+    }
+
     pub(crate) fn validate(&self) -> Result<(), DynError> {
         self.inner_speed.validate("inner_speed")?;
         self.outer_speed.validate("outer_speed")?;
@@ -297,6 +425,9 @@ impl OperatingConditions {
                 "misalignment must be finite and below 0.02 rad (69′)".into(),
             ));
         }
+        if let Some(p) = &self.clearance_schedule {
+            SpeedLaw::Schedule(p.clone()).validate("clearance_schedule")?;
+        }
         if !self.gravity_m_s2.iter().all(|g| g.is_finite()) {
             return Err(DynError::InvalidInput("gravity must be finite".into()));
         }
@@ -311,6 +442,11 @@ impl OperatingConditions {
                     unbalance_kg_m,
                     phase_rad,
                 } => unbalance_kg_m.is_finite() && phase_rad.is_finite(),
+                InnerRingLoad::FixedStep {
+                    before_n,
+                    after_n,
+                    at_s,
+                } => before_n.iter().chain(&after_n).all(|x| x.is_finite()) && at_s.is_finite(),
             };
             if !ok {
                 return Err(DynError::InvalidInput("loads must be finite".into()));
@@ -341,5 +477,105 @@ mod tests {
         assert!((law.angle(3.0) - 60.0).abs() < 1e-12);
         assert!((law.speed(1.5) - 20.0).abs() < 1e-12);
         assert!((SpeedLaw::Constant(5.0).angle(2.0) - 10.0).abs() < 1e-12);
+    }
+
+    const RPM: f64 = std::f64::consts::PI / 30.0;
+
+    /// SPEC §3.7: F = U ω² rotating with the shaft equals a rotating load of that magnitude
+    /// (1032930: 3.1625e-3 kg·m gives 1376 N at 6300 rpm, 2919 N at 9175 rpm).
+    #[test]
+    fn unbalance_force_is_u_omega_squared() {
+        for (rpm, expected) in [(6300.0, 1376.0), (9175.0, 2919.0)] {
+            let w = rpm * RPM;
+            let mut unbalance = OperatingConditions::new(w, 0.0);
+            unbalance.loads = vec![InnerRingLoad::Unbalance {
+                unbalance_kg_m: 3.1625e-3,
+                phase_rad: 0.3,
+            }];
+            let mut rotating = unbalance.clone();
+            rotating.loads = vec![InnerRingLoad::Rotating {
+                magnitude_n: 3.1625e-3 * w * w,
+                phase_rad: 0.3,
+            }];
+            for t in [0.0, 1.3e-3, 0.25] {
+                let (a, b) = (unbalance.inner_ring_force(t), rotating.inner_ring_force(t));
+                for k in 0..3 {
+                    assert!((a[k] - b[k]).abs() < 1e-9 * expected, "{rpm} rpm, t = {t}");
+                }
+                assert!((a[0].hypot(a[1]) - expected).abs() < 0.5, "{rpm} rpm");
+            }
+            assert!((unbalance.rotating_force_magnitude(0.0) - expected).abs() < 0.5);
+        }
+    }
+
+    /// SPEC §3.7: the gearbox load steps from 3708.8 N to 406.5 N at starter cut-off; the
+    /// value at the step time itself is the one before.
+    #[test]
+    fn load_step_switches_after_its_time() {
+        let mut c = OperatingConditions::new(600.0, 0.0);
+        c.loads = vec![
+            InnerRingLoad::Fixed {
+                force_n: [0.0, -578.8, 0.0],
+            },
+            InnerRingLoad::FixedStep {
+                before_n: [0.0, -3708.8, 0.0],
+                after_n: [0.0, -406.5, 0.0],
+                at_s: 82.0988,
+            },
+        ];
+        assert!(c.validate().is_ok());
+        assert_eq!(c.inner_ring_force(0.0), [0.0, -578.8 - 3708.8, 0.0]);
+        assert_eq!(c.inner_ring_force(82.0988), [0.0, -578.8 - 3708.8, 0.0]);
+        assert_eq!(c.inner_ring_force(82.0989), [0.0, -578.8 - 406.5, 0.0]);
+        assert_eq!(c.fixed_force(270.0), [0.0, -578.8 - 406.5, 0.0]);
+        assert_eq!(c.rotating_force_magnitude(10.0), 0.0);
+        c.loads.push(InnerRingLoad::FixedStep {
+            before_n: [f64::NAN, 0.0, 0.0],
+            after_n: [0.0; 3],
+            at_s: 1.0,
+        });
+        assert!(c.validate().is_err());
+    }
+
+    /// Seed 000 §3.1.2: the frozen conditions at t carry the schedules' values at t as
+    /// constants.
+    #[test]
+    fn frozen_conditions_take_the_schedule_values() {
+        let mut c = OperatingConditions::new(0.0, 0.0);
+        c.inner_speed = SpeedLaw::Schedule(vec![
+            (0.0, 0.0),
+            (82.0988, 6300.0 * RPM),
+            (270.4988, 9175.0 * RPM),
+        ]);
+        c.loads = vec![
+            InnerRingLoad::FixedStep {
+                before_n: [0.0, -3708.8, 0.0],
+                after_n: [0.0, -406.5, 0.0],
+                at_s: 82.0988,
+            },
+            InnerRingLoad::Unbalance {
+                unbalance_kg_m: 3.1625e-3,
+                phase_rad: 0.0,
+            },
+        ];
+        c.clearance_schedule = Some(vec![(0.0, 20e-6), (270.4988, -4e-6)]);
+        let at_cut_off = c.frozen_at(82.0988);
+        assert_eq!(at_cut_off.inner_speed, SpeedLaw::Constant(6300.0 * RPM));
+        assert_eq!(at_cut_off.fixed_force(1.0), [0.0, -3708.8, 0.0]);
+        assert!((at_cut_off.rotating_force_magnitude(0.0) - 1376.0).abs() < 0.5);
+        let after = c.frozen_at(85.2988);
+        assert_eq!(after.fixed_force(0.0), [0.0, -406.5, 0.0]);
+        let end = c.frozen_at(270.4988);
+        assert!((end.inner_speed.speed(0.0) - 9175.0 * RPM).abs() < 1e-9);
+        let g = end.clearance_at(0.0).unwrap_or(f64::NAN);
+        assert!((g + 4e-6).abs() < 1e-15);
+        assert_eq!(end.clearance_at(5.0), Some(g));
+        assert!(end.validate().is_ok());
+        // the unbalance keeps the direction it has at the frozen time
+        let f_sched = c.inner_ring_force(270.4988);
+        let f_frozen = end.inner_ring_force(0.0);
+        for k in 0..2 {
+            assert!((f_sched[k] - f_frozen[k]).abs() < 1e-6 * 2919.0);
+        }
     }
 }

@@ -37,7 +37,7 @@
 //! the overlap of end face and rib face (SPEC §6.7), boundary friction otherwise.
 
 use crate::parameters::{EndFriction, RollerEndParameters};
-use crate::vec3::{V3, add, axpy, cross, dot, norm, perp, scale, sub};
+use crate::vec3::{V3, add, axpy, cross, dot, norm, perp, power, scale, sub};
 use rolldyn_contact::damping::SliceDamping;
 use rolldyn_lubrication::traction::kragelsky;
 use rolldyn_lubrication::{ContactGeometry, ContactState, TractionModel, traction};
@@ -171,7 +171,7 @@ pub(crate) fn deepest(
         return None;
     }
     // cheap upper bound first: most ends are clear of most faces most of the time
-    if delta0 + r * p_lin.hypot(q_lin) + face.max_protrusion() <= 0.0 {
+    if delta0 + r * (p_lin * p_lin + q_lin * q_lin).sqrt() + face.max_protrusion() <= 0.0 {
         return None;
     }
     let cs = end.sphere_curvature;
@@ -226,7 +226,7 @@ pub(crate) fn deepest(
         let qa = q_lin.abs();
         let dlt = face.rho_hi - rho_p;
         let mut cand = [xa, xb, xa, xa, xa];
-        let hyp = pp.hypot(qa);
+        let hyp = (pp * pp + qa * qa).sqrt();
         if hyp > 0.0 {
             cand[2] = r * pp / hyp;
         }
@@ -346,7 +346,7 @@ pub(crate) fn end_force(
     let vrel = sub(v_roll, v_body);
     let delta_dot = -dot(vrel, n);
     let pp = &params.contact;
-    let elastic = pp.k_p * dp.delta.powf(pp.exponent);
+    let elastic = pp.k_p * power(dp.delta, pp.exponent);
     let q = damping.normal_force(elastic, dp.delta, delta_dot);
     if q <= 0.0 {
         return None;

@@ -3,7 +3,7 @@
 //! pair 14; next issue: hydrodynamic land).
 
 use crate::parameters::PairParameters;
-use crate::vec3::{V3, add, cross, dot, norm, perp, scale, sub};
+use crate::vec3::{V3, add, cross, dot, norm, perp, power, scale, sub};
 use rolldyn_contact::damping::SliceDamping;
 
 /// Kinematics of the cage at one axial station of its guiding land (all inertial frame, SI).
@@ -87,7 +87,7 @@ impl CageLandModel for TwoLevelLand {
         }
         let n = scale(e, 1.0 / ecc);
         let share = 1.0 / k.stations.max(1) as f64;
-        let elastic = share * p.k_p * delta.powf(p.exponent);
+        let elastic = share * p.k_p * power(delta, p.exponent);
         let delta_dot = dot(sub(k.cage_velocity, k.land_velocity), n);
         let damping = SliceDamping::new(share * p.c_h, p.d);
         let fn_ = damping.normal_force(elastic, delta, delta_dot);

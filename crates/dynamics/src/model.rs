@@ -52,6 +52,9 @@ pub(crate) struct RacewaySlices {
     pub temperature_k: f64,
     /// raceway generatrix (None = straight)
     pub profile: Option<Profile>,
+    /// smallest raceway drop over the roller length (≤ 0), m — bounds the approach in the
+    /// contact pre-check
+    pub min_drop: f64,
 }
 
 /// Cage guiding-land geometry.
@@ -150,12 +153,18 @@ pub(crate) struct Model {
     pub slice_x: Vec<f64>,
     pub slice_len: Vec<f64>,
     pub slice_drop: Vec<f64>,
+    /// largest |x| of a slice centre along the roller axis, m
+    pub slice_reach: f64,
+    /// smallest slice drop (≤ 0), m
+    pub min_slice_drop: f64,
     pub inner: RacewaySlices,
     pub outer: RacewaySlices,
     /// inner raceway radius R_i, m
     pub ri: f64,
     /// effective outer raceway radius R_i + D_w + G_r/2, m
     pub ro: f64,
+    /// operating radial clearance G_r of the bearing, m
+    pub clearance: f64,
     pub traction: RacewayTraction,
     // cage
     pub m_c: f64,
@@ -246,6 +255,12 @@ impl Model {
             let e1 = &roller.material;
             let e2 = &ring.material;
             let reduced_modulus = 2.0 / (e1.compliance() + e2.compliance());
+            let min_drop = ring.raceway_profile.as_ref().map_or(0.0, |pr| {
+                // the profile clamps beyond its ends: sampling its length finds its minimum
+                (0..=400)
+                    .map(|i| pr.drop(roller.length * (i as f64 / 400.0 - 0.5) * 2.0))
+                    .fold(0.0, f64::min)
+            });
             Ok(RacewaySlices {
                 k,
                 n: law.exponent(),
@@ -255,6 +270,7 @@ impl Model {
                 roughness: [roller.roughness_ra, ring.roughness_ra],
                 temperature_k,
                 profile: ring.raceway_profile.clone(),
+                min_drop,
             })
         };
         let t = &conditions.temperatures;
@@ -381,10 +397,13 @@ impl Model {
             slice_x: stack.position.clone(),
             slice_len: stack.length.clone(),
             slice_drop: stack.drop.clone(),
+            slice_reach: stack.position.iter().fold(0.0, |a, x| a.max(x.abs())),
+            min_slice_drop: stack.drop.iter().fold(0.0, |a, &d| a.min(d)),
             inner,
             outer,
             ri,
             ro,
+            clearance: bearing.clearance.radial,
             traction,
             m_c: cmp.mass,
             ia_c: cmp.axial_inertia,

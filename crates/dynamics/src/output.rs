@@ -129,8 +129,14 @@ pub struct RevolutionSummary {
     /// scuffing margin s_cr/s at the contact with the largest relative slip (∞ when the
     /// friction curve has no maximum in range or the check is off)
     pub scuffing_margin: f64,
-    /// whirl ratio: cage spin / orbital speed of the cage centre
+    /// whirl ratio: cage spin / orbital speed of the cage centre (NaN when the centre does not
+    /// orbit — it sweeps less than half a turn in the revolution)
     pub whirl_ratio: f64,
+    /// precession (seed 000 §3.1.1): the cage centre orbits with the cage speed, |whirl ratio −
+    /// 1| ≤ `DynamicsSettings::precession_band`
+    pub precession: bool,
+    /// RMS distance of the cage centre from the bearing axis, m
+    pub cage_orbit_radius_m: f64,
     /// mean total friction power of all contacts, W
     pub friction_power_mean_w: f64,
     /// largest roller-end ↔ rib force (one roller, both ends), N (seed 000 Table 3.2)
@@ -165,8 +171,12 @@ pub struct RunSummary {
     pub max_relative_slip: f64,
     /// smallest s_cr/s (∞ if no check gave a value)
     pub min_scuffing_margin: f64,
-    /// cage spin / cage-centre orbital speed over the window
+    /// cage spin / cage-centre orbital speed over the window (NaN when the centre does not orbit)
     pub whirl_ratio: f64,
+    /// the cage precesses: |whirl ratio − 1| ≤ `DynamicsSettings::precession_band`
+    pub precession: bool,
+    /// RMS distance of the cage centre from the bearing axis over the window, m
+    pub cage_orbit_radius_m: f64,
     /// simulated time at the end, s
     pub simulated_time_s: f64,
     /// wall-clock time of all `run_until` calls, s

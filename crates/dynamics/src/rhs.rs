@@ -8,7 +8,7 @@ use crate::ends::{BodyKin, EndContactRegime, EndForce, EndLubrication, RollerSta
 use crate::land::LandKinematics;
 use crate::layout::{CAGE_DOF, INNER_DOF, ROLLER_DOF};
 use crate::model::{Model, RacewaySlices};
-use crate::vec3::{V3, add, axpy, cross, dot, norm, perp, scale, sub, unit_or};
+use crate::vec3::{V3, add, axpy, cross, dot, norm, perp, power, scale, sub, unit_or};
 use rolldyn_contact::damping::SliceDamping;
 use rolldyn_lubrication::{ContactGeometry, ContactState, traction};
 
@@ -110,10 +110,12 @@ pub(crate) struct Diagnostics {
     pub inner_speed: f64,
     pub outer_speed: f64,
     pub violation: Option<Violation>,
+    /// scratch: loaded slices of the contact being evaluated
+    hits: Vec<SliceHit>,
 }
 
 impl Diagnostics {
-    pub fn new(z: usize) -> Self {
+    pub fn new(z: usize, slices: usize) -> Self {
         Self {
             inner: ContactTable::new(z),
             outer: ContactTable::new(z),
@@ -132,6 +134,7 @@ impl Diagnostics {
             inner_speed: 0.0,
             outer_speed: 0.0,
             violation: None,
+            hits: Vec::with_capacity(slices),
         }
     }
 }
@@ -164,12 +167,13 @@ struct RollerKin {
     orbit: f64,
 }
 
-/// Kinematics of a ring (centre, velocity, axis, spin).
+/// Kinematics of a ring (centre, velocity, axis, spin) and its raceway radius at this time.
 struct RingKin {
     o: V3,
     v: V3,
     axis: V3,
     spin: f64,
+    raceway_radius: f64,
 }
 
 #[inline]
@@ -183,8 +187,32 @@ fn note(diag: &mut Diagnostics, what: &'static str, index: usize, penetration: f
     }
 }
 
+/// A loaded slice of the contact being evaluated (scratch of [`raceway_contacts`]).
+#[derive(Debug, Clone, Copy, Default)]
+pub(crate) struct SliceHit {
+    slice: usize,
+    /// normal force, N
+    q: f64,
+    /// unit normal from the ring into the roller
+    n: V3,
+    /// contact point relative to the roller centre, m
+    r_cp: V3,
+    /// tangential relative velocity (roller − ring), m/s
+    vt: V3,
+    /// its magnitude, m/s
+    vs: f64,
+    /// entrainment speed in the roller's orbital frame, m/s
+    u: f64,
+}
+
 /// Slices of roller `j` on one raceway. Adds the force and moment on the roller to `f`, `m` and
 /// returns the force on the ring.
+///
+/// Two passes: the slice law and damping give the loaded slices (SPEC §2.1–2.2); the EHL film is
+/// evaluated once for the whole roller–raceway contact (its total load over the loaded length
+/// and the load-weighted entrainment speed — the film of a line contact is set in the common
+/// inlet and depends on the load only weakly, seed 000 (2.17)), then the traction per slice with
+/// its own pressure, half-width and sliding velocity (SPEC §3.3).
 #[allow(clippy::too_many_arguments)]
 #[inline]
 fn raceway_contacts(
@@ -196,31 +224,49 @@ fn raceway_contacts(
     ring: &RingKin,
     f: &mut V3,
     m: &mut V3,
-    table: &mut crate::rhs::ContactTable,
+    table: &mut ContactTable,
+    hits: &mut Vec<SliceHit>,
     limit: f64,
     violation: &mut Option<Violation>,
 ) -> V3 {
-    let tmodel = if inner {
-        &model.traction.inner
-    } else {
-        &model.traction.outer
-    };
     let mut f_ring = [0.0; 3];
     table.reset(j);
+    hits.clear();
+    // Slice centres p = c + x a: their offset from the ring axis is dp(x) = dp_c + x a⊥, so
+    // ρ(x)² = A + 2Bx + Cx². The distance from the axis is 1-Lipschitz, which bounds every
+    // slice's approach from the centre's: no slice can touch when the bound is ≤ 0.
+    let d_c = sub(rk.c, ring.o);
+    let zeta_c = dot(d_c, ring.axis);
+    let dp_c = axpy(d_c, -zeta_c, ring.axis);
+    let a_ax = dot(rk.a, ring.axis);
+    let a_perp = axpy(rk.a, -a_ax, ring.axis);
+    let (qa, qb, qc) = (dot(dp_c, dp_c), dot(dp_c, a_perp), dot(a_perp, a_perp));
+    let rho_c = qa.sqrt();
+    let reach = model.slice_reach * qc.sqrt();
+    let bound = if inner {
+        ring.raceway_radius + model.rw - (rho_c - reach)
+    } else {
+        rho_c + reach + model.rw - ring.raceway_radius
+    } - model.min_slice_drop
+        - rs.min_drop;
+    if bound <= 0.0 {
+        table.finish(j);
+        return f_ring;
+    }
+    let mut load = 0.0;
+    let mut length = 0.0;
+    let mut entrainment = 0.0;
     for s in 0..model.slice_x.len() {
-        let p = axpy(rk.c, model.slice_x[s], rk.a);
-        let d = sub(p, ring.o);
-        let zeta = dot(d, ring.axis);
-        let dp = axpy(d, -zeta, ring.axis);
-        let rho = norm(dp);
+        let x = model.slice_x[s];
+        let rho = (qa + x * (2.0 * qb + x * qc)).max(0.0).sqrt();
         let race_drop = match &rs.profile {
-            Some(pr) => pr.drop(zeta),
+            Some(pr) => pr.drop(zeta_c + x * a_ax),
             None => 0.0,
         };
         let delta = if inner {
-            model.ri + model.rw - rho
+            ring.raceway_radius + model.rw - rho
         } else {
-            rho + model.rw - model.ro
+            rho + model.rw - ring.raceway_radius
         } - model.slice_drop[s]
             - race_drop;
         if delta <= 0.0 || rho == 0.0 {
@@ -237,8 +283,9 @@ fn raceway_contacts(
                 penetration: delta,
             });
         }
+        let p = axpy(rk.c, x, rk.a);
         // outward unit normal of the ring axis through the slice centre
-        let n_out = scale(dp, 1.0 / rho);
+        let n_out = scale(axpy(dp_c, x, a_perp), 1.0 / rho);
         // unit normal pointing from the ring into the roller
         let n = if inner { n_out } else { scale(n_out, -1.0) };
         let cp = axpy(p, -model.rw, n);
@@ -247,48 +294,73 @@ fn raceway_contacts(
         let v_ring = add(ring.v, scale(cross(ring.axis, sub(cp, ring.o)), ring.spin));
         let vrel = sub(v_roll, v_ring);
         let delta_dot = -dot(vrel, n);
-        let elastic = rs.k[s] * delta.powf(rs.n);
+        let elastic = rs.k[s] * power(delta, rs.n);
         let q = rs.damping[s].normal_force(elastic, delta, delta_dot);
         if q <= 0.0 {
             continue;
         }
         let vt = perp(vrel, n);
-        let vs = norm(vt);
         // rolling direction and entrainment speed in the roller's orbital frame (SPEC §3.5)
         let t_dir = cross(ring.axis, n_out);
         let w_frame = [-rk.orbit * cp[1], rk.orbit * cp[0], 0.0];
         let u = 0.5 * (dot(v_roll, t_dir) + dot(v_ring, t_dir)) - dot(w_frame, t_dir);
-        let state = ContactState {
-            normal_force_n: q,
-            geometry: ContactGeometry::Line {
-                length_m: model.slice_len[s],
-            },
-            reduced_radius_m: rs.reduced_radius,
-            reduced_modulus_pa: rs.reduced_modulus,
-            rolling_speed_m_s: u,
-            sliding_speed_m_s: vs,
-            temperature_k: rs.temperature_k,
-            roughness_ra_m: rs.roughness,
-            film_thickness_m: None,
+        load += q;
+        length += model.slice_len[s];
+        entrainment += q * u;
+        hits.push(SliceHit {
+            slice: s,
+            q,
+            n,
+            r_cp,
+            vt,
+            vs: norm(vt),
+            u,
+        });
+    }
+    if hits.is_empty() {
+        table.finish(j);
+        return f_ring;
+    }
+    let tmodel = if inner {
+        &model.traction.inner
+    } else {
+        &model.traction.outer
+    };
+    let state = |q: f64, length_m: f64, u: f64, vs: f64| ContactState {
+        normal_force_n: q,
+        geometry: ContactGeometry::Line { length_m },
+        reduced_radius_m: rs.reduced_radius,
+        reduced_modulus_pa: rs.reduced_modulus,
+        rolling_speed_m_s: u,
+        sliding_speed_m_s: vs,
+        temperature_k: rs.temperature_k,
+        roughness_ra_m: rs.roughness,
+        film_thickness_m: None,
+    };
+    let prepared = tmodel.prepare_contact(&state(load, length, entrainment / load, 0.0), None);
+    for h in hits.iter() {
+        let st = state(h.q, model.slice_len[h.slice], h.u, h.vs);
+        let tr = match &prepared {
+            Some(prep) => tmodel.traction_prepared(prep, &st),
+            None => traction(&st, tmodel),
         };
-        let tr = traction(&state, tmodel);
-        let mut fs = scale(n, q);
-        if vs > 0.0 {
-            fs = axpy(fs, -tr.coefficient * q / vs, vt);
+        let mut fs = scale(h.n, h.q);
+        if h.vs > 0.0 {
+            fs = axpy(fs, -tr.coefficient * h.q / h.vs, h.vt);
         }
         *f = add(*f, fs);
-        *m = add(*m, cross(r_cp, fs));
+        *m = add(*m, cross(h.r_cp, fs));
         f_ring = sub(f_ring, fs);
-        table.force[j] += q;
-        table.sliding[j] += q * vs;
-        table.rolling[j] += q * u.abs();
-        table.film[j] += q * tr.film_minimum_m;
-        table.lambda[j] += q * tr.lambda.min(1e3);
-        table.mu[j] += q * tr.coefficient;
-        table.power[j] += tr.coefficient.abs() * q * vs;
-        if q > table.worst_q[j] {
-            table.worst_q[j] = q;
-            table.worst[j] = Some(state);
+        table.force[j] += h.q;
+        table.sliding[j] += h.q * h.vs;
+        table.rolling[j] += h.q * h.u.abs();
+        table.film[j] += h.q * tr.film_minimum_m;
+        table.lambda[j] += h.q * tr.lambda.min(1e3);
+        table.mu[j] += h.q * tr.coefficient;
+        table.power[j] += tr.coefficient.abs() * h.q * h.vs;
+        if h.q > table.worst_q[j] {
+            table.worst_q[j] = h.q;
+            table.worst[j] = Some(st);
         }
     }
     table.finish(j);
@@ -314,12 +386,18 @@ pub(crate) fn rhs(model: &Model, t: f64, y: &[f64], dy: &mut [f64], diag: &mut D
         v: rd(y, ii + 3),
         axis: model.axis_i,
         spin: wi,
+        raceway_radius: model.ri,
     };
     let outer = RingKin {
         o: [0.0; 3],
         v: [0.0; 3],
         axis: [0.0, 0.0, 1.0],
         spin: wo,
+        // SPEC §3.7: a scheduled operating clearance moves the outer raceway by half its change
+        raceway_radius: model.ro
+            + cond
+                .clearance_at(t)
+                .map_or(0.0, |g| 0.5 * (g - model.clearance)),
     };
     let mut f_inner = [0.0; 3];
 
@@ -370,6 +448,7 @@ pub(crate) fn rhs(model: &Model, t: f64, y: &[f64], dy: &mut [f64], diag: &mut D
             &mut f,
             &mut m,
             &mut diag.inner,
+            &mut diag.hits,
             div_limit,
             &mut diag.violation,
         );
@@ -384,6 +463,7 @@ pub(crate) fn rhs(model: &Model, t: f64, y: &[f64], dy: &mut [f64], diag: &mut D
             &mut f,
             &mut m,
             &mut diag.outer,
+            &mut diag.hits,
             div_limit,
             &mut diag.violation,
         );
@@ -414,7 +494,7 @@ pub(crate) fn rhs(model: &Model, t: f64, y: &[f64], dy: &mut [f64], diag: &mut D
                 let v_cage = add(vcc, cross(wc, sub(cp, cc)));
                 let vrel = sub(v_roll, v_cage);
                 let delta_dot = -dot(vrel, n);
-                let elastic = bar_share * bar.k_p * delta.powf(bar.exponent);
+                let elastic = bar_share * bar.k_p * power(delta, bar.exponent);
                 let qn = bar_damping.normal_force(elastic, delta, delta_dot);
                 if qn <= 0.0 {
                     continue;

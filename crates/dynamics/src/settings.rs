@@ -112,6 +112,18 @@ pub struct DynamicsSettings {
     /// default is twice the 2002834 bar bound: a tilt beyond it means a roller passed through a
     /// bar, i.e. a real divergence, not rattling inside the pocket.
     pub divergence_tilt_rad: f64,
+    /// Precession (seed 000 §3.1.1: "whirl ratio ≈ 1", variants 6, 36, 37 with 1.00–1.02) is
+    /// reported when |whirl ratio − 1| is at most this band (default 0.05: the seed's
+    /// non-precessing variants lie at ≤ 0.80 or ≥ 1.10, its precessing ones within 0.02, and
+    /// variant 35 at 0.97 counts as precessing too).
+    pub precession_band: f64,
+}
+
+impl DynamicsSettings {
+    /// Whether a whirl ratio means precession (see [`Self::precession_band`]).
+    pub fn is_precession(&self, whirl_ratio: f64) -> bool {
+        (whirl_ratio - 1.0).abs() <= self.precession_band
+    }
 }
 
 impl Default for DynamicsSettings {
@@ -125,6 +137,7 @@ impl Default for DynamicsSettings {
             slip_load_fraction: 0.05,
             divergence_penetration_m: 1e-4,
             divergence_tilt_rad: 0.1,
+            precession_band: 0.05,
         }
     }
 }

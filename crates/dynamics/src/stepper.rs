@@ -7,6 +7,8 @@ use crate::integrator::{Dopri5, OdeSystem, StepError, StepStats};
 use crate::rosenbrock::RosenbrockW;
 use crate::settings::IntegratorSettings;
 
+/// One stepper per simulation, so the size difference of the variants costs nothing worth a box.
+#[allow(clippy::large_enum_variant)]
 #[derive(Debug, Clone)]
 pub(crate) enum Stepper {
     Dopri5(Dopri5),

@@ -170,15 +170,26 @@ impl Window {
     /// Whirl ratio = mean cage spin / orbital speed of the cage centre over the window. The
     /// orbital speed is the |r|²-weighted mean ∫(r × v)_z dt / ∫|r|² dt, so that jitter of a
     /// nearly centred cage (small |r|) does not dominate, as the unwrapped angle of the centre
-    /// would. NaN when the centre does not move.
-    pub fn whirl(&self, cage_angle: f64, _orbit: f64) -> f64 {
+    /// would. NaN unless the centre orbits: its mean orbital speed must sweep at least half a
+    /// turn over the window — a cage centre that sits in one place (pressed against the land or
+    /// located by the rollers) has no defined whirl, and the ratio of its jitter would be noise.
+    pub fn whirl(&self, cage_angle: f64) -> f64 {
         if !(self.dur > 0.0 && self.orbit_r2_int > 0.0) {
             return f64::NAN;
         }
         let orbital = self.orbit_moment_int / self.orbit_r2_int;
         let spin = (cage_angle - self.cage_angle0) / self.dur;
-        if orbital.abs() > 1e-9 * spin.abs().max(1.0) {
+        if (orbital * self.dur).abs() >= std::f64::consts::PI {
             spin / orbital
+        } else {
+            f64::NAN
+        }
+    }
+
+    /// RMS distance of the cage centre from the bearing axis over the window, m.
+    pub fn orbit_radius_rms(&self) -> f64 {
+        if self.dur > 0.0 {
+            (self.orbit_r2_int / self.dur).sqrt()
         } else {
             f64::NAN
         }
@@ -244,5 +255,60 @@ impl Window {
             orbit_r2_int: v[18],
             worst: unpack(&p),
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A cage spinning at `spin` whose centre circles at radius `r` with angular speed
+    /// `orbital` (plus a fixed offset `offset` along x), sampled over `dur`.
+    fn window(spin: f64, orbital: f64, r: f64, offset: f64, dur: f64) -> (Window, f64) {
+        let mut w = Window::start(0.0, 0.0, 0.0);
+        let n = 20_000;
+        let h = dur / n as f64;
+        for i in 0..n {
+            let t = (i as f64 + 0.5) * h;
+            let (s, c) = (orbital * t).sin_cos();
+            let (x, y) = (offset + r * c, r * s);
+            let (vx, vy) = (-r * orbital * s, r * orbital * c);
+            let v = StepValues {
+                orbit_moment: x * vy - y * vx,
+                orbit_r2: x * x + y * y,
+                ..Default::default()
+            };
+            w.add(h, &v);
+        }
+        (w, spin * dur)
+    }
+
+    #[test]
+    fn synchronous_orbit_is_precession() {
+        let settings = crate::DynamicsSettings::default();
+        let (w, angle) = window(300.0, 300.0, 50e-6, 0.0, 2.0 * std::f64::consts::PI / 300.0);
+        let ratio = w.whirl(angle);
+        assert!((ratio - 1.0).abs() < 1e-6, "{ratio}");
+        assert!(settings.is_precession(ratio));
+        assert!((w.orbit_radius_rms() - 50e-6).abs() < 1e-9);
+        // a slower orbit: whirl ratio 2 (half a turn per cage revolution) is still defined
+        let (w, angle) = window(300.0, 150.0, 50e-6, 0.0, 2.0 * std::f64::consts::PI / 300.0);
+        let ratio = w.whirl(angle);
+        assert!((ratio - 2.0).abs() < 1e-3, "{ratio}");
+        assert!(!settings.is_precession(ratio));
+    }
+
+    #[test]
+    fn a_parked_cage_centre_has_no_whirl() {
+        // centre pressed 120 µm off the axis, jittering by 1 µm at 20 kHz
+        let (w, angle) = window(
+            300.0,
+            2.0 * std::f64::consts::PI * 2e4,
+            1e-6,
+            120e-6,
+            2.0 * std::f64::consts::PI / 300.0,
+        );
+        assert!(w.whirl(angle).is_nan());
+        assert!(!crate::DynamicsSettings::default().is_precession(w.whirl(angle)));
     }
 }

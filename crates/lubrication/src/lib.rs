@@ -63,6 +63,6 @@ pub use regime::{FrictionRegime, LambdaDefinition, LubricationRegime};
 pub use scuffing::{CriticalSlip, SlipSearch, critical_slip};
 pub use traction::{
     BoundaryFriction, FrictionLaw, Hydrodynamic, LubricatedFriction, MixedLimits, MurakiSettings,
-    Rheology, Seed001Settings, SmallShearRate, Traction, TractionModel, TwoLevelLaw, Warnings,
-    traction,
+    PreparedContact, Rheology, Seed001Settings, SmallShearRate, Traction, TractionModel,
+    TwoLevelLaw, Warnings, traction, traction_with_film,
 };

@@ -13,7 +13,10 @@ pub mod schema;
 
 pub use convert::DEFAULT_SLICES;
 pub use error::ModelError;
-pub use operation::{Lubrication, Operating, Temperatures};
+pub use operation::{
+    DEFAULT_STARTUP_REVOLUTIONS, FixedLoad, FrozenPoint, Lubrication, Operating, Schedules,
+    Startup, Temperatures,
+};
 pub use rolldyn_geometry::BearingModel;
 
 /// Everything a model file describes.
@@ -24,6 +27,10 @@ pub struct Model {
     pub lubrication: Option<Lubrication>,
     /// `[operating]` (every value optional).
     pub operating: Operating,
+    /// `[[operating.loads]]` and the time schedules of `[operating]` (SPEC §3.7).
+    pub schedules: Schedules,
+    /// `[startup]`: frozen points of a start-up (seed 000 §3.1.2), if given.
+    pub startup: Option<Startup>,
 }
 
 use std::path::Path;
@@ -66,10 +73,26 @@ pub fn parse(text: &str, file: &str) -> Result<Model, ModelError> {
     };
     let bearing = convert::build(&schema).map_err(locate)?;
     bearing.validate().map_err(locate)?;
+    let schedules = operation::schedules(schema.operating.as_ref()).map_err(locate)?;
+    if let (Some(points), BearingModel::Cylindrical(b)) = (&schedules.clearance, &bearing) {
+        // the interference limit of `clearance.radial` (0.2 % of D_w) applies at every time
+        let limit = -0.002 * b.roller.diameter;
+        if let Some(&(t, g)) = points.iter().find(|p| p.1 < limit) {
+            return Err(locate(rolldyn_geometry::GeometryError::new(
+                "operating.clearance_schedule.radial",
+                format!(
+                    "preload {:.4} mm at {t} s exceeds 0.2 % of the roller diameter: an interference, not a preload",
+                    -g * 1e3
+                ),
+            )));
+        }
+    }
     Ok(Model {
         bearing,
         lubrication: operation::lubrication(schema.lubricant.as_ref(), file).map_err(locate)?,
         operating: operation::operating(schema.operating.as_ref()).map_err(locate)?,
+        schedules,
+        startup: operation::startup(schema.startup.as_ref()).map_err(locate)?,
     })
 }
 

@@ -3,7 +3,7 @@
 
 use rolldyn_units::{
     Angle, AngularSpeed, Density, Dimensionless, Force, Inertia, KinematicViscosity, Length, Mass,
-    PerArea, PerPressure, Pressure, Quantity, Temperature, ThermalConductivity,
+    PerArea, PerPressure, Pressure, Quantity, Temperature, ThermalConductivity, Time, Unbalance,
 };
 use serde::Deserialize;
 use std::collections::BTreeMap;
@@ -22,6 +22,7 @@ pub struct ModelFile {
     pub misalignment: Option<MisalignmentSection>,
     pub lubricant: Option<LubricantSection>,
     pub operating: Option<OperatingSection>,
+    pub startup: Option<StartupSection>,
 }
 
 #[derive(Debug, Deserialize, Clone, Copy, PartialEq, Eq)]
@@ -265,6 +266,74 @@ pub struct OperatingSection {
     pub load_direction: Option<LoadDirection>,
     #[serde(default)]
     pub temperatures: TemperatureSection,
+    /// Rotating unbalance U of the shaft, F = U ω² (SPEC §3.7).
+    pub unbalance: Option<Quantity<Unbalance>>,
+    /// Direction of the unbalance force at t = 0, from +x (default 0).
+    pub unbalance_phase: Option<Quantity<Angle>>,
+    /// `[[operating.loads]]`: further radial forces fixed in space, optionally with one step.
+    #[serde(default)]
+    pub loads: Vec<LoadEntry>,
+    /// Inner-ring speed over time (piecewise linear), instead of `inner_speed`.
+    pub speed_schedule: Option<SpeedSchedule>,
+    /// Operating radial clearance over time (piecewise linear), SPEC §3.7.
+    pub clearance_schedule: Option<ClearanceSchedule>,
+    /// Oil temperature over time (piecewise linear), instead of `temperatures.oil`.
+    pub oil_temperature_schedule: Option<TemperatureSchedule>,
+}
+
+/// `[[operating.loads]]`: a radial force on the inner ring fixed in space (gravity share,
+/// gearbox load; SPEC §3.7), optionally stepping to `after` once `at` has passed.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LoadEntry {
+    /// Label for outputs.
+    pub name: Option<String>,
+    pub magnitude: Quantity<Force>,
+    /// Direction of the force in the x–y plane from +x (default 270° = −y, downwards).
+    pub direction: Option<Quantity<Angle>>,
+    /// Magnitude after the step at `at`.
+    pub after: Option<Quantity<Force>>,
+    /// Time of the step; `magnitude` holds up to and including it.
+    pub at: Option<Quantity<Time>>,
+}
+
+/// `[operating.speed_schedule]`: `time = [...]`, `speed = [...]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SpeedSchedule {
+    pub time: Vec<Quantity<Time>>,
+    pub speed: Vec<Quantity<AngularSpeed>>,
+}
+
+/// `[operating.clearance_schedule]`: `time = [...]`, `radial = [...]` (diametral, negative =
+/// preload).
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ClearanceSchedule {
+    pub time: Vec<Quantity<Time>>,
+    pub radial: Vec<Quantity<Length>>,
+}
+
+/// `[operating.oil_temperature_schedule]`: `time = [...]`, `oil = [...]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TemperatureSchedule {
+    pub time: Vec<Quantity<Time>>,
+    pub oil: Vec<Quantity<Temperature>>,
+}
+
+/// `[startup]`: frozen time points of a start-up (seed 000 §3.1.2, Table 3.4), each run as a
+/// constant-condition simulation to steady state.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct StartupSection {
+    pub frozen_points: Vec<Quantity<Time>>,
+    /// One label per frozen point (default "1", "2", …).
+    pub labels: Option<Vec<String>>,
+    /// Cage revolutions simulated per point (default 10).
+    pub revolutions: Option<f64>,
+    /// Last revolutions averaged for the reported slip (default: the last half).
+    pub average_revolutions: Option<f64>,
 }
 
 #[derive(Debug, Deserialize, Clone, Copy, PartialEq, Eq)]

@@ -20,8 +20,11 @@
 //! skips finished variants with `resume`, runs every n-th variant with a shard `k/n`, and
 //! collects all finished variants into `summary.csv`, `summary.parquet` and one SVG per summary
 //! column ([`collect`]).
+//!
+//! [`frozen`] runs the frozen time points of a start-up (seed 000 §3.1.2) the same way.
 
 mod file;
+pub mod frozen;
 mod run;
 
 pub use file::{Analysis, SweepError, SweepFile, Variant, apply_overrides};

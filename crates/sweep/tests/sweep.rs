@@ -11,7 +11,7 @@ fn scratch(name: &str) -> PathBuf {
     dir
 }
 
-fn write_sweep(dir: &PathBuf, body: &str) -> PathBuf {
+fn write_sweep(dir: &std::path::Path, body: &str) -> PathBuf {
     let model = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples/2002834.toml");
     std::fs::copy(model, dir.join("model.toml")).unwrap();
     let path = dir.join("sweep.toml");

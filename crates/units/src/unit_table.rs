@@ -33,6 +33,7 @@ crate::dimension::dimensions! {
     PerPressure => "a pressure coefficient", "1/Pa";
     PerArea => "an inverse area", "1/m²";
     Inertia => "a moment of inertia", "kg m²";
+    Unbalance => "an unbalance (mass × eccentricity)", "kg m";
 }
 
 impl Dimension {
@@ -55,6 +56,7 @@ impl Dimension {
             Stiffness => "N/m, N/mm",
             Damping => "N s/m, N s/mm",
             RotationalDamping => "N m s/rad, N mm/(rad/ms)",
+            Unbalance => "kg m, g mm (or g*mm, g·mm), g cm",
             _ => self.si_symbol(),
         }
     }
@@ -197,6 +199,11 @@ pub(crate) static UNITS: &[Unit] = &[
     u("kgmm2", D::Inertia, 1e-6),
     u("gmm2", D::Inertia, 1e-9),
     u("gcm2", D::Inertia, 1e-7),
+    // rotating unbalance U (SPEC §3.7: 1032930 "3162.5 g·mm")
+    u("kgm", D::Unbalance, 1.0),
+    u("kgmm", D::Unbalance, 1e-3),
+    u("gmm", D::Unbalance, 1e-6),
+    u("gcm", D::Unbalance, 1e-5),
 ];
 
 /// Normalises a unit spelling: drops white space and the product signs `·`, `*`, `⋅`;
@@ -231,4 +238,19 @@ pub(crate) fn lookup(symbol: &str, expected: Dimension) -> Option<&'static Unit>
     matches
         .find(|unit| unit.dimension == expected)
         .or(Some(first))
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::{Quantity, Unbalance};
+
+    #[test]
+    fn unbalance_units_parse() {
+        // SPEC §3.7: 1032930 unbalance 3162.5 g·mm = 3.1625e-3 kg·m
+        for text in ["3162.5 g*mm", "3162.5 g·mm", "3162.5 g mm", "316.25 g cm"] {
+            let u: Quantity<Unbalance> = text.parse().unwrap();
+            assert!((u.si() - 3.1625e-3).abs() < 1e-15, "{text}");
+        }
+        assert!("3162.5 g".parse::<Quantity<Unbalance>>().is_err());
+    }
 }

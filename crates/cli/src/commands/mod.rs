@@ -11,6 +11,7 @@ pub mod oils;
 mod rig_args;
 pub mod simulate;
 pub mod skid;
+pub mod startup;
 pub mod study;
 pub mod sweep;
 pub mod traction;

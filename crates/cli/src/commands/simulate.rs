@@ -178,7 +178,7 @@ const ROLLER_COLUMNS: [&str; 27] = [
     "pocket_face_force_n",
 ];
 
-const REVOLUTION_COLUMNS: [&str; 17] = [
+const REVOLUTION_COLUMNS: [&str; 19] = [
     "revolution",
     "start_s",
     "end_s",
@@ -194,6 +194,8 @@ const REVOLUTION_COLUMNS: [&str; 17] = [
     "max_relative_slip",
     "scuffing_margin",
     "whirl_ratio",
+    "precession",
+    "cage_orbit_radius_m",
     "friction_power_mean_w",
     "steady",
 ];
@@ -413,6 +415,8 @@ impl OutputSink for FileSink {
             v.max_relative_slip,
             v.scuffing_margin,
             v.whirl_ratio,
+            f64::from(u8::from(v.precession)),
+            v.cage_orbit_radius_m,
             v.friction_power_mean_w,
             f64::from(u8::from(v.steady)),
         ];
@@ -454,6 +458,8 @@ pub(crate) struct Answer<'a> {
     max_relative_slip: f64,
     min_scuffing_margin: f64,
     whirl_ratio: f64,
+    precession: bool,
+    cage_orbit_radius_m: f64,
     simulated_time_s: f64,
     wall_time_s: f64,
     steps: u64,
@@ -479,6 +485,8 @@ impl<'a> Answer<'a> {
             max_relative_slip: s.max_relative_slip,
             min_scuffing_margin: s.min_scuffing_margin,
             whirl_ratio: s.whirl_ratio,
+            precession: s.precession,
+            cage_orbit_radius_m: s.cage_orbit_radius_m,
             simulated_time_s: s.simulated_time_s,
             wall_time_s: s.wall_time_s,
             steps: s.steps,
@@ -511,45 +519,121 @@ impl Args {
     }
 }
 
-/// Operating conditions from the model's `[operating]` section and the overrides.
-fn conditions(
+/// Operating conditions from the model's `[operating]` section and the overrides (oil
+/// temperature of a schedule taken at t = 0: contact temperatures are constant during a run).
+pub fn conditions(
     args: &Overrides,
     model: &rolldyn_model::Model,
 ) -> Result<OperatingConditions, Failure> {
+    conditions_with_temperature_at(args, model, 0.0)
+}
+
+/// The conditions of `model` frozen at time `t` of its schedules (seed 000 §3.1.2, SPEC
+/// §3.1): constant speed, loads, clearance and oil temperature equal to their values at `t`
+/// ([`OperatingConditions::frozen_at`]; a load step takes its value before the step at the
+/// step time itself).
+pub fn frozen_conditions(
+    args: &Overrides,
+    model: &rolldyn_model::Model,
+    t: f64,
+) -> Result<OperatingConditions, Failure> {
+    Ok(conditions_with_temperature_at(args, model, t)?.frozen_at(t))
+}
+
+/// Value at `t` of a piecewise-linear schedule, constant beyond its ends.
+fn schedule_value(points: &[(f64, f64)], t: f64) -> f64 {
+    rolldyn_dynamics::conditions::SpeedLaw::Schedule(points.to_vec()).speed(t)
+}
+
+/// SPEC §3.7: speed (constant or schedule), the main radial load (fixed or rotating), the
+/// unbalance `U ω²`, the fixed loads with their steps, the clearance schedule and the oil
+/// temperature (constant, or its schedule at `t_temperature`). Overrides win: `--speed`
+/// replaces a speed schedule by a constant, `--radial-load` sets the main radial load (the
+/// unbalance and `[[operating.loads]]` still apply), `--oil-temperature` replaces the oil
+/// temperature schedule and the part temperatures.
+fn conditions_with_temperature_at(
+    args: &Overrides,
+    model: &rolldyn_model::Model,
+    t_temperature: f64,
+) -> Result<OperatingConditions, Failure> {
+    use rolldyn_dynamics::conditions::SpeedLaw;
     let op = &model.operating;
-    let speed = args.speed.or(op.inner_speed).ok_or_else(|| {
-        Failure::Input("no inner-ring speed: give --speed or operating.inner_speed".into())
-    })?;
-    let load = args.radial_load.or(op.radial_load).ok_or_else(|| {
-        Failure::Input("no radial load: give --radial-load or operating.radial_load".into())
-    })?;
-    let oil_t = args
-        .oil_temperature
-        .or(op.temperatures.oil)
-        .ok_or_else(|| {
-            Failure::Input(
-                "no oil temperature: give --oil-temperature or operating.temperatures.oil".into(),
-            )
-        })?;
-    if !(load >= 0.0) || !(oil_t > 0.0) {
+    let sched = &model.schedules;
+    let speed = match (args.speed.or(op.inner_speed), &sched.speed) {
+        (Some(w), _) => SpeedLaw::Constant(w),
+        (None, Some(points)) => SpeedLaw::Schedule(points.clone()),
+        (None, None) => {
+            return Err(Failure::Input(
+                "no inner-ring speed: give --speed, operating.inner_speed or operating.speed_schedule"
+                    .into(),
+            ));
+        }
+    };
+    let load = args.radial_load.or(op.radial_load);
+    if load.is_none() && sched.loads.is_empty() && op.unbalance.is_none() {
+        return Err(Failure::Input(
+            "no radial load: give --radial-load, operating.radial_load, operating.unbalance or [[operating.loads]]"
+                .into(),
+        ));
+    }
+    let oil_t = match (
+        args.oil_temperature,
+        op.temperatures.oil,
+        &sched.oil_temperature,
+    ) {
+        (Some(t), _, _) | (None, Some(t), _) => t,
+        (None, None, Some(points)) => schedule_value(points, t_temperature),
+        (None, None, None) => {
+            return Err(Failure::Input(
+                "no oil temperature: give --oil-temperature, operating.temperatures.oil or operating.oil_temperature_schedule"
+                    .into(),
+            ));
+        }
+    };
+    if !(load.unwrap_or(0.0) >= 0.0) || !(oil_t > 0.0) {
         return Err(Failure::Input(
             "--radial-load must be ≥ 0 and the temperature above 0 K".into(),
         ));
     }
-    let mut c = OperatingConditions::new(speed, load);
+    let mut c = OperatingConditions::new(0.0, 0.0);
+    c.inner_speed = speed;
     let rotating = match args.load_direction {
         Some(d) => d == LoadDirectionArg::Rotating,
         None => op.load_rotates,
     };
-    if rotating {
-        c.loads = vec![InnerRingLoad::Rotating {
-            magnitude_n: load,
+    c.loads = match load {
+        Some(magnitude_n) if rotating => vec![InnerRingLoad::Rotating {
+            magnitude_n,
             phase_rad: 0.0,
-        }];
+        }],
+        Some(l) => vec![InnerRingLoad::Fixed {
+            force_n: [0.0, -l, 0.0],
+        }],
+        None => Vec::new(),
+    };
+    if let Some(unbalance_kg_m) = op.unbalance {
+        c.loads.push(InnerRingLoad::Unbalance {
+            unbalance_kg_m,
+            phase_rad: op.unbalance_phase,
+        });
+    }
+    for l in &sched.loads {
+        let along = |m: f64| [m * l.direction.cos(), m * l.direction.sin(), 0.0];
+        c.loads.push(match l.step {
+            None => InnerRingLoad::Fixed {
+                force_n: along(l.magnitude),
+            },
+            Some((after, at_s)) => InnerRingLoad::FixedStep {
+                before_n: along(l.magnitude),
+                after_n: along(after),
+                at_s,
+            },
+        });
     }
     if let Some(outer) = args.outer_speed.or(op.outer_speed) {
-        c.outer_speed = rolldyn_dynamics::conditions::SpeedLaw::Constant(outer);
+        c.outer_speed = SpeedLaw::Constant(outer);
     }
+    c.clearance_schedule = sched.clearance.clone();
     let t = |part: Option<f64>| part.unwrap_or(oil_t);
     c.temperatures = ContactTemperatures {
         inner_raceway_k: t(op
@@ -576,6 +660,66 @@ pub fn prepare(
     output_step_s: f64,
     tolerance: Option<f64>,
 ) -> Result<(Simulation, f64), Failure> {
+    let (bearing, lubrication) = bearing_and_oil(model)?;
+    let conditions = conditions(overrides, model)?;
+    let p = prepare_with(
+        bearing,
+        lubrication,
+        conditions,
+        false,
+        output_step_s,
+        tolerance,
+    )?;
+    Ok((p.simulation, p.revolution_s))
+}
+
+/// A constant-condition simulation of `model` frozen at time `t` of its schedules (seed 000
+/// §3.1.2): [`frozen_conditions`], with the bearing's radial clearance set to the scheduled
+/// operating clearance at `t` (so that the initial load distribution, the quasi-static start
+/// and the dynamics all see it).
+pub fn prepare_frozen(
+    model: &rolldyn_model::Model,
+    overrides: &Overrides,
+    t: f64,
+    output_step_s: f64,
+    tolerance: Option<f64>,
+) -> Result<Prepared, Failure> {
+    let (bearing, lubrication) = bearing_and_oil(model)?;
+    let conditions = frozen_conditions(overrides, model, t)?;
+    let mut bearing = bearing.clone();
+    if let Some(g) = conditions.clearance_at(0.0) {
+        bearing.clearance.radial = g;
+        bearing.clearance.allow_preload = g < 0.0;
+    }
+    prepare_with(
+        &bearing,
+        lubrication,
+        conditions,
+        true,
+        output_step_s,
+        tolerance,
+    )
+}
+
+/// A simulation ready to run, with what was used to build it.
+pub struct Prepared {
+    pub simulation: Simulation,
+    /// Cage revolution period at the epicyclic cage speed at t = 0, s.
+    pub revolution_s: f64,
+    /// Quasi-static solution at t = 0 (the start of the cage and roller speeds), or why the
+    /// quasi-static model could not solve the point.
+    pub quasi_static: Result<rolldyn_quasistatic::SkidResult, String>,
+}
+
+fn bearing_and_oil(
+    model: &rolldyn_model::Model,
+) -> Result<
+    (
+        &rolldyn_geometry::CylindricalRollerBearing,
+        &rolldyn_model::Lubrication,
+    ),
+    Failure,
+> {
     let BearingModel::Cylindrical(bearing) = &model.bearing else {
         return Err(Failure::Input(format!(
             "{}: simulate needs a complete bearing (bearing.kind = \"cylindrical\")",
@@ -588,10 +732,25 @@ pub fn prepare(
             model.bearing.name()
         ))
     })?;
+    Ok((bearing, lubrication))
+}
+
+/// Builds the simulation of `bearing` under `conditions`, started at the quasi-static cage
+/// speed. With `clearance_is_operating` the bearing's radial clearance is the operating
+/// clearance (a start-up clearance schedule, seed 000 Fig. 3.71, already includes the thermal
+/// and centrifugal changes), and the quasi-static model is made to use it as such instead of
+/// adding its own fit, thermal and centrifugal contributions.
+pub fn prepare_with(
+    bearing: &rolldyn_geometry::CylindricalRollerBearing,
+    lubrication: &rolldyn_model::Lubrication,
+    conditions: OperatingConditions,
+    clearance_is_operating: bool,
+    output_step_s: f64,
+    tolerance: Option<f64>,
+) -> Result<Prepared, Failure> {
     let traction = lubrication
         .traction_model()
         .map_err(|e| Failure::Input(format!("[lubricant]: {e}")))?;
-    let conditions = conditions(overrides, model)?;
     let epicyclic = bearing.epicyclic_cage_speed(
         conditions.inner_speed.speed(0.0),
         conditions.outer_speed.speed(0.0),
@@ -619,7 +778,13 @@ pub fn prepare(
         traction.clone(),
     )
     .map_err(|e| Failure::Input(e.to_string()))?;
-    start_at_quasi_static_speeds(bearing, &conditions, lubrication, &mut initial);
+    let quasi_static = start_at_quasi_static_speeds(
+        bearing,
+        &conditions,
+        lubrication,
+        clearance_is_operating,
+        &mut initial,
+    );
     let mut sim = Simulation::with_initial_state(
         bearing, conditions, parameters, settings, traction, &initial,
     )
@@ -656,29 +821,40 @@ pub fn prepare(
         .map_err(|e| Failure::Input(e.to_string()))?;
         sim.set_cage_land_model(Box::new(land));
     }
-    Ok((sim, std::f64::consts::TAU / epicyclic.abs().max(1e-9)))
+    Ok(Prepared {
+        simulation: sim,
+        revolution_s: std::f64::consts::TAU / epicyclic.abs().max(1e-9),
+        quasi_static,
+    })
 }
 
 /// Issue 6 "start from the quasi-static solution": the rollers keep the static load
 /// distribution of the default start, but cage and roller orbit speeds take the quasi-static
 /// cage speed (Muraki friction, short-bearing land), spins pure rolling on the outer raceway at
 /// that speed. When the quasi-static model cannot solve the point the epicyclic start is kept.
+/// The quasi-static radial load is the r.m.s. over a shaft revolution of the vector sum of the
+/// fixed and rotating loads, √(|F_fixed|² + |F_rot|²) (their cross term averages out); it equals
+/// the load itself when only one kind is present.
 fn start_at_quasi_static_speeds(
     bearing: &rolldyn_geometry::CylindricalRollerBearing,
     conditions: &OperatingConditions,
     lubrication: &rolldyn_model::Lubrication,
+    clearance_is_operating: bool,
     initial: &mut rolldyn_dynamics::InitialState,
-) {
+) -> Result<rolldyn_quasistatic::SkidResult, String> {
     let (wi, wo) = (
         conditions.inner_speed.speed(0.0),
         conditions.outer_speed.speed(0.0),
     );
-    let load = conditions.inner_ring_force(0.0);
+    let fixed = conditions.fixed_force(0.0);
+    let load = fixed[0]
+        .hypot(fixed[1])
+        .hypot(conditions.rotating_force_magnitude(0.0));
     let t = conditions.temperatures;
     let mut qs = rolldyn_quasistatic::OperatingConditions::new(
         wi,
         wo,
-        load[0].hypot(load[1]),
+        load,
         lubrication.oil.clone(),
         t.inner_raceway_k,
     );
@@ -693,9 +869,24 @@ fn start_at_quasi_static_speeds(
         film: rolldyn_lubrication::FilmFormula::Auto,
     };
     let options = rolldyn_quasistatic::QuasiStaticOptions::default();
-    let Ok(result) = rolldyn_quasistatic::solve(bearing, &qs, &options) else {
-        return;
+    let compensated;
+    let bearing = if clearance_is_operating {
+        // the operating clearance is the mounting clearance plus contributions that do not
+        // depend on it (SPEC §5.2), so shifting the mounting clearance by the difference makes
+        // the quasi-static operating clearance equal the given one
+        let epicyclic = bearing.epicyclic_cage_speed(wi, wo);
+        let operating = rolldyn_quasistatic::operating_geometry(bearing, &qs, epicyclic)
+            .clearance
+            .operating_m;
+        let mut b = bearing.clone();
+        b.clearance.radial += bearing.clearance.radial - operating;
+        b.clearance.allow_preload = true;
+        compensated = b;
+        &compensated
+    } else {
+        bearing
     };
+    let result = rolldyn_quasistatic::solve(bearing, &qs, &options).map_err(|e| e.to_string())?;
     let wc = result.cage_speed_rad_s;
     initial.cage_speed_rad_s = wc;
     for r in &mut initial.rollers {
@@ -703,6 +894,7 @@ fn start_at_quasi_static_speeds(
         r.spin_speed_rad_s =
             rolldyn_dynamics::pure_rolling_spin(wc, wo, r.radius_m, 0.5 * bearing.roller.diameter);
     }
+    Ok(result)
 }
 
 impl Duration {
@@ -728,6 +920,11 @@ pub fn run(args: Args) -> Result<(), Failure> {
             std::fs::read(path).map_err(|e| Failure::Input(format!("{}: {e}", path.display())))?;
         sim.restore(&bytes)
             .map_err(|e| Failure::Input(format!("{}: {e}", path.display())))?;
+    }
+    if matches!(args.duration, Duration::CageRevolutions(_)) && revolution > 1e6 {
+        return Err(Failure::Input(
+            "the inner ring starts at rest (operating.speed_schedule): give --duration as a time, e.g. 0.5s, or a constant --speed".into(),
+        ));
     }
     let t_end = args.duration.end_time(revolution);
     let dir = args.out.as_deref().map(out_dir).transpose()?;
@@ -837,7 +1034,21 @@ pub fn print_summary(model: &str, s: &RunSummary) {
         "min scuffing margin s_cr/s",
         format!("{:.2}", s.min_scuffing_margin),
     );
-    line("whirl ratio", format!("{:.3}", s.whirl_ratio));
+    line(
+        "whirl ratio",
+        if s.whirl_ratio.is_finite() {
+            format!(
+                "{:.3}{}",
+                s.whirl_ratio,
+                if s.precession { " (precession)" } else { "" }
+            )
+        } else {
+            format!(
+                "— (the cage centre does not orbit; RMS offset {:.1} µm)",
+                s.cage_orbit_radius_m * 1e6
+            )
+        },
+    );
     line(
         "steps (rejected) / RHS evaluations",
         format!("{} ({}) / {}", s.steps, s.rejected_steps, s.rhs_evaluations),
@@ -847,4 +1058,69 @@ pub fn print_summary(model: &str, s: &RunSummary) {
 /// The JSON form of a run summary (used by `demo`).
 pub fn summary_json(model: &str, s: &RunSummary) -> serde_json::Value {
     serde_json::to_value(Answer::new(model, s, None)).unwrap_or_default()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rolldyn_dynamics::conditions::SpeedLaw;
+
+    const RPM: f64 = std::f64::consts::PI / 30.0;
+
+    fn model_1032930() -> rolldyn_model::Model {
+        let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/1032930.toml");
+        rolldyn_model::load(&path).expect("the 1032930 example loads")
+    }
+
+    /// SPEC §3.7 loads of 1032930 from the model file: weight 578.8 N and gearbox step, both
+    /// downwards, unbalance U ω², speed schedule, clearance schedule.
+    #[test]
+    fn start_up_conditions_from_the_model() {
+        let model = model_1032930();
+        let c = conditions(&Overrides::default(), &model).unwrap();
+        assert!(matches!(c.inner_speed, SpeedLaw::Schedule(ref p) if p.len() == 3));
+        assert_eq!(c.loads.len(), 3);
+        let f = c.fixed_force(10.0);
+        assert!(f[0].abs() < 1e-9 && (f[1] + 578.8 + 3708.8).abs() < 1e-9);
+        let f = c.fixed_force(100.0);
+        assert!((f[1] + 578.8 + 406.5).abs() < 1e-9);
+        assert!((c.rotating_force_magnitude(82.0988) - 1376.0).abs() < 1.0);
+        assert!((c.clearance_at(0.0).unwrap() - 10e-6).abs() < 1e-15);
+        // oil temperature of the schedule at t = 0 for a whole dynamic run
+        assert!((c.temperatures.inner_raceway_k - 288.15).abs() < 1e-9);
+        // --speed replaces the schedule by a constant, --oil-temperature the temperature
+        let overrides = Overrides {
+            speed: Some(7000.0 * RPM),
+            oil_temperature: Some(330.0),
+            ..Overrides::default()
+        };
+        let c = conditions(&overrides, &model).unwrap();
+        assert_eq!(c.inner_speed, SpeedLaw::Constant(7000.0 * RPM));
+        assert_eq!(c.temperatures.cage_k, 330.0);
+    }
+
+    /// Seed 000 Table 3.4: the frozen points take the schedules' values; point 2 (starter
+    /// cut-off) is still loaded by the gearbox, point 3 is not.
+    #[test]
+    fn frozen_points_of_table_3_4() {
+        let model = model_1032930();
+        let expected = [
+            // t, rpm, fixed load N, clearance µm, oil °C
+            (82.0988, 6300.0, 4287.6, 2.15, 49.0),
+            (85.2988, 6348.83, 985.3, 1.92, 50.0),
+            (270.4988, 9175.0, 985.3, -5.0, 80.0),
+        ];
+        for (t, rpm, load, g_um, oil_c) in expected {
+            let c = frozen_conditions(&Overrides::default(), &model, t).unwrap();
+            let w = c.inner_speed.speed(0.0);
+            assert!((w / RPM - rpm).abs() < 0.01, "{t}: {}", w / RPM);
+            assert_eq!(c.inner_speed.speed(1.0), w);
+            let f = c.fixed_force(0.0);
+            assert!((f[0].hypot(f[1]) - load).abs() < 1e-9, "{t}");
+            assert!((c.rotating_force_magnitude(0.0) - 3.1625e-3 * w * w).abs() < 1e-9);
+            let g = c.clearance_at(0.0).unwrap();
+            assert!((g * 1e6 - g_um).abs() < 1e-9, "{t}: {g}");
+            assert!((c.temperatures.outer_raceway_k - (oil_c + 273.15)).abs() < 1e-9);
+        }
+    }
 }

@@ -8,6 +8,7 @@ use rolldyn_geometry::BearingModel;
 use rolldyn_plot::{Labels, Series, line_plot};
 use rolldyn_quasistatic::QuasiStaticOptions;
 use rolldyn_quasistatic::studies::{self, NviTraction, StudyRow};
+use rolldyn_validation::rib_shape::{self, POSITION_BIN_M, POSITION_BINS, RibShapeRow};
 use rolldyn_validation::seed004::{self, LOADS_N, PROFILES, TILTS_ARCMIN};
 use std::path::{Path, PathBuf};
 
@@ -18,6 +19,10 @@ pub enum Study {
     /// Seed 000 V-06 and seed 001 V-18: quasi-static cage slip of the O'Brien–Taylor bearing and
     /// of an intershaft bearing.
     Skidding,
+    /// Seed 000 §3.1.1.7: flat vs convex (R 430 mm, R 37.5 mm) inner-ring rib faces of 2002834 —
+    /// where the roller end touches the rib and how fast it slides there (6-DOF dynamics of the
+    /// variants of examples/2002834/rib-shape.toml; run from the workspace root).
+    RibShape,
 }
 
 #[derive(clap::Args)]
@@ -27,6 +32,9 @@ pub struct Args {
     /// Folder for CSV tables and SVG plots.
     #[arg(long, default_value = "docs/validation")]
     pub out: PathBuf,
+    /// Cage revolutions per variant for `rib-shape` (the first is discarded as start transient).
+    #[arg(long, default_value_t = 4.0)]
+    pub revolutions: f64,
 }
 
 pub fn run(args: Args) -> Result<(), Failure> {
@@ -34,6 +42,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
     match args.study {
         Study::Seed004 => seed004_study(&dir),
         Study::Skidding => skidding_study(&dir),
+        Study::RibShape => rib_shape_study(&dir, args.revolutions),
     }
 }
 
@@ -483,5 +492,121 @@ fn skidding_study(dir: &Path) -> Result<(), Failure> {
         println!();
     }
     println!("Plots and CSV tables written to {}", dir.display());
+    Ok(())
+}
+
+/// Seed 000 §3.1.1.7 (SPEC V-21): rib-shape study, `rib-shape.csv` and `rib-shape.svg` in `dir`.
+fn rib_shape_study(dir: &Path, revolutions: f64) -> Result<(), Failure> {
+    if !(revolutions > 1.0 && revolutions.is_finite()) {
+        return Err(Failure::Input(format!(
+            "--revolutions {revolutions}: need more than 1 (the first is discarded)"
+        )));
+    }
+    let settings = rib_shape::Settings {
+        revolutions,
+        ..rib_shape::Settings::default()
+    };
+    let sweep = Path::new(rib_shape::SWEEP_FILE);
+    if !sweep.is_file() {
+        return Err(Failure::Input(format!(
+            "{}: not found — run `rolldyn study rib-shape` from the workspace root",
+            sweep.display()
+        )));
+    }
+    println!(
+        "## Seed 000 §3.1.1.7 rib shape, 2002834 ({} cage revolutions, the first discarded)\n",
+        revolutions
+    );
+    println!(
+        "| variant | rib face | misalignment ′ | mean edge distance mm | min mm | force share on the edge | max force N | mean sliding m/s | max sliding m/s | μ | power W (mean / max) | film share | |yaw| mrad | |pitch| mrad |"
+    );
+    println!("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|");
+    let arcmin = |rad: f64| rad.to_degrees() * 60.0;
+    let rows = rib_shape::run(sweep, &settings, &|_| true, &mut |r| {
+        println!(
+            "| {} | {} | {:.0} | {:.3} | {:.3} | {:.3} | {:.1} | {:.2} | {:.2} | {:.3} | {:.2} / {:.1} | {:.2} | {:.2} | {:.2} |",
+            r.variant,
+            r.face_label(),
+            arcmin(r.misalignment_rad),
+            r.mean_edge_distance_m * 1e3,
+            r.min_edge_distance_m * 1e3,
+            r.edge_force_share,
+            r.max_force_n,
+            r.mean_sliding_m_s,
+            r.max_sliding_m_s,
+            r.mean_mu,
+            r.mean_power_w,
+            r.max_power_w,
+            r.film_force_share,
+            r.mean_abs_yaw_rad * 1e3,
+            r.mean_abs_pitch_rad * 1e3
+        );
+    })
+    .map_err(Failure::Run)?;
+    let mut header: Vec<String> = RibShapeRow::COLUMNS.map(String::from).to_vec();
+    header.extend((0..POSITION_BINS).map(|k| {
+        format!(
+            "force_share_{:.2}_{:.2}mm",
+            k as f64 * POSITION_BIN_M * 1e3,
+            (k + 1) as f64 * POSITION_BIN_M * 1e3
+        )
+    }));
+    let header: Vec<&str> = header.iter().map(String::as_str).collect();
+    write_csv(
+        &dir.join("rib-shape.csv"),
+        &header,
+        rows.iter().map(|r| {
+            let mut v = r.values().to_vec();
+            v.extend(r.position_force_share);
+            v
+        }),
+    )?;
+    // One curve per misalignment through the variants in file order (flat → R 430 → R 37.5 →
+    // R 37.5 with the crest moved toward the raceway): force-weighted mean position against mean
+    // sliding speed; plus the sliding speed of each 0.25 mm position bin of every variant.
+    let mut misalignments: Vec<f64> = rows.iter().map(|r| r.misalignment_rad).collect();
+    misalignments.dedup();
+    let mut curves: Vec<(String, Vec<(f64, f64)>)> = misalignments
+        .iter()
+        .map(|&m| {
+            let points = rows
+                .iter()
+                .filter(|r| r.misalignment_rad == m)
+                .map(|r| (r.mean_edge_distance_m * 1e3, r.mean_sliding_m_s))
+                .collect();
+            (
+                format!(
+                    "{:.0}′ misalignment: flat → R 430 → R 37.5 → R 37.5 crest −1 mm (means)",
+                    arcmin(m)
+                ),
+                points,
+            )
+        })
+        .collect();
+    let mut local: Vec<(f64, f64)> = rows
+        .iter()
+        .flat_map(|r| {
+            r.position_sliding_m_s
+                .iter()
+                .enumerate()
+                .filter(|(_, v)| v.is_finite())
+                .map(|(k, &v)| ((k as f64 + 0.5) * POSITION_BIN_M * 1e3, v))
+        })
+        .collect();
+    local.sort_by(|a, b| a.0.total_cmp(&b.0));
+    curves.push((
+        "sliding speed at each contact position (0.25 mm bins, all variants)".into(),
+        local,
+    ));
+    line_plot(
+        &dir.join("rib-shape.svg"),
+        &Labels {
+            title: "2002834 roller end on the inner-ring rib (seed 000 §3.1.1.7)",
+            x: "distance of the contact point from the rib edge, mm",
+            y: "sliding speed at the contact, m/s",
+        },
+        &Series::from_pairs(&curves),
+    )?;
+    println!("\nCSV table and plot written to {}", dir.display());
     Ok(())
 }

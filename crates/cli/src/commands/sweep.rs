@@ -33,13 +33,17 @@ pub struct Args {
     pub quiet: bool,
 }
 
-/// Numeric fields of a JSON object as a summary row.
+/// Numeric and boolean (1/0) fields of a JSON object as a summary row.
 fn numbers(value: &serde_json::Value) -> BTreeMap<String, f64> {
     value
         .as_object()
         .map(|o| {
             o.iter()
-                .filter_map(|(k, v)| v.as_f64().map(|x| (k.clone(), x)))
+                .filter_map(|(k, v)| {
+                    v.as_f64()
+                        .or_else(|| v.as_bool().map(|b| f64::from(u8::from(b))))
+                        .map(|x| (k.clone(), x))
+                })
                 .collect()
         })
         .unwrap_or_default()

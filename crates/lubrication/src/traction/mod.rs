@@ -152,7 +152,7 @@ pub struct Traction {
     /// hydrodynamic part μ_hd ≥ 0 (for `Seed001`: f; for `TwoLevel`: |μ|) — the friction-curve value
     /// used by the scuffing criterion
     pub hydrodynamic: f64,
-    /// boundary part μ_bd ≥ 0 (NaN when not used)
+    /// boundary part μ_bd ≥ 0 (NaN when not used: no mixed law, or Λ ≥ Λ_hd)
     pub boundary: f64,
     /// regime by (1.3) (`Seed001`: Mixed if the asperity fraction > 10⁻³; `TwoLevel`: Boundary)
     pub regime: FrictionRegime,
@@ -178,6 +178,21 @@ pub struct Traction {
     pub film_formula: Option<FilmFormula>,
     /// warnings
     pub warnings: Warnings,
+}
+
+impl Traction {
+    /// The result for an unloaded contact (Q ≤ 0): no friction, no film, Λ = ∞.
+    fn unloaded(slip: f64, temperature_k: f64, warnings: u16) -> Self {
+        Traction {
+            lambda: f64::INFINITY,
+            slip,
+            film_central_m: f64::NAN,
+            film_minimum_m: f64::NAN,
+            contact_temperature_k: temperature_k,
+            warnings: Warnings(warnings | Warnings::UNLOADED),
+            ..Default::default()
+        }
+    }
 }
 
 /// `x > 0` and not NaN.
@@ -331,6 +346,18 @@ impl Default for TractionConfig {
 /// returns NaN for a validated model and finite inputs.
 #[inline]
 pub fn traction(state: &ContactState, model: &TractionModel) -> Traction {
+    traction_with_film(state, model, state.film_thickness_m.map(|h| (h, h)))
+}
+
+/// [`traction`] with the central and minimum film `(h_c, h_min)` given by the caller (m): the
+/// hydrodynamic friction uses `h_c`, Λ uses `h_min`. `None` computes both with the model's film
+/// formula (see [`TractionModel::prepare_contact`] to share one film among many slices).
+#[inline]
+pub fn traction_with_film(
+    state: &ContactState,
+    model: &TractionModel,
+    film: Option<(f64, f64)>,
+) -> Traction {
     let cfg = &model.cfg;
     let q = state.normal_force_n;
     let v = state.sliding_speed_m_s;
@@ -366,31 +393,12 @@ pub fn traction(state: &ContactState, model: &TractionModel) -> Traction {
 
     let hz = state.hertz();
     if q <= 0.0 {
-        return Traction {
-            lambda: f64::INFINITY,
-            slip: s,
-            film_central_m: f64::NAN,
-            film_minimum_m: f64::NAN,
-            contact_temperature_k: state.temperature_k,
-            warnings: Warnings(w | Warnings::UNLOADED),
-            ..Default::default()
-        };
+        return Traction::unloaded(s, state.temperature_k, w);
     }
     // validated in TractionModel::new: the oil exists for these laws
     let Some(oil) = cfg.oil.as_ref() else {
         return Traction::default();
     };
-    let t_in = state.temperature_k;
-    let t = if cfg.clamp_temperature {
-        let tc = oil.clamp_temperature(t_in);
-        if tc != t_in {
-            w |= Warnings::TEMPERATURE_CLAMPED;
-        }
-        tc
-    } else {
-        t_in
-    };
-
     let sign = if cfg.regularisation_speed_m_s > 0.0 {
         regularisation(v, cfg.regularisation_speed_m_s)
     } else if v == 0.0 {
@@ -398,8 +406,11 @@ pub fn traction(state: &ContactState, model: &TractionModel) -> Traction {
     } else {
         v.signum()
     };
-
     if let FrictionLaw::Seed001(st) = &cfg.law {
+        let (t, clamped) = model.contact_temperature(state.temperature_k);
+        if clamped {
+            w |= Warnings::TEMPERATURE_CLAMPED;
+        }
         let l = hz.length_m;
         let inp = Seed001Inputs {
             normal_force: q,
@@ -448,107 +459,207 @@ pub fn traction(state: &ContactState, model: &TractionModel) -> Traction {
         };
     }
 
-    let FrictionLaw::Lubricated(lf) = &cfg.law else {
-        unreachable!("all other laws returned above")
+    let Some(prep) = model.prepare_contact(state, film) else {
+        return Traction::default();
     };
+    model.traction_prepared(&prep, state)
+}
 
-    // --- oil properties at the (clamped) oil temperature
-    let pr = model
-        .table
-        .as_ref()
-        .and_then(|tb| tb.get(t))
-        .unwrap_or_else(|| HotProps::closed_form(oil, t));
-    let (eta0, alpha) = (pr.eta0, pr.alpha);
+/// The per-contact part of a lubricated traction evaluation: oil properties at the contact
+/// temperature, the film and Λ (SPEC §4.3–4.4). One prepared contact serves every slice of a
+/// roller–raceway line contact ([`TractionModel::traction_prepared`]); [`traction`] prepares
+/// and evaluates a single state.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PreparedContact {
+    /// oil temperature of the contact (before clamping), K
+    temperature_k: f64,
+    props: HotProps,
+    film_central_m: f64,
+    film_minimum_m: f64,
+    lambda: f64,
+    /// `None` when the caller imposed the film
+    formula: Option<FilmFormula>,
+    warnings: u16,
+}
 
-    // --- film
-    let (formula, mismatch) = resolve_formula(cfg.film.formula, &hz);
-    if mismatch {
-        w |= Warnings::FILM_FORMULA_MISMATCH;
+impl PreparedContact {
+    /// Central and minimum film, m.
+    pub fn film(&self) -> (f64, f64) {
+        (self.film_central_m, self.film_minimum_m)
     }
-    let (hc, hm) = match state.film_thickness_m {
-        Some(h) => (h, h),
-        None => {
-            let inp = FilmInputs {
-                eta0,
-                alpha,
-                beta0: pr.beta0,
-                k_f: pr.k_f,
-                u: u_abs,
-                q,
-                e: state.reduced_modulus_pa,
-                r: state.reduced_radius_m,
-            };
-            let (hc, hm, pve, _) = film_core(formula, &inp, &hz, cfg.film.seed001);
-            if pve == Some(false) {
-                w |= Warnings::PVE_CONDITION_FAILED;
-            }
-            let f = cfg.film.starvation_factor;
-            (hc * f, hm * f)
-        }
-    };
-    let lambda = model.lambda_def.eval(hm, state.roughness_ra_m);
+}
 
-    // --- hydrodynamic friction
-    let mu_hd = match &lf.hydrodynamic {
-        Hydrodynamic::Constant(m) => *m,
-        Hydrodynamic::Muraki(ms) => {
-            let out = muraki(
-                &MurakiInputs {
-                    mean_pressure: hz.mean_pressure_pa,
-                    half_width: hz.half_width_m,
-                    film: hc.max(1e-9),
-                    rolling_speed: u_eff,
-                    sliding_speed: v.abs(),
-                    eta0,
-                    alpha,
-                    roelands_z: oil.roelands_z,
-                    shear_modulus: pr.gamma,
-                    tau0: pr.tau0,
-                    beta0: pr.beta0,
-                    kappa: oil.kappa_per_k_pa.unwrap_or(0.0),
-                    k_f: pr.k_f,
-                },
-                ms,
-            );
-            if out.sqrt_negative {
-                w |= Warnings::SQRT_NEGATIVE_F34;
+impl TractionModel {
+    /// Oil temperature used for the properties (clamped into the oil's range when the model
+    /// clamps) and whether it was clamped, K.
+    fn contact_temperature(&self, t_in: f64) -> (f64, bool) {
+        match self.cfg.oil.as_ref() {
+            Some(oil) if self.cfg.clamp_temperature => {
+                let tc = oil.clamp_temperature(t_in);
+                (tc, tc != t_in)
             }
-            if out.sigma_invalid {
-                w |= Warnings::SIGMA_INVALID_F34;
-            }
-            out.mu
+            _ => (t_in, false),
         }
-    };
+    }
 
-    // --- boundary and mixed
-    let (mu, mu_bd, regime) = match &lf.mixed {
-        None => (mu_hd, f64::NAN, FrictionRegime::Hydrodynamic),
-        Some(lim) => {
-            let mu_bd = lf.boundary.eval(s);
-            let (m, r) = mixed_friction(mu_bd, mu_hd, lambda, lim);
-            (m, mu_bd, r)
+    /// Prepares the contact `whole` (its total load, length, entrainment speed and temperature):
+    /// oil properties, film (`film` given as `(h_c, h_min)` or from the model's formula) and Λ.
+    /// `None` for laws without a film (two-level, seed 001) or an unloaded contact.
+    pub fn prepare_contact(
+        &self,
+        whole: &ContactState,
+        film: Option<(f64, f64)>,
+    ) -> Option<PreparedContact> {
+        let cfg = &self.cfg;
+        let FrictionLaw::Lubricated(_) = &cfg.law else {
+            return None;
+        };
+        let oil = cfg.oil.as_ref()?;
+        let q = whole.normal_force_n;
+        if q <= 0.0 {
+            return None;
         }
-    };
-    let coefficient = mu * sign;
-    Traction {
-        coefficient,
-        hydrodynamic: mu_hd,
-        boundary: mu_bd,
-        regime,
-        heat_power_w: coefficient.abs() * q * v.abs(),
-        film_central_m: hc,
-        film_minimum_m: hm,
-        lambda,
-        slip: s,
-        mean_pressure_pa: hz.mean_pressure_pa,
-        max_pressure_pa: hz.max_pressure_pa,
-        half_width_m: hz.half_width_m,
-        contact_temperature_k: t_in,
-        film_formula: if state.film_thickness_m.is_some() {
-            None
+        let mut w = 0u16;
+        let (t, clamped) = self.contact_temperature(whole.temperature_k);
+        if clamped {
+            w |= Warnings::TEMPERATURE_CLAMPED;
+        }
+        let props = self
+            .table
+            .as_ref()
+            .and_then(|tb| tb.get(t))
+            .unwrap_or_else(|| HotProps::closed_form(oil, t));
+        let hz = whole.hertz();
+        let (formula, mismatch) = resolve_formula(cfg.film.formula, &hz);
+        if mismatch {
+            w |= Warnings::FILM_FORMULA_MISMATCH;
+        }
+        let (hc, hm) = match film {
+            Some(given) => given,
+            None => {
+                let inp = FilmInputs {
+                    eta0: props.eta0,
+                    alpha: props.alpha,
+                    beta0: props.beta0,
+                    k_f: props.k_f,
+                    u: whole.rolling_speed_m_s.abs(),
+                    q,
+                    e: whole.reduced_modulus_pa,
+                    r: whole.reduced_radius_m,
+                };
+                let (hc, hm, pve, _) = film_core(formula, &inp, &hz, cfg.film.seed001);
+                if pve == Some(false) {
+                    w |= Warnings::PVE_CONDITION_FAILED;
+                }
+                let f = cfg.film.starvation_factor;
+                (hc * f, hm * f)
+            }
+        };
+        Some(PreparedContact {
+            temperature_k: whole.temperature_k,
+            props,
+            film_central_m: hc,
+            film_minimum_m: hm,
+            lambda: self.lambda_def.eval(hm, whole.roughness_ra_m),
+            formula: film.is_none().then_some(formula),
+            warnings: w,
+        })
+    }
+
+    /// Traction of `state` (a slice of the prepared contact, or the whole of it) with the
+    /// prepared oil properties, film and Λ: Muraki or constant hydrodynamic friction at the
+    /// state's own Hertz pressure, half-width and sliding speed, blended with the boundary law
+    /// by Λ (SPEC §4.5–4.7). The state's temperature is not re-read.
+    #[inline]
+    pub fn traction_prepared(&self, prep: &PreparedContact, state: &ContactState) -> Traction {
+        let cfg = &self.cfg;
+        let q = state.normal_force_n;
+        let v = state.sliding_speed_m_s;
+        let u_abs = state.rolling_speed_m_s.abs();
+        let u_min = cfg.min_rolling_speed_m_s;
+        let mut w = prep.warnings;
+        if u_abs < u_min {
+            w |= Warnings::ROLLING_SPEED_FLOORED;
+        }
+        let u_eff = u_abs.max(u_min);
+        let s = v / u_eff;
+        if q <= 0.0 {
+            return Traction::unloaded(s, state.temperature_k, w);
+        }
+        let (FrictionLaw::Lubricated(lf), Some(oil)) = (&cfg.law, cfg.oil.as_ref()) else {
+            return Traction::default();
+        };
+        let sign = if cfg.regularisation_speed_m_s > 0.0 {
+            regularisation(v, cfg.regularisation_speed_m_s)
+        } else if v == 0.0 {
+            0.0
         } else {
-            Some(formula)
-        },
-        warnings: Warnings(w),
+            v.signum()
+        };
+        let hz = state.hertz();
+        let pr = &prep.props;
+        let (hc, hm, lambda) = (prep.film_central_m, prep.film_minimum_m, prep.lambda);
+
+        // --- hydrodynamic friction
+        let mu_hd = match &lf.hydrodynamic {
+            Hydrodynamic::Constant(m) => *m,
+            Hydrodynamic::Muraki(ms) => {
+                let out = muraki(
+                    &MurakiInputs {
+                        mean_pressure: hz.mean_pressure_pa,
+                        half_width: hz.half_width_m,
+                        film: hc.max(1e-9),
+                        rolling_speed: u_eff,
+                        sliding_speed: v.abs(),
+                        eta0: pr.eta0,
+                        alpha: pr.alpha,
+                        roelands_z: oil.roelands_z,
+                        shear_modulus: pr.gamma,
+                        tau0: pr.tau0,
+                        beta0: pr.beta0,
+                        kappa: oil.kappa_per_k_pa.unwrap_or(0.0),
+                        k_f: pr.k_f,
+                    },
+                    ms,
+                );
+                if out.sqrt_negative {
+                    w |= Warnings::SQRT_NEGATIVE_F34;
+                }
+                if out.sigma_invalid {
+                    w |= Warnings::SIGMA_INVALID_F34;
+                }
+                out.mu
+            }
+        };
+
+        // --- boundary and mixed
+        let (mu, mu_bd, regime) = match &lf.mixed {
+            None => (mu_hd, f64::NAN, FrictionRegime::Hydrodynamic),
+            // μ_bd only matters below Λ_hd (mixed and boundary regimes)
+            Some(lim) if lambda < lim.lambda_hd => {
+                let mu_bd = lf.boundary.eval(s);
+                let (m, r) = mixed_friction(mu_bd, mu_hd, lambda, lim);
+                (m, mu_bd, r)
+            }
+            Some(_) => (mu_hd, f64::NAN, FrictionRegime::Hydrodynamic),
+        };
+        let coefficient = mu * sign;
+        Traction {
+            coefficient,
+            hydrodynamic: mu_hd,
+            boundary: mu_bd,
+            regime,
+            heat_power_w: coefficient.abs() * q * v.abs(),
+            film_central_m: hc,
+            film_minimum_m: hm,
+            lambda,
+            slip: s,
+            mean_pressure_pa: hz.mean_pressure_pa,
+            max_pressure_pa: hz.max_pressure_pa,
+            half_width_m: hz.half_width_m,
+            contact_temperature_k: prep.temperature_k,
+            film_formula: prep.formula,
+            warnings: Warnings(w),
+        }
     }
 }

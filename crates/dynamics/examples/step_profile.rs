@@ -1,0 +1,78 @@
+//! Which state components limit the DOPRI5 step on the 2002834 benchmark case (the
+//! `cargo bench` model): histogram of the limiting components, grouped by name.
+//! `cargo run --release -p rolldyn-dynamics --example step_profile [duration_s] [tolerance]
+//! [safety] [pi_beta]`
+
+use rolldyn_dynamics::*;
+use rolldyn_lubrication::{TractionModel, lubricant_by_name};
+use std::collections::BTreeMap;
+
+fn main() {
+    let duration: f64 = std::env::args()
+        .nth(1)
+        .and_then(|a| a.parse().ok())
+        .unwrap_or(0.02);
+    let rolldyn_model::BearingModel::Cylindrical(b) =
+        rolldyn_model::parse(rolldyn_model::DEFAULT_MODEL, "2002834.toml")
+            .expect("embedded model parses")
+            .bearing
+    else {
+        unreachable!("2002834 is a cylindrical bearing")
+    };
+    let mut cond = OperatingConditions::new(6371.0 * std::f64::consts::TAU / 60.0, 500.0);
+    cond.cage_drag_n_m_s = CAGE_DRAG_2002834_100C;
+    let mut settings = DynamicsSettings {
+        output_step_s: 0.0,
+        ..DynamicsSettings::default()
+    };
+    let arg = |i: usize| std::env::args().nth(i).and_then(|a| a.parse::<f64>().ok());
+    if let Some(tol) = arg(2) {
+        settings.integrator.tolerance = tol;
+    }
+    if let Some(safety) = arg(3) {
+        settings.integrator.safety = safety;
+    }
+    if let Some(beta) = arg(4) {
+        settings.integrator.pi_beta = beta;
+    }
+    let traction = TractionModel::muraki(lubricant_by_name("pao1-vg320").expect("built-in oil"))
+        .expect("valid oil");
+    let mut sim = Simulation::new(
+        &b,
+        cond,
+        ContactParameters::for_bearing(&b),
+        settings,
+        RacewayTraction::same(traction),
+    )
+    .expect("valid model");
+    let wall = std::time::Instant::now();
+    sim.run_until(duration, &mut NullSink, &mut |_| {})
+        .expect("run completes");
+    let wall = wall.elapsed().as_secs_f64();
+    let stats = sim.stats();
+    println!(
+        "simulated {duration} s in {wall:.3} s: ratio {:.4}; steps {} rejected {} rhs {} → {:.1} µs/rhs, mean step {:.2} µs",
+        duration / wall,
+        stats.accepted,
+        stats.rejected,
+        stats.rhs_evaluations,
+        wall / stats.rhs_evaluations as f64 * 1e6,
+        duration / stats.accepted as f64 * 1e6
+    );
+    let layout = sim.layout();
+    let mut by_name: BTreeMap<String, u64> = BTreeMap::new();
+    for (i, &c) in stats.limiting.iter().enumerate() {
+        let name = layout.describe(i);
+        // "roller 7 radius r" → "roller radius r"
+        let key = match name.strip_prefix("roller ") {
+            Some(rest) => format!("roller {}", rest.split_once(' ').map_or(rest, |(_, r)| r)),
+            None => name,
+        };
+        *by_name.entry(key).or_default() += c;
+    }
+    let mut v: Vec<_> = by_name.into_iter().collect();
+    v.sort_by_key(|(_, c)| std::cmp::Reverse(*c));
+    for (name, c) in v.iter().take(12) {
+        println!("{c:8}  {name}");
+    }
+}
