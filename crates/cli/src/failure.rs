@@ -20,6 +20,13 @@ impl Failure {
     }
 }
 
+impl From<rolldyn_setup::SetupError> for Failure {
+    /// A model that cannot be set up is bad input.
+    fn from(e: rolldyn_setup::SetupError) -> Self {
+        Self::Input(e.0)
+    }
+}
+
 impl fmt::Display for Failure {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {

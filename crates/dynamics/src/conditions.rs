@@ -89,7 +89,7 @@ impl SpeedLaw {
 
 /// Value at `t` of the piecewise-linear function through `pts` (constant beyond the ends; 0
 /// for no points).
-fn piecewise_linear(pts: &[(f64, f64)], t: f64) -> f64 {
+pub fn piecewise_linear(pts: &[(f64, f64)], t: f64) -> f64 {
     let Some(first) = pts.first() else { return 0.0 };
     if t <= first.0 {
         return first.1;

@@ -7,11 +7,13 @@
 //! ```
 
 mod convert;
+mod dynamics;
 mod error;
 mod operation;
 pub mod schema;
 
 pub use convert::DEFAULT_SLICES;
+pub use dynamics::{DynamicsInputs, EndFrictionLaw, EndPairInputs, PairInputs};
 pub use error::ModelError;
 pub use operation::{
     DEFAULT_STARTUP_REVOLUTIONS, FixedLoad, FrozenPoint, Lubrication, Operating, Schedules,
@@ -31,6 +33,8 @@ pub struct Model {
     pub schedules: Schedules,
     /// `[startup]`: frozen points of a start-up (seed 000 §3.1.2), if given.
     pub startup: Option<Startup>,
+    /// `[dynamics]`: contact parameters (SPEC Table 2.1) and cage drag; defaults where silent.
+    pub dynamics: DynamicsInputs,
 }
 
 use std::path::Path;
@@ -93,6 +97,7 @@ pub fn parse(text: &str, file: &str) -> Result<Model, ModelError> {
         operating: operation::operating(schema.operating.as_ref()).map_err(locate)?,
         schedules,
         startup: operation::startup(schema.startup.as_ref()).map_err(locate)?,
+        dynamics: dynamics::dynamics(schema.dynamics.as_ref()).map_err(locate)?,
     })
 }
 

@@ -2,8 +2,9 @@
 //! every struct rejects unknown keys. Converted once into `rolldyn_geometry` types (SI).
 
 use rolldyn_units::{
-    Angle, AngularSpeed, Density, Dimensionless, Force, Inertia, KinematicViscosity, Length, Mass,
-    PerArea, PerPressure, Pressure, Quantity, Temperature, ThermalConductivity, Time, Unbalance,
+    Angle, AngularSpeed, Damping, Density, Dimensionless, Force, Inertia, KinematicViscosity,
+    Length, Mass, PerArea, PerPressure, Pressure, Quantity, RotationalDamping, Speed, Temperature,
+    ThermalConductivity, Time, Unbalance,
 };
 use serde::Deserialize;
 use std::collections::BTreeMap;
@@ -23,6 +24,7 @@ pub struct ModelFile {
     pub lubricant: Option<LubricantSection>,
     pub operating: Option<OperatingSection>,
     pub startup: Option<StartupSection>,
+    pub dynamics: Option<DynamicsSection>,
 }
 
 #[derive(Debug, Deserialize, Clone, Copy, PartialEq, Eq)]
@@ -353,4 +355,74 @@ pub struct TemperatureSection {
     pub cage: Option<Quantity<Temperature>>,
     pub shaft: Option<Quantity<Temperature>>,
     pub housing: Option<Quantity<Temperature>>,
+}
+
+/// `[dynamics]`: contact parameters of SPEC Table 2.1 and the cage drag (SPEC §3.3–3.6).
+#[derive(Debug, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct DynamicsSection {
+    /// c of `M = −c ω_cage`, e.g. "662 Nmm/(rad/ms)" or "6.62e-4 Nms"
+    pub cage_drag: Option<Quantity<RotationalDamping>>,
+    /// pairs 13, 23
+    pub raceways: Option<RacewayPairSection>,
+    /// pair 34
+    pub roller_cage: Option<PairSection>,
+    /// pair 14
+    pub cage_land: Option<PairSection>,
+    /// pair 56
+    pub roller_end_rib: Option<EndPairSection>,
+    /// pair 54
+    pub roller_end_cage: Option<EndPairSection>,
+}
+
+/// Roller slices ↔ raceways (the slice law is built from the geometry).
+#[derive(Debug, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct RacewayPairSection {
+    pub damping: Option<Quantity<Damping>>,
+    pub damping_ramp: Option<Quantity<Length>>,
+}
+
+/// Two-level friction law (SPEC §3.4).
+#[derive(Debug, Deserialize, Default, Clone, Copy)]
+#[serde(deny_unknown_fields)]
+pub struct FrictionSection {
+    pub r#static: Option<Quantity<Dimensionless>>,
+    pub dynamic: Option<Quantity<Dimensionless>>,
+    pub static_speed: Option<Quantity<Speed>>,
+    pub dynamic_speed: Option<Quantity<Speed>>,
+}
+
+/// A power-law contact pair.
+#[derive(Debug, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct PairSection {
+    /// K_p in SI, N/mⁿ (a plain number: its unit depends on n)
+    pub stiffness: Option<f64>,
+    pub exponent: Option<f64>,
+    pub damping: Option<Quantity<Damping>>,
+    pub damping_ramp: Option<Quantity<Length>>,
+    pub friction: Option<FrictionSection>,
+}
+
+/// Friction law names of the roller-end contacts.
+#[derive(Debug, Deserialize, Clone, Copy, PartialEq, Eq)]
+#[serde(rename_all = "kebab-case")]
+pub enum EndFrictionName {
+    Boundary,
+    Kragelsky,
+    Ehl,
+}
+
+/// A roller-end contact pair.
+#[derive(Debug, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct EndPairSection {
+    pub enabled: Option<bool>,
+    pub friction_law: Option<EndFrictionName>,
+    pub stiffness: Option<f64>,
+    pub exponent: Option<f64>,
+    pub damping: Option<Quantity<Damping>>,
+    pub damping_ramp: Option<Quantity<Length>>,
+    pub friction: Option<FrictionSection>,
 }

@@ -98,7 +98,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
     }
 
     let (mut sim, revolution) =
-        super::simulate::prepare(&model, &super::simulate::Overrides::default(), 0.0, None)?;
+        rolldyn_setup::prepare(&model, &rolldyn_setup::Overrides::default(), 0.0, None)?;
     let t_end = args.revolutions.max(0.1) * revolution;
     let dynamics = sim
         .run_until(t_end, &mut NullSink, &mut |_| {})

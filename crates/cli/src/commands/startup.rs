@@ -5,11 +5,11 @@
 //! revolutions, and the mean cage slip of the last revolutions is reported next to the
 //! quasi-static slip. Points run in parallel.
 
-use super::simulate::{Overrides, frozen_conditions, prepare_frozen};
 use crate::failure::Failure;
 use crate::output::{load_model, print_json};
 use rolldyn_dynamics::output::{OutputSink, RevolutionSummary, Snapshot};
 use rolldyn_model::FrozenPoint;
+use rolldyn_setup::{Overrides, frozen_conditions, prepare_frozen};
 use rolldyn_sweep::frozen::{
     FrozenPointRow, drift_of_last, mean_of_last, run_points, write_outputs,
 };

@@ -1,10 +1,11 @@
 //! `rolldyn sweep SWEEP.toml`: a table of model variants run in parallel, one summary row per
 //! variant (CSV + Parquet) and one plot per summary column (seed 000 Figs 3.13–3.30).
 
-use super::simulate::{Duration, Overrides, prepare, summary_json};
+use super::simulate::{Duration, summary_json};
 use crate::failure::Failure;
 use rolldyn_dynamics::output::NullSink;
 use rolldyn_quasistatic::{FiniteLand, QuasiStaticOptions};
+use rolldyn_setup::{Overrides, prepare};
 use rolldyn_sweep::{
     Analysis, RunOptions, Shard, SweepFile, Variant, VariantOutcome, collect, run as run_sweep,
 };

@@ -1,0 +1,184 @@
+//! `[dynamics]`: the contact parameters of SPEC Table 2.1 (seed 000; no values in the seeds,
+//! ⚠ F-21) and the cage drag coefficient (SPEC §3.6), converted once to SI. Every key is
+//! optional; a missing key keeps the dynamics crate's documented default
+//! (`rolldyn_dynamics::ContactParameters::for_bearing`).
+
+use crate::schema::{
+    DynamicsSection, EndFrictionName, EndPairSection, FrictionSection, PairSection,
+    RacewayPairSection,
+};
+use rolldyn_geometry::GeometryError;
+
+/// Power-law contact `F = K_p δⁿ + STEP(δ, 0, 0, d, C_h) δ̇` with two-level friction (SPEC
+/// §3.3–3.4); SI, `None` = default.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct PairInputs {
+    /// K_p, N/mⁿ
+    pub k_p: Option<f64>,
+    /// n
+    pub exponent: Option<f64>,
+    /// C_h, N·s/m
+    pub c_h: Option<f64>,
+    /// d, m
+    pub d: Option<f64>,
+    /// μ_s
+    pub mu_static: Option<f64>,
+    /// μ_d
+    pub mu_dynamic: Option<f64>,
+    /// v_s, m/s
+    pub v_static: Option<f64>,
+    /// v_d, m/s
+    pub v_dynamic: Option<f64>,
+}
+
+/// Friction law of a roller-end contact (SPEC §3.4, §6.7).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum EndFrictionLaw {
+    /// constant boundary friction μ_s = μ_d
+    Boundary,
+    /// Kragelsky μ(s), seed 000 (2.10)
+    Kragelsky,
+    /// EHL point-contact traction while the spot stays inside the face overlap
+    Ehl,
+}
+
+/// A roller-end contact pair (56 ribs, 54 cage pocket faces).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct EndPairInputs {
+    pub pair: PairInputs,
+    /// `false` switches the contact off (comparison runs)
+    pub enabled: Option<bool>,
+    pub friction_law: Option<EndFrictionLaw>,
+}
+
+/// The `[dynamics]` section in SI.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct DynamicsInputs {
+    /// cage viscous drag coefficient c of `M = −c ω_cage`, N·m·s/rad (SPEC §3.6)
+    pub cage_drag_n_m_s: Option<f64>,
+    /// raceway damping C_max of the whole roller–raceway contact, N·s/m (pairs 13, 23)
+    pub raceway_damping: Option<f64>,
+    /// raceway damping ramp δ*, m
+    pub raceway_damping_ramp: Option<f64>,
+    /// pair 34, roller ↔ cage bar
+    pub roller_cage: PairInputs,
+    /// pair 14, cage ↔ guiding land (metal contact beyond the film)
+    pub cage_land: PairInputs,
+    /// pair 56, roller ends ↔ ribs
+    pub roller_end_rib: EndPairInputs,
+    /// pair 54, roller ends ↔ cage pocket faces
+    pub roller_end_cage: EndPairInputs,
+}
+
+fn positive(key: String, x: Option<f64>) -> Result<Option<f64>, GeometryError> {
+    match x {
+        Some(v) if !(v > 0.0 && v.is_finite()) => {
+            Err(GeometryError::new(key, "must be finite and > 0"))
+        }
+        _ => Ok(x),
+    }
+}
+
+fn non_negative(key: String, x: Option<f64>) -> Result<Option<f64>, GeometryError> {
+    match x {
+        Some(v) if !(v >= 0.0 && v.is_finite()) => {
+            Err(GeometryError::new(key, "must be finite and ≥ 0"))
+        }
+        _ => Ok(x),
+    }
+}
+
+fn friction(key: &str, f: Option<&FrictionSection>) -> Result<PairInputs, GeometryError> {
+    let Some(f) = f else {
+        return Ok(PairInputs::default());
+    };
+    let k = |name: &str| format!("{key}.friction.{name}");
+    let p = PairInputs {
+        mu_static: non_negative(k("static"), f.r#static.map(|q| q.si()))?,
+        mu_dynamic: non_negative(k("dynamic"), f.dynamic.map(|q| q.si()))?,
+        v_static: positive(k("static_speed"), f.static_speed.map(|q| q.si()))?,
+        v_dynamic: positive(k("dynamic_speed"), f.dynamic_speed.map(|q| q.si()))?,
+        ..PairInputs::default()
+    };
+    if let (Some(vs), Some(vd)) = (p.v_static, p.v_dynamic)
+        && vd <= vs
+    {
+        return Err(GeometryError::new(
+            k("dynamic_speed"),
+            "must exceed friction.static_speed (two-level law, SPEC §3.4)",
+        ));
+    }
+    Ok(p)
+}
+
+fn pair(key: &str, s: Option<&PairSection>) -> Result<PairInputs, GeometryError> {
+    let Some(s) = s else {
+        return Ok(PairInputs::default());
+    };
+    let k = |name: &str| format!("{key}.{name}");
+    let mut p = friction(key, s.friction.as_ref())?;
+    p.k_p = positive(k("stiffness"), s.stiffness)?;
+    p.exponent = s.exponent;
+    if let Some(n) = s.exponent
+        && !(n >= 1.0 && n.is_finite())
+    {
+        return Err(GeometryError::new(k("exponent"), "must be finite and ≥ 1"));
+    }
+    p.c_h = non_negative(k("damping"), s.damping.map(|q| q.si()))?;
+    p.d = positive(k("damping_ramp"), s.damping_ramp.map(|q| q.si()))?;
+    Ok(p)
+}
+
+fn end_pair(key: &str, s: Option<&EndPairSection>) -> Result<EndPairInputs, GeometryError> {
+    let Some(s) = s else {
+        return Ok(EndPairInputs::default());
+    };
+    let section = PairSection {
+        stiffness: s.stiffness,
+        exponent: s.exponent,
+        damping: s.damping,
+        damping_ramp: s.damping_ramp,
+        friction: s.friction,
+    };
+    Ok(EndPairInputs {
+        pair: pair(key, Some(&section))?,
+        enabled: s.enabled,
+        friction_law: s.friction_law.map(|f| match f {
+            EndFrictionName::Boundary => EndFrictionLaw::Boundary,
+            EndFrictionName::Kragelsky => EndFrictionLaw::Kragelsky,
+            EndFrictionName::Ehl => EndFrictionLaw::Ehl,
+        }),
+    })
+}
+
+fn raceways(s: Option<&RacewayPairSection>) -> Result<(Option<f64>, Option<f64>), GeometryError> {
+    let Some(s) = s else {
+        return Ok((None, None));
+    };
+    Ok((
+        non_negative(
+            "dynamics.raceways.damping".into(),
+            s.damping.map(|q| q.si()),
+        )?,
+        positive(
+            "dynamics.raceways.damping_ramp".into(),
+            s.damping_ramp.map(|q| q.si()),
+        )?,
+    ))
+}
+
+pub(crate) fn dynamics(section: Option<&DynamicsSection>) -> Result<DynamicsInputs, GeometryError> {
+    let Some(s) = section else {
+        return Ok(DynamicsInputs::default());
+    };
+    let (raceway_damping, raceway_damping_ramp) = raceways(s.raceways.as_ref())?;
+    Ok(DynamicsInputs {
+        cage_drag_n_m_s: non_negative("dynamics.cage_drag".into(), s.cage_drag.map(|q| q.si()))?,
+        raceway_damping,
+        raceway_damping_ramp,
+        roller_cage: pair("dynamics.roller_cage", s.roller_cage.as_ref())?,
+        cage_land: pair("dynamics.cage_land", s.cage_land.as_ref())?,
+        roller_end_rib: end_pair("dynamics.roller_end_rib", s.roller_end_rib.as_ref())?,
+        roller_end_cage: end_pair("dynamics.roller_end_cage", s.roller_end_cage.as_ref())?,
+    })
+}

@@ -1,0 +1,90 @@
+//! `[dynamics]`: cage drag and the SPEC Table 2.1 contact parameters, converted to SI; bad
+//! values name their key.
+
+use rolldyn_model::{EndFrictionLaw, parse};
+
+const GOOD: &str = rolldyn_model::DEFAULT_MODEL;
+
+fn with_dynamics(extra: &str) -> Result<rolldyn_model::Model, String> {
+    parse(&format!("{GOOD}\n{extra}"), "m.toml").map_err(|e| e.to_string())
+}
+
+#[test]
+fn the_example_gives_the_seed_cage_drag() {
+    let m = parse(GOOD, "2002834.toml").unwrap();
+    // seed 000 §3.6: 662 N·mm/(rad/ms) = 6.62e-4 N·m·s/rad (SPEC F-22)
+    let c = m.dynamics.cage_drag_n_m_s.unwrap();
+    assert!((c - 6.62e-4).abs() < 1e-15, "{c}");
+    assert_eq!(m.dynamics.roller_cage.k_p, None);
+}
+
+#[test]
+fn pair_keys_convert_to_si() {
+    let m = with_dynamics(
+        r#"[dynamics.raceways]
+damping = "0.3 Ns/mm"
+damping_ramp = "2 um"
+[dynamics.roller_cage]
+stiffness = 5e8
+exponent = 1.2
+damping = "2000 Ns/m"
+damping_ramp = "0.5 um"
+friction = { static = 0.03, dynamic = 0.02, static_speed = "4 mm/s", dynamic_speed = "0.04 m/s" }
+[dynamics.roller_end_rib]
+friction_law = "kragelsky"
+enabled = false
+"#,
+    )
+    .unwrap();
+    let d = &m.dynamics;
+    assert_eq!(d.raceway_damping, Some(300.0));
+    assert!((d.raceway_damping_ramp.unwrap() - 2e-6).abs() < 1e-18);
+    let p = &d.roller_cage;
+    assert_eq!(p.k_p, Some(5e8));
+    assert_eq!(p.exponent, Some(1.2));
+    assert_eq!(p.c_h, Some(2000.0));
+    assert!((p.d.unwrap() - 5e-7).abs() < 1e-18);
+    assert_eq!((p.mu_static, p.mu_dynamic), (Some(0.03), Some(0.02)));
+    assert!((p.v_static.unwrap() - 4e-3).abs() < 1e-15);
+    assert!((p.v_dynamic.unwrap() - 0.04).abs() < 1e-15);
+    assert_eq!(
+        d.roller_end_rib.friction_law,
+        Some(EndFrictionLaw::Kragelsky)
+    );
+    assert_eq!(d.roller_end_rib.enabled, Some(false));
+    assert_eq!(d.cage_land.k_p, None);
+}
+
+#[test]
+fn bad_values_name_their_key() {
+    for (text, key) in [
+        (
+            "[dynamics.roller_cage]\nstiffness = -1.0\n",
+            "dynamics.roller_cage.stiffness",
+        ),
+        (
+            "[dynamics.cage_land]\nexponent = 0.5\n",
+            "dynamics.cage_land.exponent",
+        ),
+        (
+            "[dynamics.roller_end_cage]\nfriction = { static_speed = \"5 mm/s\", dynamic_speed = \"5 mm/s\" }\n",
+            "dynamics.roller_end_cage.friction.dynamic_speed",
+        ),
+        (
+            "[dynamics.raceways]\ndamping = \"-3 Ns/m\"\n",
+            "dynamics.raceways.damping",
+        ),
+        (
+            "[dynamics.roller_cage]\nstifness = 1e9\n",
+            "dynamics.roller_cage.stifness",
+        ),
+        (
+            "[dynamics.roller_end_rib]\nfriction_law = \"sticky\"\n",
+            "dynamics.roller_end_rib.friction_law",
+        ),
+    ] {
+        let e = with_dynamics(text).expect_err(text);
+        assert!(e.contains(key), "{text}: {e}");
+        assert!(e.starts_with("m.toml:"), "{e}");
+    }
+}

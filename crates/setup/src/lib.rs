@@ -1,0 +1,562 @@
+//! From a model file to a dynamics run (SPEC §3.7–3.8): the operating conditions of the
+//! `[operating]` section with its schedules, loads and frozen points, the contact parameters of
+//! `[dynamics]` (SPEC Table 2.1), and a [`Simulation`] started at the quasi-static cage speed
+//! with the hydrodynamic cage land. Shared by `rolldyn simulate`, `sweep`, `startup` and `demo`.
+
+use rolldyn_dynamics::conditions::{ContactTemperatures, InnerRingLoad, OperatingConditions};
+use rolldyn_dynamics::parameters::ContactParameters;
+use rolldyn_dynamics::settings::DynamicsSettings;
+use rolldyn_dynamics::{RacewayTraction, Simulation};
+use rolldyn_geometry::BearingModel;
+
+/// The model cannot be turned into a simulation (missing section, bad override, invalid
+/// parameters). One line naming what is wrong.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{0}")]
+pub struct SetupError(pub String);
+
+/// Direction of the main radial load.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum LoadDirection {
+    /// fixed in space
+    Fixed,
+    /// rotating with the inner ring
+    Rotating,
+}
+
+/// Values given on the command line (or by a study) that override the model's `[operating]`
+/// section, SI.
+#[derive(Clone, Copy, Default)]
+pub struct Overrides {
+    pub speed: Option<f64>,
+    pub outer_speed: Option<f64>,
+    pub radial_load: Option<f64>,
+    pub load_direction: Option<LoadDirection>,
+    pub oil_temperature: Option<f64>,
+}
+
+/// Operating conditions from the model's `[operating]` section and the overrides (oil
+/// temperature of a schedule taken at t = 0: contact temperatures are constant during a run).
+pub fn conditions(
+    args: &Overrides,
+    model: &rolldyn_model::Model,
+) -> Result<OperatingConditions, SetupError> {
+    conditions_with_temperature_at(args, model, 0.0)
+}
+
+/// The conditions of `model` frozen at time `t` of its schedules (seed 000 §3.1.2, SPEC
+/// §3.1): constant speed, loads, clearance and oil temperature equal to their values at `t`
+/// ([`OperatingConditions::frozen_at`]; a load step takes its value before the step at the
+/// step time itself).
+pub fn frozen_conditions(
+    args: &Overrides,
+    model: &rolldyn_model::Model,
+    t: f64,
+) -> Result<OperatingConditions, SetupError> {
+    Ok(conditions_with_temperature_at(args, model, t)?.frozen_at(t))
+}
+
+/// SPEC §3.7: speed (constant or schedule), the main radial load (fixed or rotating), the
+/// unbalance `U ω²`, the fixed loads with their steps, the clearance schedule and the oil
+/// temperature (constant, or its schedule at `t_temperature`). Overrides win: `--speed`
+/// replaces a speed schedule by a constant, `--radial-load` sets the main radial load (the
+/// unbalance and `[[operating.loads]]` still apply), `--oil-temperature` replaces the oil
+/// temperature schedule and the part temperatures.
+fn conditions_with_temperature_at(
+    args: &Overrides,
+    model: &rolldyn_model::Model,
+    t_temperature: f64,
+) -> Result<OperatingConditions, SetupError> {
+    use rolldyn_dynamics::conditions::SpeedLaw;
+    let op = &model.operating;
+    let sched = &model.schedules;
+    let speed = match (args.speed.or(op.inner_speed), &sched.speed) {
+        (Some(w), _) => SpeedLaw::Constant(w),
+        (None, Some(points)) => SpeedLaw::Schedule(points.clone()),
+        (None, None) => {
+            return Err(SetupError(
+                "no inner-ring speed: give --speed, operating.inner_speed or operating.speed_schedule"
+                    .into(),
+            ));
+        }
+    };
+    let load = args.radial_load.or(op.radial_load);
+    if load.is_none() && sched.loads.is_empty() && op.unbalance.is_none() {
+        return Err(SetupError(
+            "no radial load: give --radial-load, operating.radial_load, operating.unbalance or [[operating.loads]]"
+                .into(),
+        ));
+    }
+    let oil_t = match (
+        args.oil_temperature,
+        op.temperatures.oil,
+        &sched.oil_temperature,
+    ) {
+        (Some(t), _, _) | (None, Some(t), _) => t,
+        (None, None, Some(points)) => {
+            rolldyn_dynamics::conditions::piecewise_linear(points, t_temperature)
+        }
+        (None, None, None) => {
+            return Err(SetupError(
+                "no oil temperature: give --oil-temperature, operating.temperatures.oil or operating.oil_temperature_schedule"
+                    .into(),
+            ));
+        }
+    };
+    let bad = |x: f64, smallest_ok: f64| x.is_nan() || x < smallest_ok;
+    if bad(load.unwrap_or(0.0), 0.0) || bad(oil_t, f64::MIN_POSITIVE) {
+        return Err(SetupError(
+            "--radial-load must be ≥ 0 and the temperature above 0 K".into(),
+        ));
+    }
+    let mut c = OperatingConditions::new(0.0, 0.0);
+    c.inner_speed = speed;
+    let rotating = match args.load_direction {
+        Some(d) => d == LoadDirection::Rotating,
+        None => op.load_rotates,
+    };
+    c.loads = match load {
+        Some(magnitude_n) if rotating => vec![InnerRingLoad::Rotating {
+            magnitude_n,
+            phase_rad: 0.0,
+        }],
+        Some(l) => vec![InnerRingLoad::Fixed {
+            force_n: [0.0, -l, 0.0],
+        }],
+        None => Vec::new(),
+    };
+    if let Some(unbalance_kg_m) = op.unbalance {
+        c.loads.push(InnerRingLoad::Unbalance {
+            unbalance_kg_m,
+            phase_rad: op.unbalance_phase,
+        });
+    }
+    for l in &sched.loads {
+        let along = |m: f64| [m * l.direction.cos(), m * l.direction.sin(), 0.0];
+        c.loads.push(match l.step {
+            None => InnerRingLoad::Fixed {
+                force_n: along(l.magnitude),
+            },
+            Some((after, at_s)) => InnerRingLoad::FixedStep {
+                before_n: along(l.magnitude),
+                after_n: along(after),
+                at_s,
+            },
+        });
+    }
+    if let Some(outer) = args.outer_speed.or(op.outer_speed) {
+        c.outer_speed = SpeedLaw::Constant(outer);
+    }
+    c.clearance_schedule = sched.clearance.clone();
+    let t = |part: Option<f64>| part.unwrap_or(oil_t);
+    c.temperatures = ContactTemperatures {
+        inner_raceway_k: t(op
+            .temperatures
+            .inner_ring
+            .filter(|_| args.oil_temperature.is_none())),
+        outer_raceway_k: t(op
+            .temperatures
+            .outer_ring
+            .filter(|_| args.oil_temperature.is_none())),
+        cage_k: t(op
+            .temperatures
+            .cage
+            .filter(|_| args.oil_temperature.is_none())),
+    };
+    c.misalignment_rad = model.bearing.misalignment().inner_ring_tilt;
+    // SPEC §3.6: an input per model (`[dynamics] cage_drag`), none when the file is silent
+    c.cage_drag_n_m_s = model.dynamics.cage_drag_n_m_s.unwrap_or(0.0);
+    Ok(c)
+}
+
+/// The contact parameters of SPEC Table 2.1: the dynamics defaults for the bearing, with every
+/// value the model's `[dynamics]` section gives (checked together when the simulation is built).
+fn contact_parameters(
+    bearing: &rolldyn_geometry::CylindricalRollerBearing,
+    inputs: &rolldyn_model::DynamicsInputs,
+) -> ContactParameters {
+    use rolldyn_dynamics::{EndFriction, PairParameters, RollerEndParameters};
+    use rolldyn_model::{EndFrictionLaw, EndPairInputs, PairInputs};
+    fn pair(p: &mut PairParameters, i: &PairInputs) {
+        let f = &mut p.friction;
+        for (value, given) in [
+            (&mut p.k_p, i.k_p),
+            (&mut p.exponent, i.exponent),
+            (&mut p.c_h, i.c_h),
+            (&mut p.d, i.d),
+            (&mut f.mu_static, i.mu_static),
+            (&mut f.mu_dynamic, i.mu_dynamic),
+            (&mut f.v_static, i.v_static),
+            (&mut f.v_dynamic, i.v_dynamic),
+        ] {
+            if let Some(x) = given {
+                *value = x;
+            }
+        }
+    }
+    fn end(p: &mut RollerEndParameters, i: &EndPairInputs) {
+        pair(&mut p.contact, &i.pair);
+        if let Some(on) = i.enabled {
+            p.enabled = on;
+        }
+        if let Some(law) = i.friction_law {
+            p.friction = match law {
+                EndFrictionLaw::Boundary => EndFriction::Boundary,
+                EndFrictionLaw::Kragelsky => EndFriction::Kragelsky,
+                EndFrictionLaw::Ehl => EndFriction::Ehl,
+            };
+        }
+    }
+    let mut c = ContactParameters::for_bearing(bearing);
+    for r in [&mut c.inner_raceway, &mut c.outer_raceway] {
+        if let Some(d) = inputs.raceway_damping {
+            r.damping_n_s_m = d;
+        }
+        if let Some(ramp) = inputs.raceway_damping_ramp {
+            r.damping_ramp_m = ramp;
+        }
+    }
+    pair(&mut c.roller_cage, &inputs.roller_cage);
+    pair(&mut c.cage_land, &inputs.cage_land);
+    end(&mut c.roller_end_rib, &inputs.roller_end_rib);
+    end(&mut c.roller_end_cage, &inputs.roller_end_cage);
+    c
+}
+
+/// A simulation of `model` ready to run, and its cage revolution period [s].
+pub fn prepare(
+    model: &rolldyn_model::Model,
+    overrides: &Overrides,
+    output_step_s: f64,
+    tolerance: Option<f64>,
+) -> Result<(Simulation, f64), SetupError> {
+    let (bearing, lubrication) = bearing_and_oil(model)?;
+    let conditions = conditions(overrides, model)?;
+    let p = prepare_with(
+        bearing,
+        lubrication,
+        &model.dynamics,
+        conditions,
+        false,
+        output_step_s,
+        tolerance,
+    )?;
+    Ok((p.simulation, p.revolution_s))
+}
+
+/// A constant-condition simulation of `model` frozen at time `t` of its schedules (seed 000
+/// §3.1.2): [`frozen_conditions`], with the bearing's radial clearance set to the scheduled
+/// operating clearance at `t` (so that the initial load distribution, the quasi-static start
+/// and the dynamics all see it).
+pub fn prepare_frozen(
+    model: &rolldyn_model::Model,
+    overrides: &Overrides,
+    t: f64,
+    output_step_s: f64,
+    tolerance: Option<f64>,
+) -> Result<Prepared, SetupError> {
+    let (bearing, lubrication) = bearing_and_oil(model)?;
+    let conditions = frozen_conditions(overrides, model, t)?;
+    let mut bearing = bearing.clone();
+    if let Some(g) = conditions.clearance_at(0.0) {
+        bearing.clearance.radial = g;
+        bearing.clearance.allow_preload = g < 0.0;
+    }
+    prepare_with(
+        &bearing,
+        lubrication,
+        &model.dynamics,
+        conditions,
+        true,
+        output_step_s,
+        tolerance,
+    )
+}
+
+/// A simulation ready to run, with what was used to build it.
+pub struct Prepared {
+    pub simulation: Simulation,
+    /// Cage revolution period at the epicyclic cage speed at t = 0, s.
+    pub revolution_s: f64,
+    /// Quasi-static solution at t = 0 (the start of the cage and roller speeds), or why the
+    /// quasi-static model could not solve the point.
+    pub quasi_static: Result<rolldyn_quasistatic::SkidResult, String>,
+}
+
+fn bearing_and_oil(
+    model: &rolldyn_model::Model,
+) -> Result<
+    (
+        &rolldyn_geometry::CylindricalRollerBearing,
+        &rolldyn_model::Lubrication,
+    ),
+    SetupError,
+> {
+    let BearingModel::Cylindrical(bearing) = &model.bearing else {
+        return Err(SetupError(format!(
+            "{}: simulate needs a complete bearing (bearing.kind = \"cylindrical\")",
+            model.bearing.name()
+        )));
+    };
+    let lubrication = model.lubrication.as_ref().ok_or_else(|| {
+        SetupError(format!(
+            "{}: simulate needs a [lubricant] section",
+            model.bearing.name()
+        ))
+    })?;
+    Ok((bearing, lubrication))
+}
+
+/// Builds the simulation of `bearing` under `conditions`, started at the quasi-static cage
+/// speed. With `clearance_is_operating` the bearing's radial clearance is the operating
+/// clearance (a start-up clearance schedule, seed 000 Fig. 3.71, already includes the thermal
+/// and centrifugal changes), and the quasi-static model is made to use it as such instead of
+/// adding its own fit, thermal and centrifugal contributions.
+pub fn prepare_with(
+    bearing: &rolldyn_geometry::CylindricalRollerBearing,
+    lubrication: &rolldyn_model::Lubrication,
+    inputs: &rolldyn_model::DynamicsInputs,
+    conditions: OperatingConditions,
+    clearance_is_operating: bool,
+    output_step_s: f64,
+    tolerance: Option<f64>,
+) -> Result<Prepared, SetupError> {
+    let traction = lubrication
+        .traction_model()
+        .map_err(|e| SetupError(format!("[lubricant]: {e}")))?;
+    let epicyclic = bearing.epicyclic_cage_speed(
+        conditions.inner_speed.speed(0.0),
+        conditions.outer_speed.speed(0.0),
+    );
+    let mut settings = DynamicsSettings {
+        output_step_s,
+        ..DynamicsSettings::default()
+    };
+    if let Some(tol) = tolerance {
+        if !(tol > 0.0 && tol < 1.0) {
+            return Err(SetupError("--tolerance must lie in (0, 1)".into()));
+        }
+        settings.integrator.tolerance = tol;
+    }
+    let parameters = contact_parameters(bearing, inputs);
+    let cage_temperature = conditions.temperatures.cage_k;
+    let land_contact = rolldyn_dynamics::TwoLevelLand {
+        parameters: parameters.cage_land,
+    };
+    let traction = RacewayTraction::same(traction);
+    let mut initial = Simulation::default_initial_state(
+        bearing,
+        conditions.clone(),
+        parameters,
+        traction.clone(),
+    )
+    .map_err(|e| SetupError(e.to_string()))?;
+    let quasi_static = start_at_quasi_static_speeds(
+        bearing,
+        &conditions,
+        lubrication,
+        clearance_is_operating,
+        &mut initial,
+    );
+    let mut sim = Simulation::with_initial_state(
+        bearing, conditions, parameters, settings, traction, &initial,
+    )
+    .map_err(|e| SetupError(e.to_string()))?;
+    // Hydrodynamic cage land (Reynolds crate) wherever a land guides the cage (issue 7 item 3).
+    if let Some(cage) = bearing
+        .cage
+        .as_ref()
+        .filter(|c| c.guidance != rolldyn_geometry::CageGuidance::Rollers)
+    {
+        let inner = cage.guidance == rolldyn_geometry::CageGuidance::InnerLand;
+        let ring = if inner {
+            &bearing.inner_ring
+        } else {
+            &bearing.outer_ring
+        };
+        let width = ring
+            .guiding_land
+            .map_or(cage.width, |l| l.width)
+            .min(cage.width);
+        let viscosity = lubrication
+            .oil
+            .dynamic_viscosity(lubrication.oil.clamp_temperature(cage_temperature))
+            .map_err(|e| SetupError(format!("[lubricant]: {e}")))?;
+        let land = rolldyn_dynamics::HydrodynamicLand::new(
+            0.5 * cage.land_diameter().unwrap_or(0.0),
+            width,
+            2,
+            0.5 * cage.floating_clearance,
+            inner,
+            viscosity,
+            land_contact,
+        )
+        .map_err(|e| SetupError(e.to_string()))?;
+        sim.set_cage_land_model(Box::new(land));
+    }
+    Ok(Prepared {
+        simulation: sim,
+        revolution_s: std::f64::consts::TAU / epicyclic.abs().max(1e-9),
+        quasi_static,
+    })
+}
+
+/// Issue 6 "start from the quasi-static solution": the rollers keep the static load
+/// distribution of the default start, but cage and roller orbit speeds take the quasi-static
+/// cage speed (Muraki friction, short-bearing land), spins pure rolling on the outer raceway at
+/// that speed. When the quasi-static model cannot solve the point the epicyclic start is kept.
+/// The quasi-static radial load is the r.m.s. over a shaft revolution of the vector sum of the
+/// fixed and rotating loads, √(|F_fixed|² + |F_rot|²) (their cross term averages out); it equals
+/// the load itself when only one kind is present.
+fn start_at_quasi_static_speeds(
+    bearing: &rolldyn_geometry::CylindricalRollerBearing,
+    conditions: &OperatingConditions,
+    lubrication: &rolldyn_model::Lubrication,
+    clearance_is_operating: bool,
+    initial: &mut rolldyn_dynamics::InitialState,
+) -> Result<rolldyn_quasistatic::SkidResult, String> {
+    let (wi, wo) = (
+        conditions.inner_speed.speed(0.0),
+        conditions.outer_speed.speed(0.0),
+    );
+    let fixed = conditions.fixed_force(0.0);
+    let load = fixed[0]
+        .hypot(fixed[1])
+        .hypot(conditions.rotating_force_magnitude(0.0));
+    let t = conditions.temperatures;
+    let mut qs = rolldyn_quasistatic::OperatingConditions::new(
+        wi,
+        wo,
+        load,
+        lubrication.oil.clone(),
+        t.inner_raceway_k,
+    );
+    qs.temperatures.outer_ring = t.outer_raceway_k;
+    qs.temperatures.cage = t.cage_k;
+    qs.friction = rolldyn_quasistatic::FrictionModel::Muraki {
+        settings: rolldyn_lubrication::MurakiSettings {
+            rheology: lubrication.rheology,
+            ..Default::default()
+        },
+        mixed: None,
+        film: rolldyn_lubrication::FilmFormula::Auto,
+    };
+    let options = rolldyn_quasistatic::QuasiStaticOptions::default();
+    let compensated;
+    let bearing = if clearance_is_operating {
+        // the operating clearance is the mounting clearance plus contributions that do not
+        // depend on it (SPEC §5.2), so shifting the mounting clearance by the difference makes
+        // the quasi-static operating clearance equal the given one
+        let epicyclic = bearing.epicyclic_cage_speed(wi, wo);
+        let operating = rolldyn_quasistatic::operating_geometry(bearing, &qs, epicyclic)
+            .clearance
+            .operating_m;
+        let mut b = bearing.clone();
+        b.clearance.radial += bearing.clearance.radial - operating;
+        b.clearance.allow_preload = true;
+        compensated = b;
+        &compensated
+    } else {
+        bearing
+    };
+    let result = rolldyn_quasistatic::solve(bearing, &qs, &options).map_err(|e| e.to_string())?;
+    let wc = result.cage_speed_rad_s;
+    initial.cage_speed_rad_s = wc;
+    for r in &mut initial.rollers {
+        r.orbital_speed_rad_s = wc;
+        r.spin_speed_rad_s =
+            rolldyn_dynamics::pure_rolling_spin(wc, wo, r.radius_m, 0.5 * bearing.roller.diameter);
+    }
+    Ok(result)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rolldyn_dynamics::conditions::SpeedLaw;
+
+    const RPM: f64 = std::f64::consts::PI / 30.0;
+
+    /// `[dynamics]` reaches the simulation: cage drag into the conditions, each given contact
+    /// parameter replaces its default and the others keep theirs.
+    #[test]
+    fn dynamics_section_sets_drag_and_contact_parameters() {
+        let text = format!(
+            "{}\n[dynamics.roller_cage]\nstiffness = 5e8\n[dynamics.roller_end_rib]\nenabled = false\nfriction_law = \"ehl\"\n",
+            rolldyn_model::DEFAULT_MODEL
+        );
+        let model = rolldyn_model::parse(&text, "m.toml").unwrap();
+        let c = conditions(&Overrides::default(), &model).unwrap();
+        assert!((c.cage_drag_n_m_s - 6.62e-4).abs() < 1e-15);
+        let (bearing, _) = bearing_and_oil(&model).unwrap();
+        let p = contact_parameters(bearing, &model.dynamics);
+        let default = ContactParameters::for_bearing(bearing);
+        assert_eq!(p.roller_cage.k_p, 5e8);
+        assert_eq!(p.roller_cage.exponent, default.roller_cage.exponent);
+        assert!(!p.roller_end_rib.enabled);
+        assert_eq!(
+            p.roller_end_rib.friction,
+            rolldyn_dynamics::EndFriction::Ehl
+        );
+        assert_eq!(p.cage_land, default.cage_land);
+        assert_eq!(p.inner_raceway, default.inner_raceway);
+    }
+
+    fn model_1032930() -> rolldyn_model::Model {
+        let path =
+            std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/1032930.toml");
+        rolldyn_model::load(&path).expect("the 1032930 example loads")
+    }
+
+    /// SPEC §3.7 loads of 1032930 from the model file: weight 578.8 N and gearbox step, both
+    /// downwards, unbalance U ω², speed schedule, clearance schedule.
+    #[test]
+    fn start_up_conditions_from_the_model() {
+        let model = model_1032930();
+        let c = conditions(&Overrides::default(), &model).unwrap();
+        assert!(matches!(c.inner_speed, SpeedLaw::Schedule(ref p) if p.len() == 3));
+        assert_eq!(c.loads.len(), 3);
+        let f = c.fixed_force(10.0);
+        assert!(f[0].abs() < 1e-9 && (f[1] + 578.8 + 3708.8).abs() < 1e-9);
+        let f = c.fixed_force(100.0);
+        assert!((f[1] + 578.8 + 406.5).abs() < 1e-9);
+        assert!((c.rotating_force_magnitude(82.0988) - 1376.0).abs() < 1.0);
+        assert!((c.clearance_at(0.0).unwrap() - 10e-6).abs() < 1e-15);
+        // oil temperature of the schedule at t = 0 for a whole dynamic run
+        assert!((c.temperatures.inner_raceway_k - 288.15).abs() < 1e-9);
+        // --speed replaces the schedule by a constant, --oil-temperature the temperature
+        let overrides = Overrides {
+            speed: Some(7000.0 * RPM),
+            oil_temperature: Some(330.0),
+            ..Overrides::default()
+        };
+        let c = conditions(&overrides, &model).unwrap();
+        assert_eq!(c.inner_speed, SpeedLaw::Constant(7000.0 * RPM));
+        assert_eq!(c.temperatures.cage_k, 330.0);
+    }
+
+    /// Seed 000 Table 3.4: the frozen points take the schedules' values; point 2 (starter
+    /// cut-off) is still loaded by the gearbox, point 3 is not.
+    #[test]
+    fn frozen_points_of_table_3_4() {
+        let model = model_1032930();
+        let expected = [
+            // t, rpm, fixed load N, clearance µm, oil °C
+            (82.0988, 6300.0, 4287.6, 2.15, 49.0),
+            (85.2988, 6348.83, 985.3, 1.92, 50.0),
+            (270.4988, 9175.0, 985.3, -5.0, 80.0),
+        ];
+        for (t, rpm, load, g_um, oil_c) in expected {
+            let c = frozen_conditions(&Overrides::default(), &model, t).unwrap();
+            let w = c.inner_speed.speed(0.0);
+            assert!((w / RPM - rpm).abs() < 0.01, "{t}: {}", w / RPM);
+            assert_eq!(c.inner_speed.speed(1.0), w);
+            let f = c.fixed_force(0.0);
+            assert!((f[0].hypot(f[1]) - load).abs() < 1e-9, "{t}");
+            assert!((c.rotating_force_magnitude(0.0) - 3.1625e-3 * w * w).abs() < 1e-9);
+            let g = c.clearance_at(0.0).unwrap();
+            assert!((g * 1e6 - g_um).abs() < 1e-9, "{t}: {g}");
+            assert!((c.temperatures.outer_raceway_k - (oil_c + 273.15)).abs() < 1e-9);
+        }
+    }
+}
