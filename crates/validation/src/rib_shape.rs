@@ -12,19 +12,14 @@
 //! collected: distance of the contact point from the rib edge (rim minus edge break), normal
 //! force, sliding speed at the contact point, friction coefficient, power and regime.
 //!
-//! The simulation is built here rather than by `rolldyn simulate` because the study needs the
-//! end-contact friction switch of SPEC §6.7 ([`EndFriction::Ehl`]: film traction while the
-//! contact spot stays inside the face overlap, boundary friction otherwise), which the model file
-//! does not expose. The cage land is the dynamics' default two-level land and the run starts from
-//! the default static start; neither touches the end–rib geometry studied here.
+//! The simulation is the one `rolldyn simulate` builds (`rolldyn_setup::prepare`: quasi-static
+//! start, hydrodynamic cage land, the model's cage drag) with the end-contact friction switch of
+//! SPEC §6.7 set by the study ([`EndFrictionLaw::Ehl`] by default: film traction while the
+//! contact spot stays inside the face overlap, boundary friction otherwise).
 
-use rolldyn_dynamics::{
-    ContactParameters, ContactTemperatures, DynamicsSettings, EndContactRegime, EndFriction,
-    InnerRingLoad, OperatingConditions, OutputSink, RacewayTraction, Simulation, Snapshot,
-    SpeedLaw,
-};
+use rolldyn_dynamics::{EndContactRegime, OutputSink, Simulation, Snapshot};
 use rolldyn_geometry::{BearingModel, RibFace};
-use rolldyn_model::Model;
+use rolldyn_model::{EndFrictionLaw, Model};
 use rolldyn_sweep::SweepFile;
 use std::path::Path;
 
@@ -57,7 +52,7 @@ pub struct Settings {
     /// 0.002 ms (§3.1.1.7).
     pub output_step_s: f64,
     /// Friction law of the end–rib contacts.
-    pub end_friction: EndFriction,
+    pub end_friction: EndFrictionLaw,
 }
 
 impl Default for Settings {
@@ -66,7 +61,7 @@ impl Default for Settings {
             revolutions: 4.0,
             discard_revolutions: 1.0,
             output_step_s: 1e-5,
-            end_friction: EndFriction::Ehl,
+            end_friction: EndFrictionLaw::Ehl,
         }
     }
 }
@@ -341,58 +336,15 @@ impl OutputSink for RibStats {
 /// The 6-DOF simulation of `model` at its `[operating]` point with the study's end friction,
 /// and its epicyclic cage revolution period, s. Errors name the missing model data.
 pub fn simulation(model: &Model, settings: &Settings) -> Result<(Simulation, f64), String> {
-    let BearingModel::Cylindrical(bearing) = &model.bearing else {
-        return Err(format!(
-            "{}: the rib-shape study needs a complete cylindrical bearing",
-            model.bearing.name()
-        ));
-    };
-    let lubrication = model
-        .lubrication
-        .as_ref()
-        .ok_or("the model has no [lubricant] section")?;
-    let traction = lubrication
-        .traction_model()
-        .map_err(|e| format!("[lubricant]: {e}"))?;
-    let op = &model.operating;
-    let speed = op.inner_speed.ok_or("no operating.inner_speed")?;
-    let load = op.radial_load.ok_or("no operating.radial_load")?;
-    let oil = op.temperatures.oil.ok_or("no operating.temperatures.oil")?;
-    let mut conditions = OperatingConditions::new(speed, load);
-    if op.load_rotates {
-        conditions.loads = vec![InnerRingLoad::Rotating {
-            magnitude_n: load,
-            phase_rad: 0.0,
-        }];
-    }
-    let outer = op.outer_speed.unwrap_or(0.0);
-    conditions.outer_speed = SpeedLaw::Constant(outer);
-    let t = op.temperatures;
-    conditions.temperatures = ContactTemperatures {
-        inner_raceway_k: t.inner_ring.unwrap_or(oil),
-        outer_raceway_k: t.outer_ring.unwrap_or(oil),
-        cage_k: t.cage.unwrap_or(oil),
-    };
-    conditions.misalignment_rad = bearing.misalignment.inner_ring_tilt;
-    let mut parameters = ContactParameters::for_bearing(bearing);
-    parameters.roller_end_rib.friction = settings.end_friction;
-    let dynamics = DynamicsSettings {
-        output_step_s: settings.output_step_s,
-        ..DynamicsSettings::default()
-    };
-    let period = std::f64::consts::TAU / bearing.epicyclic_cage_speed(speed, outer).abs();
-    if !period.is_finite() {
-        return Err("the epicyclic cage speed is zero".into());
-    }
-    let sim = Simulation::new(
-        bearing,
-        conditions,
-        parameters,
-        dynamics,
-        RacewayTraction::same(traction),
+    let mut model = model.clone();
+    model.dynamics.roller_end_rib.friction_law = Some(settings.end_friction);
+    rolldyn_setup::prepare(
+        &model,
+        &rolldyn_setup::Overrides::default(),
+        settings.output_step_s,
+        None,
     )
-    .map_err(|e| e.to_string())?;
-    Ok((sim, period))
+    .map_err(|e| e.to_string())
 }
 
 /// Runs one model for the study and collects its rib-contact statistics.

@@ -324,6 +324,20 @@ impl TractionModel {
     }
 }
 
+impl TractionConfig {
+    /// Sign of the traction for the sliding speed `v`: regularised over
+    /// `regularisation_speed_m_s` when set, else the plain sign (0 at rest).
+    fn sliding_sign(&self, v: f64) -> f64 {
+        if self.regularisation_speed_m_s > 0.0 {
+            regularisation(v, self.regularisation_speed_m_s)
+        } else if v == 0.0 {
+            0.0
+        } else {
+            v.signum()
+        }
+    }
+}
+
 impl Default for TractionConfig {
     fn default() -> Self {
         TractionConfig {
@@ -391,22 +405,16 @@ pub fn traction_with_film(
         };
     }
 
-    let hz = state.hertz();
     if q <= 0.0 {
         return Traction::unloaded(s, state.temperature_k, w);
     }
-    // validated in TractionModel::new: the oil exists for these laws
-    let Some(oil) = cfg.oil.as_ref() else {
-        return Traction::default();
-    };
-    let sign = if cfg.regularisation_speed_m_s > 0.0 {
-        regularisation(v, cfg.regularisation_speed_m_s)
-    } else if v == 0.0 {
-        0.0
-    } else {
-        v.signum()
-    };
     if let FrictionLaw::Seed001(st) = &cfg.law {
+        // validated in TractionModel::new: the oil exists for this law
+        let Some(oil) = cfg.oil.as_ref() else {
+            return Traction::default();
+        };
+        let hz = state.hertz();
+        let sign = cfg.sliding_sign(v);
         let (t, clamped) = model.contact_temperature(state.temperature_k);
         if clamped {
             w |= Warnings::TEMPERATURE_CLAMPED;
@@ -589,13 +597,7 @@ impl TractionModel {
         let (FrictionLaw::Lubricated(lf), Some(oil)) = (&cfg.law, cfg.oil.as_ref()) else {
             return Traction::default();
         };
-        let sign = if cfg.regularisation_speed_m_s > 0.0 {
-            regularisation(v, cfg.regularisation_speed_m_s)
-        } else if v == 0.0 {
-            0.0
-        } else {
-            v.signum()
-        };
+        let sign = cfg.sliding_sign(v);
         let hz = state.hertz();
         let pr = &prep.props;
         let (hc, hm, lambda) = (prep.film_central_m, prep.film_minimum_m, prep.lambda);
