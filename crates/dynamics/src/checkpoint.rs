@@ -5,7 +5,7 @@
 use crate::error::DynError;
 
 /// Format tag (02: integrator method tag and Rosenbrock-W state).
-pub(crate) const MAGIC: &[u8; 8] = b"RDYNCK04";
+pub(crate) const MAGIC: &[u8; 8] = b"RDYNCK05";
 
 /// Appends values to a byte buffer.
 #[derive(Debug, Default)]

@@ -51,9 +51,6 @@ struct Tracker {
     run: Window,
     /// the run window has been restarted after the discarded revolutions
     run_started: bool,
-    /// unwrapped orbit angle of the cage centre
-    orbit: f64,
-    orbit_raw: f64,
     prev_rev_speed: f64,
     steady_at: f64,
     next_sample: u64,
@@ -222,11 +219,9 @@ impl Simulation {
             tr: Tracker {
                 revolutions: 0,
                 rev_angle0: 0.0,
-                rev: Window::start(0.0, 0.0, 0.0),
-                run: Window::start(0.0, 0.0, 0.0),
+                rev: Window::start(0.0, 0.0),
+                run: Window::start(0.0, 0.0),
                 run_started: false,
-                orbit: 0.0,
-                orbit_raw: 0.0,
                 prev_rev_speed: f64::NAN,
                 steady_at: f64::NAN,
                 next_sample: 0,
@@ -236,12 +231,9 @@ impl Simulation {
             fingerprint,
         };
         let ci = lay.cage();
-        let c = [sim.ig.y()[ci], sim.ig.y()[ci + 1]];
-        sim.tr.orbit_raw = c[1].atan2(c[0]);
-        sim.tr.orbit = sim.tr.orbit_raw;
         let phi = sim.ig.y()[ci + 3];
         sim.tr.rev_angle0 = phi;
-        sim.tr.rev = Window::start(0.0, phi, sim.tr.orbit);
+        sim.tr.rev = Window::start(0.0, phi);
         sim.tr.run = sim.tr.rev;
         sim.tr.run_started = settings.discard_revolutions == 0;
         Ok(sim)
@@ -453,16 +445,6 @@ impl Simulation {
         let lay = self.model.layout;
         let ci = lay.cage();
         let y = self.ig.y();
-        // unwrap the cage-centre orbit angle
-        let raw = y[ci + 1].atan2(y[ci]);
-        let mut d = raw - self.tr.orbit_raw;
-        if d > std::f64::consts::PI {
-            d -= TAU;
-        } else if d < -std::f64::consts::PI {
-            d += TAU;
-        }
-        self.tr.orbit += d;
-        self.tr.orbit_raw = raw;
         let phi = y[ci + 3];
         self.tr.rev.add(h, &v);
         self.tr.run.add(h, &v);
@@ -527,11 +509,11 @@ impl Simulation {
         if !self.tr.run_started
             && self.tr.revolutions >= u64::from(self.settings.discard_revolutions)
         {
-            self.tr.run = Window::start(t, phi, self.tr.orbit);
+            self.tr.run = Window::start(t, phi);
             self.tr.run_started = true;
         }
         self.tr.rev_angle0 = phi;
-        self.tr.rev = Window::start(t, phi, self.tr.orbit);
+        self.tr.rev = Window::start(t, phi);
         sink.revolution(&summary);
     }
 
@@ -706,8 +688,6 @@ impl Simulation {
         tr.rev.save(&mut w);
         tr.run.save(&mut w);
         w.u64(u64::from(tr.run_started));
-        w.f64(tr.orbit);
-        w.f64(tr.orbit_raw);
         w.f64(tr.prev_rev_speed);
         w.f64(tr.steady_at);
         w.u64(tr.next_sample);
@@ -732,8 +712,6 @@ impl Simulation {
         tr.rev = Window::load(&mut r)?;
         tr.run = Window::load(&mut r)?;
         tr.run_started = r.u64()? != 0;
-        tr.orbit = r.f64()?;
-        tr.orbit_raw = r.f64()?;
         tr.prev_rev_speed = r.f64()?;
         tr.steady_at = r.f64()?;
         tr.next_sample = r.u64()?;

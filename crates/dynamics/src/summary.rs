@@ -84,7 +84,6 @@ pub(crate) struct Window {
     pub max_vs: f64,
     pub max_srr: f64,
     pub cage_angle0: f64,
-    pub orbit0: f64,
     pub worst: Option<ContactState>,
     pub worst_srr: f64,
     pub min_margin: f64,
@@ -95,7 +94,7 @@ pub(crate) struct Window {
 }
 
 impl Window {
-    pub fn start(t: f64, cage_angle: f64, orbit: f64) -> Self {
+    pub fn start(t: f64, cage_angle: f64) -> Self {
         Self {
             t0: t,
             dur: 0.0,
@@ -109,7 +108,6 @@ impl Window {
             max_vs: 0.0,
             max_srr: 0.0,
             cage_angle0: cage_angle,
-            orbit0: orbit,
             worst: None,
             worst_srr: 0.0,
             min_margin: f64::INFINITY,
@@ -209,7 +207,6 @@ impl Window {
             self.max_vs,
             self.max_srr,
             self.cage_angle0,
-            self.orbit0,
             self.worst_srr,
             self.min_margin,
             self.max_rib,
@@ -225,7 +222,7 @@ impl Window {
     }
 
     pub fn load(r: &mut Reader) -> Result<Self, DynError> {
-        let mut v = [0.0; 19];
+        let mut v = [0.0; 18];
         for x in v.iter_mut() {
             *x = r.f64()?;
         }
@@ -246,13 +243,12 @@ impl Window {
             max_vs: v[9],
             max_srr: v[10],
             cage_angle0: v[11],
-            orbit0: v[12],
-            worst_srr: v[13],
-            min_margin: v[14],
-            max_rib: v[15],
-            max_pocket: v[16],
-            orbit_moment_int: v[17],
-            orbit_r2_int: v[18],
+            worst_srr: v[12],
+            min_margin: v[13],
+            max_rib: v[14],
+            max_pocket: v[15],
+            orbit_moment_int: v[16],
+            orbit_r2_int: v[17],
             worst: unpack(&p),
         })
     }
@@ -265,7 +261,7 @@ mod tests {
     /// A cage spinning at `spin` whose centre circles at radius `r` with angular speed
     /// `orbital` (plus a fixed offset `offset` along x), sampled over `dur`.
     fn window(spin: f64, orbital: f64, r: f64, offset: f64, dur: f64) -> (Window, f64) {
-        let mut w = Window::start(0.0, 0.0, 0.0);
+        let mut w = Window::start(0.0, 0.0);
         let n = 20_000;
         let h = dur / n as f64;
         for i in 0..n {
