@@ -11,8 +11,8 @@
 //! ## Entry point
 //! [`Simulation::new`] → [`Simulation::run_until`] with an [`OutputSink`] (streaming samples
 //! and per-revolution summaries) → [`RunSummary`]. [`Simulation::checkpoint`] /
-//! [`Simulation::restore`] continue a run bit-for-bit. [`study::obrien_taylor`] is the V-06
-//! cage-slip study.
+//! [`Simulation::restore`] continue a run bit-for-bit. [`study::measure_cage_slip`] measures the
+//! cage slip over whole revolutions for the cage-slip studies.
 //!
 //! ## Coordinates (inertial frame = outer-ring frame)
 //! `z` is the bearing axis, `x`, `y` span the radial plane (gravity default −y). The state

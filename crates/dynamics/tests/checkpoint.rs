@@ -43,7 +43,17 @@ fn build_with(method: IntegratorMethod) -> Simulation {
         cond,
         params,
         set,
-        RacewayTraction::same(rolldyn_dynamics::study::nvi65_traction().unwrap()),
+        // NVI 65 with the elastic term of (1.4) only, as V-06
+        RacewayTraction::same(
+            rolldyn_lubrication::TractionModel::lubricated(
+                rolldyn_lubrication::lubricant_by_name("nvi65").unwrap(),
+                rolldyn_lubrication::MurakiSettings {
+                    rheology: rolldyn_lubrication::Rheology::LinearElastic { cap: 0.1 },
+                    ..Default::default()
+                },
+            )
+            .unwrap(),
+        ),
     )
     .unwrap()
 }
