@@ -288,6 +288,11 @@ pub struct DragInputs {
     pub coefficient: DragCoefficient,
     /// Switch the drag off (pure-rolling checks). Default true (on).
     pub enabled: bool,
+    /// A linear viscous drag `M = −c ω` given per model (SPEC §3.6, seed 000 §3.1.1's CFD value;
+    /// the dynamics' `[dynamics] cage_drag`), N·m·s/rad, replacing the mixture formula. Default
+    /// `None` (the formula). The dynamics' quasi-static start sets it so that both models see
+    /// the same drag.
+    pub viscous_coefficient_n_m_s: Option<f64>,
 }
 
 impl Default for DragInputs {
@@ -300,6 +305,7 @@ impl Default for DragInputs {
             air_viscosity_pa_s: 1.85e-5,
             coefficient: DragCoefficient::default(),
             enabled: true,
+            viscous_coefficient_n_m_s: None,
         }
     }
 }

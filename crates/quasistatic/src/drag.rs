@@ -93,6 +93,13 @@ pub fn cage_drag(
     if !inputs.enabled || cage_speed == 0.0 {
         return CageDrag::default();
     }
+    if let Some(c) = inputs.viscous_coefficient_n_m_s {
+        return CageDrag {
+            torque_n_m: -c * cage_speed,
+            power_w: c * cage_speed * cage_speed,
+            ..CageDrag::default()
+        };
+    }
     let chi = inputs.oil_volume_fraction.clamp(0.0, 1.0);
     let rho = match inputs.density_rule {
         MixtureDensity::Seed001 => air_oil_density_seed001(oil_density, chi),
@@ -170,6 +177,22 @@ mod tests {
         );
         let ratio = d.torque_n_m / cfd;
         assert!(ratio > 1.0 / 1.5 && ratio < 1.5, "{ratio}");
+    }
+
+    #[test]
+    fn a_given_viscous_coefficient_replaces_the_formula() {
+        let g = CageDragGeometry {
+            outer_radius_m: 0.097,
+            inner_radius_m: 0.08675,
+            width_m: 0.020,
+        };
+        let inputs = DragInputs {
+            viscous_coefficient_n_m_s: Some(6.62e-4),
+            ..DragInputs::default()
+        };
+        let d = cage_drag(&g, &inputs, 391.8, 850.0, 0.005);
+        assert!((d.torque_n_m + 6.62e-4 * 391.8).abs() < 1e-15);
+        assert!((d.power_w - 6.62e-4 * 391.8 * 391.8).abs() < 1e-12);
     }
 
     #[test]

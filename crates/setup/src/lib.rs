@@ -433,6 +433,8 @@ fn start_at_quasi_static_speeds(
     );
     qs.temperatures.outer_ring = t.outer_raceway_k;
     qs.temperatures.cage = t.cage_k;
+    // the dynamics' drag law, so that the start is the dynamics' own steady state
+    qs.drag.viscous_coefficient_n_m_s = Some(conditions.cage_drag_n_m_s);
     qs.friction = rolldyn_quasistatic::FrictionModel::Muraki {
         settings: rolldyn_lubrication::MurakiSettings {
             rheology: lubrication.rheology,
