@@ -481,6 +481,7 @@ impl Simulation {
         if steady && !self.tr.steady_at.is_finite() {
             self.tr.steady_at = t;
         }
+        let whirl = w.whirl(phi);
         let summary = RevolutionSummary {
             revolution: self.tr.revolutions,
             start_s: w.t0,
@@ -494,8 +495,8 @@ impl Simulation {
             max_inner_sliding_speed_m_s: w.max_vs,
             max_relative_slip: w.max_srr,
             scuffing_margin: margin,
-            whirl_ratio: w.whirl(phi),
-            precession: self.settings.is_precession(w.whirl(phi)),
+            whirl_ratio: whirl,
+            precession: self.settings.is_precession(whirl),
             cage_orbit_radius_m: w.orbit_radius_rms(),
             friction_power_mean_w: w.mean_power(),
             max_roller_end_rib_force_n: w.max_rib,
@@ -651,6 +652,7 @@ impl Simulation {
             margin = self.scuffing_margin(w);
         }
         let st = &self.ig.stats();
+        let whirl = w.whirl(phi);
         RunSummary {
             cage_slip_mean: w.mean_slip(),
             cage_speed_mean_rad_s: w.mean_speed(),
@@ -662,8 +664,8 @@ impl Simulation {
             max_inner_sliding_speed_m_s: w.max_vs,
             max_relative_slip: w.max_srr,
             min_scuffing_margin: margin,
-            whirl_ratio: w.whirl(phi),
-            precession: self.settings.is_precession(w.whirl(phi)),
+            whirl_ratio: whirl,
+            precession: self.settings.is_precession(whirl),
             cage_orbit_radius_m: w.orbit_radius_rms(),
             simulated_time_s: self.ig.t(),
             wall_time_s: self.tr.wall,

@@ -64,5 +64,5 @@ pub use scuffing::{CriticalSlip, SlipSearch, critical_slip};
 pub use traction::{
     BoundaryFriction, FrictionLaw, Hydrodynamic, LubricatedFriction, MixedLimits, MurakiSettings,
     PreparedContact, Rheology, Seed001Settings, SmallShearRate, Traction, TractionModel,
-    TwoLevelLaw, Warnings, traction, traction_with_film,
+    TwoLevelLaw, Warnings, traction,
 };

@@ -365,9 +365,9 @@ pub fn traction(state: &ContactState, model: &TractionModel) -> Traction {
 
 /// [`traction`] with the central and minimum film `(h_c, h_min)` given by the caller (m): the
 /// hydrodynamic friction uses `h_c`, Λ uses `h_min`. `None` computes both with the model's film
-/// formula (see [`TractionModel::prepare_contact`] to share one film among many slices).
+/// formula ([`TractionModel::prepare_contact`] shares one film among many slices).
 #[inline]
-pub fn traction_with_film(
+fn traction_with_film(
     state: &ContactState,
     model: &TractionModel,
     film: Option<(f64, f64)>,
