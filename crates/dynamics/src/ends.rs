@@ -147,6 +147,15 @@ pub(crate) fn deepest(
     let p = axpy(c, s * end.half_length, a);
     let dp = sub(p, body.o);
     let zeta_p = dot(dp, big_a);
+    let delta0 = s * (zeta_p - face.zeta);
+    let cos_a = dot(a, big_a);
+    let r = end.radius;
+    // cheap upper bound first: most ends are clear of most faces most of the time. The end
+    // disc tilts by at most r·sin∠(a, A) towards the face (in the (e1, e2) basis below this is
+    // r·√(p² + q²), since p² + q² = 1 − (a·A)²).
+    if delta0 + r * (1.0 - cos_a * cos_a).max(0.0).sqrt() + face.max_protrusion() <= 0.0 {
+        return None;
+    }
     let radial = axpy(dp, -zeta_p, big_a);
     let rho_p = norm(radial);
     if rho_p <= 0.0 {
@@ -162,16 +171,10 @@ pub(crate) fn deepest(
     let e2 = cross(a, e1);
     let p_lin = s * dot(e1, big_a);
     let q_lin = s * dot(e2, big_a);
-    let ka = dot(a, big_a).abs().max(1e-6);
-    let r = end.radius;
-    let delta0 = s * (zeta_p - face.zeta);
+    let ka = cos_a.abs().max(1e-6);
     let xa = (-r).max((face.rho_lo - rho_p) / beta);
     let xb = r.min((face.rho_hi - rho_p) / beta);
     if xa >= xb {
-        return None;
-    }
-    // cheap upper bound first: most ends are clear of most faces most of the time
-    if delta0 + r * (p_lin * p_lin + q_lin * q_lin).sqrt() + face.max_protrusion() <= 0.0 {
         return None;
     }
     let cs = end.sphere_curvature;

@@ -58,7 +58,11 @@
 //! Component `i` of the state is accepted with `|e_i| ≤ τ (s_i + ρ_i |y_i|)`: lengths
 //! `s = 1 mm` (1 nm at τ = 10⁻⁶), angles `1 mm/R` (roller axis: `1 mm/(L/2)`), velocities
 //! `s = v_ref = max(|ω_i| R_i, |ω_o| R_o, 1 m/s)` with `ρ = 1`, angular momenta
-//! `I_a v_ref/R`. See `docs/dynamics-integrator.md` for the integrator choice.
+//! `I_a v_ref/R`. By default ([`VelocityErrorScale::ContactFrequency`]) a roller's radial and
+//! axial velocities and its transverse angular momenta use the energy-consistent scales
+//! `ω_c·1 mm` and `I_t ω_c·1 mm/(L/2)` instead (floored by the above), `ω_c` the roller–raceway
+//! contact frequency. See `docs/dynamics-integrator.md` for the integrator choice and the
+//! measured accuracy.
 //!
 //! * *Roller ends*: each end disc against the rib faces of both rings (pair 56: flat, conical,
 //!   convex/concave toroidal faces, rim edge break, spherical or flat roller ends) and against
@@ -110,6 +114,6 @@ pub use parameters::{
 };
 pub use rhs::axisymmetric_omega;
 pub use rosenbrock::{JacobianBlock, RosenbrockW};
-pub use settings::{DynamicsSettings, IntegratorMethod, IntegratorSettings};
+pub use settings::{DynamicsSettings, IntegratorMethod, IntegratorSettings, VelocityErrorScale};
 pub use simulation::Simulation;
 pub use vec3::V3;

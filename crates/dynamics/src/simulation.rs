@@ -19,7 +19,7 @@ use crate::parameters::ContactParameters;
 use crate::rhs::{Diagnostics, axisymmetric_omega, rhs};
 use crate::rosenbrock::{JacobianBlock, RosenbrockW};
 use crate::settings::DynamicsSettings;
-use crate::settings::IntegratorMethod;
+use crate::settings::{IntegratorMethod, VelocityErrorScale};
 use crate::stepper::Stepper;
 use crate::summary::{StepValues, Window};
 use crate::vec3::{V3, dot, unit_or};
@@ -172,7 +172,7 @@ impl Simulation {
             )));
         }
         let y = pack_state(&model, init)?;
-        let (scale, relative) = error_scales(&model);
+        let (scale, relative) = error_scales(&model, set.velocity_scale);
         let ig = match set.method {
             IntegratorMethod::Dopri5 => {
                 Stepper::Dopri5(Dopri5::new(0.0, y, scale, relative, set.initial_step_s))
@@ -861,8 +861,22 @@ fn pack_state(model: &Model, init: &InitialState) -> Result<Vec<f64>, DynError> 
     Ok(y)
 }
 
+/// Roller–raceway contact frequency `ω_c = √((k_i + k_o)/m_r)`, rad/s: the linearised
+/// stiffness `k = n Q/δ` of each whole line contact (all slices at one approach δ) at the
+/// reference load `Q = 100 N`. For the line-contact exponent n = 10/9, `k ∝ Q^{1/10}`, so a
+/// tenfold load changes ω_c by 12 % — a scale, not a load-dependent quantity.
+pub(crate) fn roller_contact_frequency(model: &Model) -> f64 {
+    const REFERENCE_LOAD_N: f64 = 100.0;
+    let stiffness = |rs: &crate::model::RacewaySlices| {
+        let k_sum: f64 = rs.k.iter().sum();
+        let delta = (REFERENCE_LOAD_N / k_sum).powf(1.0 / rs.n);
+        rs.n * REFERENCE_LOAD_N / delta
+    };
+    ((stiffness(&model.inner) + stiffness(&model.outer)) / model.m_r).sqrt()
+}
+
 /// Characteristic scales of the state components (crate docs, "Error control").
-fn error_scales(model: &Model) -> (Vec<f64>, Vec<f64>) {
+fn error_scales(model: &Model, velocity_scale: VelocityErrorScale) -> (Vec<f64>, Vec<f64>) {
     let lay = model.layout;
     let c = &model.conditions;
     let v_ref = (c.inner_speed.speed(0.0).abs() * model.ri)
@@ -874,6 +888,17 @@ fn error_scales(model: &Model) -> (Vec<f64>, Vec<f64>) {
         .iter()
         .fold(0.0_f64, |a, &x| a.max(x.abs()))
         .max(1e-3);
+    let spin_momentum = model.ia_r * v_ref / model.rw;
+    let (v_roller, l_transverse) = match velocity_scale {
+        VelocityErrorScale::SurfaceSpeed => (v_ref, spin_momentum),
+        VelocityErrorScale::ContactFrequency => {
+            let w_c = roller_contact_frequency(model);
+            (
+                v_ref.max(w_c * len),
+                spin_momentum.max(model.it_r * w_c * len / half_l),
+            )
+        }
+    };
     let mut s = vec![0.0; lay.len()];
     let mut rel = vec![0.0; lay.len()];
     for j in 0..model.z {
@@ -886,11 +911,11 @@ fn error_scales(model: &Model) -> (Vec<f64>, Vec<f64>) {
             (len / half_l, 0.0),
             (len / half_l, 0.0),
             (v_ref / model.rm, 1.0),
-            (v_ref, 1.0),
-            (v_ref, 1.0),
-            (model.ia_r * v_ref / model.rw, 1.0),
-            (model.ia_r * v_ref / model.rw, 1.0),
-            (model.ia_r * v_ref / model.rw, 1.0),
+            (v_roller, 1.0),
+            (v_roller, 1.0),
+            (l_transverse, 1.0),
+            (l_transverse, 1.0),
+            (spin_momentum, 1.0),
         ];
         for (k, (sc, r)) in vals.iter().enumerate() {
             s[b + k] = *sc;
@@ -1045,4 +1070,62 @@ fn energy(model: &Model, t: f64, y: &[f64]) -> f64 {
         }
     }
     e
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::RacewayTraction;
+
+    fn model_2002834() -> Model {
+        let rolldyn_model::BearingModel::Cylindrical(b) =
+            rolldyn_model::parse(rolldyn_model::DEFAULT_MODEL, "2002834.toml")
+                .expect("embedded model parses")
+                .bearing
+        else {
+            unreachable!("2002834 is a cylindrical bearing")
+        };
+        let cond = OperatingConditions::new(6371.0 * std::f64::consts::TAU / 60.0, 500.0);
+        Model::new(
+            &b,
+            cond,
+            ContactParameters::for_bearing(&b),
+            RacewayTraction::same(
+                rolldyn_lubrication::TractionModel::muraki(
+                    rolldyn_lubrication::lubricant_by_name("pao1-vg320").expect("built-in oil"),
+                )
+                .expect("valid oil"),
+            ),
+        )
+        .expect("valid model")
+    }
+
+    /// ω_c of 2002834 against a hand estimate: seed 000 (2.3)/(2.4) line contacts at 100 N
+    /// are ≈ 5·10⁸ N/m each, the roller 0.015–0.02 kg → √(10⁹/0.0175) ≈ 2.4·10⁵ rad/s.
+    #[test]
+    fn contact_frequency_of_2002834_is_of_the_hand_estimate() {
+        let w = roller_contact_frequency(&model_2002834());
+        assert!((1.5e5..4.0e5).contains(&w), "{w}");
+    }
+
+    /// The energy-consistent scales loosen only the roller's radial/axial velocities and
+    /// transverse momenta, by ω_c·1 mm / v_ref, and never tighten anything.
+    #[test]
+    fn contact_frequency_scales_loosen_only_roller_contact_velocities() {
+        let model = model_2002834();
+        let (old, _) = error_scales(&model, VelocityErrorScale::SurfaceSpeed);
+        let (new, _) = error_scales(&model, VelocityErrorScale::ContactFrequency);
+        for (i, (a, b)) in old.iter().zip(&new).enumerate() {
+            assert!(b >= a, "component {i}");
+        }
+        let b = model.layout.roller(0);
+        for k in [7, 8, 9, 10] {
+            assert!(new[b + k] > 3.0 * old[b + k], "roller component {k}");
+        }
+        for k in [0, 1, 2, 3, 4, 5, 6, 11] {
+            assert_eq!(new[b + k], old[b + k], "roller component {k}");
+        }
+        let c = model.layout.cage();
+        assert_eq!(new[c..], old[c..]);
+    }
 }

@@ -24,7 +24,9 @@ use crate::options::QuasiStaticOptions;
 use rolldyn_contact::roller_raceway::{RollerRacewayContact, SliceLawChoice};
 use rolldyn_contact::slices::{SliceLoad, SlicedRoller, SolveOptions};
 use rolldyn_geometry::{BearingModel, CylindricalRollerBearing};
+use rolldyn_numerics::{Damping, Newton2dOptions, Newton2dStatus, Sample, solve_2d};
 use serde::Serialize;
+use std::convert::Infallible;
 
 /// Slice models of the two raceway contacts of one roller (all rollers are identical).
 #[derive(Debug, Clone)]
@@ -236,7 +238,7 @@ impl LoadModel {
         let half_g = 0.5 * case.diametral_clearance_m;
 
         // initial ring displacement
-        let mut delta = match warm {
+        let delta = match warm {
             Some(w) if w.rollers.len() == z => w.ring_displacement_m,
             _ => {
                 if fr > 0.0 {
@@ -252,7 +254,7 @@ impl LoadModel {
                 }
             }
         };
-        let mut states: Vec<RollerState> = match warm {
+        let states: Vec<RollerState> = match warm {
             Some(w) if w.rollers.len() == z => w
                 .rollers
                 .iter()
@@ -265,9 +267,16 @@ impl LoadModel {
             _ => vec![RollerState::default(); z],
         };
 
-        let eval = |delta: [f64; 2], states: &mut Vec<RollerState>| -> Result<[f64; 6], QsError> {
-            // returns (rx, ry, jxx, jxy, jyy, sum|Q|)
-            let mut out = [0.0; 6];
+        // nothing loaded: the fallback step moves the ring towards the load by the clearance
+        let dead_zone_step = case.diametral_clearance_m.abs().max(1e-6);
+        // residual (ΣQ_i sin ψ, ΣQ_i cos ψ − F_r) and Jacobian at `delta`; `warm` holds the
+        // roller solutions at the current displacement (starting points of the roller solves)
+        let eval = |delta: [f64; 2],
+                    warm: &Vec<RollerState>|
+         -> Result<Sample<Vec<RollerState>>, QsError> {
+            let mut states = warm.clone();
+            let (mut rx, mut ry, mut jxx, mut jxy, mut jyy, mut sum_q) =
+                (0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
             for j in 0..z {
                 let (s, c) = angles[j].sin_cos();
                 let e = delta[1] * c + delta[0] * s - half_g;
@@ -288,89 +297,53 @@ impl LoadModel {
                     states[j] = ctx.solve_roller(e, th, guess)?;
                 }
                 let st = &states[j];
-                out[0] += st.qi * s;
-                out[1] += st.qi * c;
-                out[2] += st.k * s * s;
-                out[3] += st.k * s * c;
-                out[4] += st.k * c * c;
-                out[5] += st.qi.abs();
+                rx += st.qi * s;
+                ry += st.qi * c;
+                jxx += st.k * s * s;
+                jxy += st.k * s * c;
+                jyy += st.k * c * c;
+                sum_q += st.qi.abs();
             }
-            out[1] -= fr;
-            Ok(out)
+            ry -= fr;
+            let towards_load = if ry < 0.0 {
+                dead_zone_step
+            } else {
+                -dead_zone_step
+            };
+            Ok(Sample::new(
+                [rx, ry],
+                [[jxx, jxy], [jxy, jyy]],
+                (fr + sum_q).max(1e-9),
+                states,
+            )
+            .with_fallback_step([0.0, towards_load]))
         };
-
-        let mut it = 0usize;
-        let mut r = eval(delta, &mut states)?;
-        let scale = |r: &[f64; 6]| (fr + r[5]).max(1e-9);
-        let converged = |r: &[f64; 6]| r[0].abs().max(r[1].abs()) <= tol * scale(r);
-        let mut lambda = 0.0_f64;
-        while !converged(&r) {
-            if it >= opts.max_load_iterations {
-                return Err(QsError::not_converged(
-                    "load distribution",
-                    it,
-                    &[
-                        ("force x / F_r", r[0] / scale(&r)),
-                        ("force y / F_r", r[1] / scale(&r)),
-                    ],
-                ));
-            }
-            it += 1;
-            let norm0 = r[0].hypot(r[1]);
-            let (jxx, jxy, jyy) = (r[2], r[3], r[4]);
-            let mut accepted = false;
-            for _ in 0..40 {
-                // Levenberg–Marquardt with a floor: a direction without stiffness (e.g. x with a
-                // single loaded roller) gets no step unless it has a residual
-                let diag = (jxx + jyy).max(1e-300);
-                let a11 = jxx + (lambda + 1e-10) * diag;
-                let a22 = jyy + (lambda + 1e-10) * diag;
-                let det = a11 * a22 - jxy * jxy;
-                let (dx, dy) = if jxx + jyy > 0.0 && det > 0.0 {
-                    (
-                        -(a22 * r[0] - jxy * r[1]) / det,
-                        -(a11 * r[1] - jxy * r[0]) / det,
-                    )
-                } else {
-                    // nothing loaded: move the ring towards the load by the clearance
-                    let step = case.diametral_clearance_m.abs().max(1e-6);
-                    (0.0, if r[1] < 0.0 { step } else { -step })
-                };
-                let mut alpha = 1.0;
-                for _ in 0..60 {
-                    let trial = [delta[0] + alpha * dx, delta[1] + alpha * dy];
-                    let mut st = states.clone();
-                    let rt = eval(trial, &mut st)?;
-                    if rt[0].hypot(rt[1]) < norm0 || converged(&rt) {
-                        delta = trial;
-                        states = st;
-                        r = rt;
-                        accepted = true;
-                        break;
-                    }
-                    alpha *= 0.5;
-                }
-                if accepted {
-                    if alpha == 1.0 {
-                        lambda *= 0.1;
-                        if lambda < 1e-12 {
-                            lambda = 0.0;
-                        }
-                    }
-                    break;
-                }
-                lambda = (10.0 * lambda).max(1e-8);
-            }
-            if !accepted {
-                return Err(QsError::not_converged(
-                    "load distribution",
-                    it,
-                    &[
-                        ("force x / F_r", r[0] / scale(&r)),
-                        ("force y / F_r", r[1] / scale(&r)),
-                    ],
-                ));
-            }
+        let ring_newton = Newton2dOptions {
+            tolerance: tol,
+            stall_tolerance: 0.0,
+            max_iterations: opts.max_load_iterations,
+            max_halvings: 60,
+            sufficient_decrease: 0.0,
+            // Levenberg–Marquardt with a floor: a direction without stiffness (e.g. x with a
+            // single loaded roller) gets no step unless it has a residual
+            damping: Damping::Trace { floor: 1e-300 },
+            min_damping: 1e-10,
+            restart_damping: 1e-8,
+            max_damping: f64::INFINITY,
+            singular_tolerance: 0.0,
+            ..Newton2dOptions::default()
+        };
+        let ring = solve_2d(eval, delta, states, &ring_newton)?;
+        let (delta, states, r, it) = (ring.x, &ring.state, ring.residual, ring.iterations);
+        if !ring.converged() {
+            return Err(QsError::not_converged(
+                "load distribution",
+                it,
+                &[
+                    ("force x / F_r", r[0] / ring.scale),
+                    ("force y / F_r", r[1] / ring.scale),
+                ],
+            ));
         }
 
         // final pass: effective lengths, moments, residuals
@@ -437,6 +410,9 @@ impl LoadModel {
     }
 }
 
+/// Newton iterations of one tilted roller equilibrium.
+const ROLLER_ITERATIONS: usize = 200;
+
 /// Per-roller unknowns and results of one evaluation.
 #[derive(Debug, Clone, Copy, Default)]
 struct RollerState {
@@ -461,7 +437,7 @@ impl RollerContext<'_> {
         if theta == 0.0 && self.model.symmetric {
             self.solve_1d(e, guess)
         } else {
-            self.solve_2d(e, theta, guess)
+            self.solve_tilted(e, theta, guess)
         }
     }
 
@@ -555,7 +531,7 @@ impl RollerContext<'_> {
         ))
     }
 
-    fn solve_2d(&self, e: f64, theta: f64, guess: RollerState) -> Result<RollerState, QsError> {
+    fn solve_tilted(&self, e: f64, theta: f64, guess: RollerState) -> Result<RollerState, QsError> {
         let m = self.model;
         let fc = self.fc;
         let ls = m.half_span;
@@ -572,104 +548,66 @@ impl RollerContext<'_> {
                 k: 0.0,
             });
         }
-        let eval = |u: f64, b: f64| -> (f64, f64, SliceLoad, SliceLoad) {
+        // unknowns (u, β); Jacobian J = J_o + J_i in (u, ls β) (small angles: tan β ≈ β)
+        let eval = |x: [f64; 2],
+                    _: &(SliceLoad, SliceLoad)|
+         -> Result<Sample<(SliceLoad, SliceLoad)>, Infallible> {
+            let [u, b] = x;
             let lo_ = m.outer.evaluate_totals(u, b);
             let li = m.inner.evaluate_totals(e - u, theta - b);
-            (
-                lo_.force - li.force - fc,
-                (lo_.moment - li.moment) / ls,
-                li,
-                lo_,
-            )
-        };
-        let (mut u, mut b) = if guess.e != 0.0 || guess.u != 0.0 {
-            (guess.u, guess.beta)
-        } else {
-            (0.5 * (e + self.u_c), 0.5 * theta)
-        };
-        let mut lambda = 0.0_f64;
-        for _ in 0..200 {
-            let (g1, g2, li, lo_) = eval(u, b);
-            let scale = (lo_.force + li.force + fc).max(1e-12);
-            if g1.abs().max(g2.abs()) <= self.tol * scale {
-                let k = implicit_stiffness(&li, &lo_, ls);
-                return Ok(RollerState {
-                    e,
-                    theta,
-                    u,
-                    beta: b,
-                    qi: li.force,
-                    k,
-                });
-            }
-            // J = J_o + J_i in (u, θ = ls tan β) scaled variables (small angles: tan β ≈ β)
             let j11 = lo_.dforce_dapproach + li.dforce_dapproach;
             let j12 = (lo_.dforce_dtilt + li.dforce_dtilt) / ls;
             let j21 = (lo_.dmoment_dapproach + li.dmoment_dapproach) / ls;
             let j22 = (lo_.dmoment_dtilt + li.dmoment_dtilt) / (ls * ls);
-            let norm0 = g1.hypot(g2);
-            let mut accepted = false;
-            for _ in 0..40 {
-                let d = (j11 + j22).max(1e-12);
-                let a11 = j11 + lambda * d;
-                let a22 = j22 + lambda * d;
-                let det = a11 * a22 - j12 * j21;
-                if det.abs() <= 1e-14 * d * d {
-                    lambda = (10.0 * lambda).max(1e-8);
-                    continue;
-                }
-                let du = -(a22 * g1 - j12 * g2) / det;
-                let dt = -(a11 * g2 - j21 * g1) / det;
-                let mut alpha = 1.0;
-                for _ in 0..40 {
-                    let (un, bn) = (u + alpha * du, b + alpha * dt / ls);
-                    let (h1, h2, _, _) = eval(un, bn);
-                    if h1.hypot(h2) < norm0 {
-                        u = un;
-                        b = bn;
-                        accepted = true;
-                        break;
-                    }
-                    alpha *= 0.5;
-                }
-                if accepted {
-                    if alpha == 1.0 {
-                        lambda *= 0.1;
-                        if lambda < 1e-12 {
-                            lambda = 0.0;
-                        }
-                    }
-                    break;
-                }
-                lambda = (10.0 * lambda).max(1e-8);
-                if lambda > 1e12 {
-                    break;
-                }
+            Ok(Sample::new(
+                [lo_.force - li.force - fc, (lo_.moment - li.moment) / ls],
+                [[j11, j12], [j21, j22]],
+                (lo_.force + li.force + fc).max(1e-12),
+                (li, lo_),
+            ))
+        };
+        let start = if guess.e != 0.0 || guess.u != 0.0 {
+            [guess.u, guess.beta]
+        } else {
+            [0.5 * (e + self.u_c), 0.5 * theta]
+        };
+        let roller_newton = Newton2dOptions {
+            tolerance: self.tol,
+            max_iterations: ROLLER_ITERATIONS,
+            max_halvings: 40,
+            sufficient_decrease: 0.0,
+            damping: Damping::Trace { floor: 1e-12 },
+            singular_damping: 1e-8,
+            restart_damping: 1e-8,
+            singular_tolerance: 1e-14,
+            step_scale: [1.0, ls],
+            ..Newton2dOptions::default()
+        };
+        let Ok(roller) = solve_2d(eval, start, (li0, lo0), &roller_newton);
+        let [g1, g2] = roller.residual;
+        match roller.status {
+            Newton2dStatus::Converged | Newton2dStatus::Stalled => {
+                let (li, lo_) = roller.state;
+                Ok(RollerState {
+                    e,
+                    theta,
+                    u: roller.x[0],
+                    beta: roller.x[1],
+                    qi: li.force,
+                    k: implicit_stiffness(&li, &lo_, ls),
+                })
             }
-            if !accepted {
-                if g1.abs().max(g2.abs()) <= 1e-9 * scale {
-                    let k = implicit_stiffness(&li, &lo_, ls);
-                    return Ok(RollerState {
-                        e,
-                        theta,
-                        u,
-                        beta: b,
-                        qi: li.force,
-                        k,
-                    });
-                }
-                return Err(QsError::not_converged(
-                    "roller radial/moment balance",
-                    200,
-                    &[("force / N", g1), ("moment / (N·m/half-length)", g2)],
-                ));
-            }
+            Newton2dStatus::NoDescent => Err(QsError::not_converged(
+                "roller radial/moment balance",
+                ROLLER_ITERATIONS,
+                &[("force / N", g1), ("moment / (N·m/half-length)", g2)],
+            )),
+            Newton2dStatus::IterationLimit => Err(QsError::not_converged(
+                "roller radial/moment balance",
+                ROLLER_ITERATIONS,
+                &[("iterations", ROLLER_ITERATIONS as f64)],
+            )),
         }
-        Err(QsError::not_converged(
-            "roller radial/moment balance",
-            200,
-            &[("iterations", 200.0)],
-        ))
     }
 }
 

@@ -7,10 +7,12 @@
 //! the (scaled) Jacobian `Σ k_s' [1 ξ; ξ ξ²]`, `ξ = x_s/L_h`, which is positive semi-definite.
 //! Newton steps are therefore descent directions of `Π`; near-singular Hessians (few loaded
 //! slices) are regularised Levenberg–Marquardt style and every step is safeguarded by
-//! backtracking (accepted when `Π` decreases sufficiently or the residual norm decreases).
+//! backtracking (accepted when `Π` decreases sufficiently or the residual norm decreases), see
+//! [`rolldyn_numerics::solve_2d`].
 
 use super::SliceError;
 use super::roller::{SliceLoad, SlicedRoller};
+use rolldyn_numerics::{Newton2dOptions, Sample, solve_2d};
 
 /// Options of the inverse solvers.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -194,101 +196,42 @@ impl SlicedRoller {
         let tol = options.tolerance.max(0.0);
         let m_scaled = moment / ls;
         // unknowns u = (δ0, θ), θ = L_h tan φ
-        let (mut d0, mut iterations) = self.solve_approach_tan(force, 0.0, options)?;
-        let mut theta = 0.0_f64;
-        let mut lambda = 0.0_f64;
-
-        let residual =
-            |load: &SliceLoad| -> (f64, f64) { (load.force - force, load.moment / ls - m_scaled) };
-        let potential = |energy: f64, d0: f64, theta: f64| energy - force * d0 - m_scaled * theta;
-
-        let max_it = options.max_iterations.max(1);
-        let mut it = 0;
-        while it < max_it {
-            it += 1;
+        let (d0, start_iterations) = self.solve_approach_tan(force, 0.0, options)?;
+        let evaluate = |u: [f64; 2], _: &()| -> Result<Sample<()>, SliceError> {
+            let [d0, theta] = u;
             let (load, energy) = self.eval_tan::<false, true>(d0, theta / ls, &mut []);
-            let (r1, r2) = residual(&load);
-            let res = r1.abs().max(r2.abs()) / force;
-            if res <= tol {
-                return Ok(self.finish(d0, theta, iterations + it - 1));
-            }
             let h11 = load.dforce_dapproach;
             let h12 = load.dforce_dtilt / ls;
             let h22 = load.dmoment_dtilt / (ls * ls);
+            let sample = Sample::new(
+                [load.force - force, load.moment / ls - m_scaled],
+                [[h11, h12], [h12, h22]],
+                force,
+                (),
+            )
+            .with_potential(energy - force * d0 - m_scaled * theta);
             if h11.is_nan() || h11 <= 0.0 {
                 // nothing loaded (cannot happen after an accepted step from a loaded state,
                 // but be safe): reload at the current tilt
-                let (d, k) = self.solve_approach_tan(force, theta / ls, options)?;
-                d0 = d;
-                iterations += k;
-                continue;
+                let (d, _) = self.solve_approach_tan(force, theta / ls, options)?;
+                return Ok(sample.with_fallback_step([d - d0, 0.0]));
             }
-            let pi0 = potential(energy, d0, theta);
-            let norm0 = r1.hypot(r2);
-            let floor = 1e-12 * (h11 + h22);
-            let mut accepted = false;
-            for _ in 0..40 {
-                let a11 = h11 + lambda * h11.max(floor);
-                let a22 = h22 + lambda * h22.max(floor);
-                let det = a11 * a22 - h12 * h12;
-                if det.is_nan() || det <= 1e-13 * a11 * a22.max(floor) {
-                    lambda = (10.0 * lambda).max(1e-10);
-                    continue;
-                }
-                let s1 = -(a22 * r1 - h12 * r2) / det;
-                let s2 = -(a11 * r2 - h12 * r1) / det;
-                let slope = r1 * s1 + r2 * s2; // < 0: descent direction of Π
-                let mut alpha = 1.0_f64;
-                for _ in 0..30 {
-                    let dt = d0 + alpha * s1;
-                    let tt = theta + alpha * s2;
-                    let (lt, et) = self.eval_tan::<false, true>(dt, tt / ls, &mut []);
-                    let (q1, q2) = residual(&lt);
-                    let pit = potential(et, dt, tt);
-                    if pit <= pi0 + 1e-4 * alpha * slope
-                        || q1.hypot(q2) <= (1.0 - 1e-4 * alpha) * norm0
-                    {
-                        d0 = dt;
-                        theta = tt;
-                        accepted = true;
-                        break;
-                    }
-                    alpha *= 0.5;
-                }
-                if accepted {
-                    if alpha == 1.0 {
-                        lambda *= 0.1;
-                        if lambda < 1e-12 {
-                            lambda = 0.0;
-                        }
-                    }
-                    break;
-                }
-                lambda = (10.0 * lambda).max(1e-6);
-                if lambda > 1e12 {
-                    break;
-                }
-            }
-            if !accepted {
-                // no representable improvement: accept if already close to the tolerance
-                if res <= tol.max(1e-9) {
-                    return Ok(self.finish(d0, theta, iterations + it));
-                }
-                return Err(SliceError::NoConvergence {
-                    iterations: iterations + it,
-                    residual: res,
-                });
-            }
-        }
-        let (load, _) = self.eval_tan::<false, false>(d0, theta / ls, &mut []);
-        let (r1, r2) = residual(&load);
-        let res = r1.abs().max(r2.abs()) / force;
-        if res <= tol {
-            return Ok(self.finish(d0, theta, iterations + it));
+            Ok(sample)
+        };
+        let newton = Newton2dOptions {
+            tolerance: tol,
+            max_iterations: options.max_iterations.max(1),
+            ..Newton2dOptions::default()
+        };
+        let outcome = solve_2d(evaluate, [d0, 0.0], (), &newton)?;
+        let [d0, theta] = outcome.x;
+        let iterations = start_iterations + outcome.iterations;
+        if outcome.converged() {
+            return Ok(self.finish(d0, theta, iterations));
         }
         Err(SliceError::NoConvergence {
-            iterations: iterations + it,
-            residual: res,
+            iterations,
+            residual: outcome.residual[0].abs().max(outcome.residual[1].abs()) / force,
         })
     }
 

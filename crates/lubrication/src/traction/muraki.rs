@@ -133,8 +133,9 @@ fn s_thermal(sigma: f64, d: f64, phi: f64, l: f64) -> (f64, bool) {
     let arg = a * a - d * phi * l;
     let neg = arg < 0.0;
     let r = arg.max(0.0).sqrt();
-    let s =
-        (l / sigma) * (sigma + (2.0 * sigma + phi * sigma * sigma - d * l) / (r + 1.0)) / (a + r);
+    // (l/σ)·(σ + (2σ + Φσ² − D l)/(r + 1))/(a + r) over one common denominator
+    let s = l * (sigma * (r + 1.0) + 2.0 * sigma + phi * sigma * sigma - d * l)
+        / (sigma * (r + 1.0) * (a + r));
     (s, neg)
 }
 
