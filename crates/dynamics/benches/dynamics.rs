@@ -12,13 +12,7 @@ use rolldyn_lubrication::{TractionModel, lubricant_by_name};
 use std::hint::black_box;
 
 fn bearing() -> rolldyn_geometry::CylindricalRollerBearing {
-    let rolldyn_model::BearingModel::Cylindrical(mut b) =
-        rolldyn_model::parse(rolldyn_model::DEFAULT_MODEL, "2002834.toml")
-            .unwrap()
-            .bearing
-    else {
-        panic!("2002834 is a bearing")
-    };
+    let mut b = rolldyn_model::default_cylindrical_bearing();
     b.roller.slice_count = 10;
     b
 }

@@ -11,13 +11,7 @@ fn main() {
     let args: Vec<String> = std::env::args().collect();
     let dur: f64 = args.get(1).and_then(|s| s.parse().ok()).unwrap_or(0.03);
     let tol: f64 = args.get(2).and_then(|s| s.parse().ok()).unwrap_or(1e-6);
-    let rolldyn_model::BearingModel::Cylindrical(mut b) =
-        rolldyn_model::parse(rolldyn_model::DEFAULT_MODEL, "2002834.toml")
-            .expect("embedded model")
-            .bearing
-    else {
-        panic!("2002834 is a bearing")
-    };
+    let mut b = rolldyn_model::default_cylindrical_bearing();
     b.roller.slice_count = 10;
     let mut cond = OperatingConditions::new(6371.0 * std::f64::consts::TAU / 60.0, 500.0);
     cond.cage_drag_n_m_s = CAGE_DRAG_2002834_100C;

@@ -12,13 +12,7 @@ fn main() {
         .nth(1)
         .and_then(|a| a.parse().ok())
         .unwrap_or(0.02);
-    let rolldyn_model::BearingModel::Cylindrical(b) =
-        rolldyn_model::parse(rolldyn_model::DEFAULT_MODEL, "2002834.toml")
-            .expect("embedded model parses")
-            .bearing
-    else {
-        unreachable!("2002834 is a cylindrical bearing")
-    };
+    let b = rolldyn_model::default_cylindrical_bearing();
     let mut cond = OperatingConditions::new(6371.0 * std::f64::consts::TAU / 60.0, 500.0);
     cond.cage_drag_n_m_s = CAGE_DRAG_2002834_100C;
     let mut settings = DynamicsSettings {

@@ -1078,13 +1078,7 @@ mod tests {
     use crate::model::RacewayTraction;
 
     fn model_2002834() -> Model {
-        let rolldyn_model::BearingModel::Cylindrical(b) =
-            rolldyn_model::parse(rolldyn_model::DEFAULT_MODEL, "2002834.toml")
-                .expect("embedded model parses")
-                .bearing
-        else {
-            unreachable!("2002834 is a cylindrical bearing")
-        };
+        let b = rolldyn_model::default_cylindrical_bearing();
         let cond = OperatingConditions::new(6371.0 * std::f64::consts::TAU / 60.0, 500.0);
         Model::new(
             &b,

@@ -43,6 +43,17 @@ use toml::de::DeTable;
 /// The embedded default model: cylindrical roller bearing 2002834 (SPEC §1.6 a, F-02).
 pub const DEFAULT_MODEL: &str = include_str!("../../../examples/2002834.toml");
 
+/// The bearing of the embedded default model (2002834), for examples, benches and tests.
+pub fn default_cylindrical_bearing() -> rolldyn_geometry::CylindricalRollerBearing {
+    match parse(DEFAULT_MODEL, "2002834.toml")
+        .expect("the embedded model is valid (tests/examples.rs)")
+        .bearing
+    {
+        BearingModel::Cylindrical(b) => b,
+        _ => unreachable!("2002834 is a cylindrical roller bearing"),
+    }
+}
+
 /// Reads and validates a model file.
 pub fn load(path: &Path) -> Result<Model, ModelError> {
     let file = path.display().to_string();

@@ -18,6 +18,23 @@
 //!
 //! Rollers whose inner raceway does not touch carry only the centrifugal force on the outer
 //! ring (the unloaded zone, SPEC §5.4).
+//!
+//! Unloaded rollers without centrifugal force (F_c = 0) have no determined position: every
+//! (u_j, β_j) at which neither raceway is pressed is an equilibrium. Such a roller is detected
+//! geometrically (a tilt at which the roller fits between the raceways, see
+//! `RollerContext::free_position`) and returned without iterating, by convention lying on
+//! the outer raceway (u_j = first touch) and aligned with the outer ring (β_j = 0, the
+//! F_c → 0⁺ limit) when it fits so, otherwise at the tilt with the largest free play (the tilt
+//! at which it is first pinched when the interference grows, so that β_j is continuous at the
+//! edge of the load zone).
+//!
+//! Convergence of a roller balance: `max(|Q_o − Q_i − F_c|, |M_o − M_i|/l_s) ≤ tol · S` with
+//! `S = max(Q_o + Q_i + F_c, F_r/Z, S_ε)`. The floor F_r/Z (the mean roller share of the
+//! applied load) keeps the absolute accuracy of a barely loaded roller at the level the ring
+//! balance needs (its tolerance is `tol·(F_r + ΣQ_i)`), instead of demanding `tol` relative to
+//! a load of 1e-17 N; `S_ε = 8ε·P·(k_o + k_i)/tol` is the rounding floor of the residual itself
+//! (ε machine epsilon, P the magnitude of the terms of the slice approaches, k the contact
+//! stiffnesses): the forces cannot be evaluated more accurately than a few ulps of P.
 
 use crate::error::QsError;
 use crate::options::QuasiStaticOptions;
@@ -232,6 +249,9 @@ impl LoadModel {
             fc,
             u_c,
             tol: tol * 0.1,
+            // mean roller share of the applied load (module docs); the absolute floor only
+            // matters without radial load
+            force_floor: (fr / z.max(1) as f64).max(1e-12),
         };
         let tilt_of =
             |psi: f64| case.misalignment_rad * (psi - case.misalignment_azimuth_rad).cos();
@@ -424,11 +444,16 @@ struct RollerState {
     k: f64,
 }
 
+/// Factor of the rounding floor of the roller residual (ulps of the approach terms).
+const ROUNDOFF_ULPS: f64 = 8.0;
+
 struct RollerContext<'a> {
     model: &'a LoadModel,
     fc: f64,
     u_c: f64,
     tol: f64,
+    /// Least force scale of the roller convergence tests, N (module docs).
+    force_floor: f64,
 }
 
 impl RollerContext<'_> {
@@ -481,9 +506,8 @@ impl RollerContext<'_> {
         };
         for _ in 0..200 {
             let (r, dr, li, lo_) = g(u);
-            let scale = lo_.force + li.force + fc;
-            if r.abs() <= self.tol * scale.max(1e-12) || (hi - lo) <= 4.0 * f64::EPSILON * hi.abs()
-            {
+            let scale = self.scale(&li, &lo_, u.abs() + (e - u).abs());
+            if r.abs() <= self.tol * scale || (hi - lo) <= 4.0 * f64::EPSILON * hi.abs() {
                 let k = if li.force > 0.0 {
                     let (ki, ko) = (li.dforce_dapproach, lo_.dforce_dapproach);
                     ki * ko / (ki + ko)
@@ -531,6 +555,72 @@ impl RollerContext<'_> {
         ))
     }
 
+    /// Force scale S of the roller convergence tests (module docs); `reach` is the magnitude
+    /// of the approach and tilt terms of the slice approaches δ_s = a + x_s tan φ − z_s, m.
+    /// The drops z_s of the loaded slices (δ_s > 0) are below a + x_s tan φ, so the terms
+    /// of a loaded slice's approach sum to at most 2·reach.
+    fn scale(&self, li: &SliceLoad, lo: &SliceLoad, reach: f64) -> f64 {
+        let noise = ROUNDOFF_ULPS
+            * f64::EPSILON
+            * 2.0
+            * reach
+            * (li.dforce_dapproach + lo.dforce_dapproach).max(0.0);
+        (lo.force + li.force + self.fc)
+            .max(self.force_floor)
+            .max(noise / self.tol)
+    }
+
+    /// Free play of a roller between the raceways at tilt `beta` (fixed e, θ): the largest
+    /// outer approach without outer contact, `U_o(β) = min_s(z_o,s − x_s tan β)`, and the
+    /// play `U_o(β) + U_i(β) − e` (`U_i` likewise with the tilt θ − β); play ≥ 0 means that
+    /// the roller fits without pressing either raceway.
+    fn play(&self, e: f64, theta: f64, beta: f64) -> (f64, f64) {
+        let touch = |r: &SlicedRoller, t: f64| {
+            r.positions()
+                .iter()
+                .zip(r.drops())
+                .fold(f64::INFINITY, |a, (&x, &z)| a.min(z - x * t))
+        };
+        let uo = touch(&self.model.outer, beta.tan());
+        let ui = touch(&self.model.inner, (theta - beta).tan());
+        (uo, uo + ui - e)
+    }
+
+    /// The position (u, β) of a roller without centrifugal force that touches neither raceway
+    /// under load — tilt of the largest play, lying on the outer raceway — or `None` when it
+    /// is pinched at every tilt. Golden-section search of the largest play over β between
+    /// the tilts of the two raceways (0 and θ), widened by |θ| on each side (the play is a
+    /// concave, piecewise smooth function of β for small angles; a missed maximum only leaves
+    /// the case to the Newton solve).
+    fn free_position(&self, e: f64, theta: f64) -> Option<(f64, f64)> {
+        let w = theta.abs();
+        let (mut a, mut b) = (theta.min(0.0) - w, theta.max(0.0) + w);
+        let play = |beta: f64| self.play(e, theta, beta).1;
+        let r = 0.5 * (5.0_f64.sqrt() - 1.0);
+        let mut c = b - r * (b - a);
+        let mut d = a + r * (b - a);
+        let (mut fc_, mut fd) = (play(c), play(d));
+        // the bracket shrinks by 0.618 per step: 1e-9 |θ| after ≈ 45 steps
+        while b - a > 1e-9 * w {
+            if fc_ >= fd {
+                b = d;
+                d = c;
+                fd = fc_;
+                c = b - r * (b - a);
+                fc_ = play(c);
+            } else {
+                a = c;
+                c = d;
+                fc_ = fd;
+                d = a + r * (b - a);
+                fd = play(d);
+            }
+        }
+        let beta = if fc_ >= fd { c } else { d };
+        let (u, p) = self.play(e, theta, beta);
+        (p >= 0.0).then_some((u, beta))
+    }
+
     fn solve_tilted(&self, e: f64, theta: f64, guess: RollerState) -> Result<RollerState, QsError> {
         let m = self.model;
         let fc = self.fc;
@@ -538,15 +628,23 @@ impl RollerContext<'_> {
         // quick unloaded test: inner contact at the outer-only position (β = 0)
         let li0 = m.inner.evaluate_totals(e - self.u_c, theta);
         let lo0 = m.outer.evaluate_totals(self.u_c, 0.0);
+        let unloaded = |u: f64, beta: f64| RollerState {
+            e,
+            theta,
+            u,
+            beta,
+            qi: 0.0,
+            k: 0.0,
+        };
         if li0.force <= 0.0 && (lo0.moment.abs() <= 1e-12 * (lo0.force + 1e-9) * ls) {
-            return Ok(RollerState {
-                e,
-                theta,
-                u: self.u_c,
-                beta: 0.0,
-                qi: 0.0,
-                k: 0.0,
-            });
+            return Ok(unloaded(self.u_c, 0.0));
+        }
+        // without centrifugal force a roller that fits between the raceways at some tilt is
+        // unloaded, with an undetermined position (module docs for the convention)
+        if fc <= 0.0
+            && let Some((u, beta)) = self.free_position(e, theta)
+        {
+            return Ok(unloaded(u, beta));
         }
         // unknowns (u, β); Jacobian J = J_o + J_i in (u, ls β) (small angles: tan β ≈ β)
         let eval = |x: [f64; 2],
@@ -559,10 +657,11 @@ impl RollerContext<'_> {
             let j12 = (lo_.dforce_dtilt + li.dforce_dtilt) / ls;
             let j21 = (lo_.dmoment_dapproach + li.dmoment_dapproach) / ls;
             let j22 = (lo_.dmoment_dtilt + li.dmoment_dtilt) / (ls * ls);
+            let reach = u.abs() + (e - u).abs() + ls * (b.tan().abs() + (theta - b).tan().abs());
             Ok(Sample::new(
                 [lo_.force - li.force - fc, (lo_.moment - li.moment) / ls],
                 [[j11, j12], [j21, j22]],
-                (lo_.force + li.force + fc).max(1e-12),
+                self.scale(&li, &lo_, reach),
                 (li, lo_),
             ))
         };
@@ -573,6 +672,9 @@ impl RollerContext<'_> {
         };
         let roller_newton = Newton2dOptions {
             tolerance: self.tol,
+            // the scale holds the rounding floor: a stall above `tol·scale` is a failure (a
+            // looser stall test would be multiplied by the floors and spoil the ring balance)
+            stall_tolerance: 0.0,
             max_iterations: ROLLER_ITERATIONS,
             max_halvings: 40,
             sufficient_decrease: 0.0,
@@ -622,7 +724,11 @@ fn implicit_stiffness(li: &SliceLoad, lo: &SliceLoad, _ls: f64) -> f64 {
     let j22 = lo.dmoment_dtilt + li.dmoment_dtilt;
     let det = j11 * j22 - j12 * j21;
     let (qa, qt) = (li.dforce_dapproach, li.dforce_dtilt);
-    if det.abs() <= 1e-30 {
+    // Singular (relative to the rounding of det ≈ 1e-16·j11·j22): the roller pivots, e.g.
+    // about one edge slice pressed by both raceways (J = K[1 x; x x²]). The tilt is then free
+    // but the system J (du, dβ) = (dQ_i/da, dM_i/da) is consistent and every solution gives
+    // the series stiffness of the two contacts, the exact limit of the formula below.
+    if det.abs() <= 1e-9 * (j11 * j22).abs() || det.abs() <= 1e-300 {
         let (ki, ko) = (li.dforce_dapproach, lo.dforce_dapproach);
         return ki * ko / (ki + ko).max(1e-30);
     }
