@@ -32,16 +32,40 @@
 //! `S = max(Q_o + Q_i + F_c, F_r/Z, S_ε)`. The floor F_r/Z (the mean roller share of the
 //! applied load) keeps the absolute accuracy of a barely loaded roller at the level the ring
 //! balance needs (its tolerance is `tol·(F_r + ΣQ_i)`), instead of demanding `tol` relative to
-//! a load of 1e-17 N; `S_ε = 8ε·P·(k_o + k_i)/tol` is the rounding floor of the residual itself
-//! (ε machine epsilon, P the magnitude of the terms of the slice approaches, k the contact
-//! stiffnesses): the forces cannot be evaluated more accurately than a few ulps of P.
+//! a load of 1e-17 N; `S_ε = 16ε·(P_o·(k_o + k_i) + P_i·k_i)/tol` is the rounding floor of the
+//! residual itself (ε machine epsilon, P_o = |u_j| + l_s|tan β_j| and P_i = |e_j − u_j| +
+//! l_s|tan(θ_j − β_j)| the magnitudes of the terms of the outer and inner slice approaches, k
+//! the contact stiffnesses): the forces cannot be evaluated more accurately than a few ulps of
+//! their approaches, and the rounding of the roller position moves both forces. (The rounding
+//! of the inner terms does not multiply the outer stiffness: a roller far on the unloaded side
+//! pinched only by the ring tilt has P_i ≫ P_o.)
+//!
+//! Safeguards with centrifugal force at light loads (F_c > 0, low speed). Two failures of the
+//! Newton iterations are met, and both levels then fall back to nested bracketed 1-D solves
+//! (cases the Newton iterations solve are not affected):
+//!
+//! * a roller step leaves the outer raceway: where neither raceway touches, the residual is
+//!   (−F_c, 0) with a zero Jacobian. Fallback (`RollerContext::solve_nested`): for a tilt β the
+//!   radial balance is non-decreasing in u and bracketed between the first touch of the outer
+//!   raceway (Q_o = 0) and the approach at which the outer raceway carries F_c + Q_i; the
+//!   moment balance along that u(β) is non-decreasing in β (the roller balance is the gradient
+//!   of the convex elastic energy minus F_c·u) and bracketed between tilts beyond those of
+//!   both raceways. Safeguarded Newton steps (Schur-complement slope) with bisection.
+//! * with the discrete slices, a pinched roller loaded on one slice of each raceway (x_o,
+//!   x_i) has Q_i = F_c·x_o/(x_i − x_o) fixed by statics, independent of e_j: Q_i(e_j) has
+//!   plateaus of zero stiffness joined by steep ramps, and ring Newton steps jump between the
+//!   plateaus on either side of the solution. Fallback (`nested_ring`): δy from the y balance
+//!   at fixed δx, δx from the x balance along δy(δx), both non-decreasing (gradient of the
+//!   convex reduced energy), by the same bracketed safeguarded Newton steps.
 
 use crate::error::QsError;
 use crate::options::QuasiStaticOptions;
 use rolldyn_contact::roller_raceway::{RollerRacewayContact, SliceLawChoice};
 use rolldyn_contact::slices::{SliceLoad, SlicedRoller, SolveOptions};
 use rolldyn_geometry::{BearingModel, CylindricalRollerBearing};
-use rolldyn_numerics::{Damping, Newton2dOptions, Newton2dStatus, Sample, solve_2d};
+use rolldyn_numerics::{
+    Damping, Newton2dOptions, Newton2dOutcome, Newton2dStatus, Sample, solve_2d,
+};
 use serde::Serialize;
 use std::convert::Infallible;
 
@@ -353,7 +377,19 @@ impl LoadModel {
             singular_tolerance: 0.0,
             ..Newton2dOptions::default()
         };
-        let ring = solve_2d(eval, delta, states, &ring_newton)?;
+        let mut ring = solve_2d(&eval, delta, states.clone(), &ring_newton)?;
+        if !ring.converged() {
+            // plateaus of Q_i(e) (module docs): bracketed nested solve from the start point
+            let step = case
+                .diametral_clearance_m
+                .abs()
+                .max(delta[1].abs())
+                .max(1e-6)
+                * 1e-2;
+            if let Some(nested) = nested_ring(&eval, delta, states, step, tol)? {
+                ring = nested;
+            }
+        }
         let (delta, states, r, it) = (ring.x, &ring.state, ring.residual, ring.iterations);
         if !ring.converged() {
             return Err(QsError::not_converged(
@@ -428,6 +464,143 @@ impl LoadModel {
             load_zone_half_angle_rad: zone,
         })
     }
+}
+
+/// Bracketed evaluations of one level of [`nested_ring`].
+const NESTED_ITERATIONS: usize = 200;
+
+/// Root of a non-decreasing function `f` (returning value, slope, whether the point meets
+/// the convergence test, and a state) from `x0`: the bracket is found by steps of doubling
+/// length from `x0` (first `step`), the root by Newton steps inside the bracket, bisection
+/// when a Newton step leaves it or did not halve the residual. Returns the last point, its
+/// state, whether it converged, and the evaluation count.
+fn bracketed_root<S, E>(
+    mut f: impl FnMut(f64) -> Result<(f64, f64, bool, S), E>,
+    x0: f64,
+    step: f64,
+) -> Result<(f64, S, bool, usize), E> {
+    let mut evals = 1;
+    let (v0, mut slope, ok, mut state) = f(x0)?;
+    if ok {
+        return Ok((x0, state, true, evals));
+    }
+    let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
+    let mut x = x0;
+    let mut value = v0;
+    let dir = if v0 < 0.0 { 1.0 } else { -1.0 };
+    let mut h = step;
+    // bracket
+    loop {
+        if value < 0.0 {
+            lo = x;
+        } else {
+            hi = x;
+        }
+        if lo.is_finite() && hi.is_finite() {
+            break;
+        }
+        if evals >= NESTED_ITERATIONS {
+            return Ok((x, state, false, evals));
+        }
+        x += dir * h;
+        h *= 2.0;
+        let (v, sl, ok, st) = f(x)?;
+        evals += 1;
+        (value, slope, state) = (v, sl, st);
+        if ok {
+            return Ok((x, state, true, evals));
+        }
+    }
+    let mut last = f64::INFINITY;
+    while evals < NESTED_ITERATIONS {
+        let newton = if slope > 0.0 && value.abs() <= 0.5 * last {
+            x - value / slope
+        } else {
+            f64::NAN
+        };
+        last = value.abs();
+        let next = if newton > lo && newton < hi {
+            newton
+        } else {
+            0.5 * (lo + hi)
+        };
+        if next == x || next == lo || next == hi {
+            break;
+        }
+        x = next;
+        let (v, sl, ok, st) = f(x)?;
+        evals += 1;
+        (value, slope, state) = (v, sl, st);
+        if ok {
+            return Ok((x, state, true, evals));
+        }
+        if value < 0.0 {
+            lo = x;
+        } else {
+            hi = x;
+        }
+    }
+    Ok((x, state, false, evals))
+}
+
+/// Fallback of the ring Newton iteration (module docs): δy from the y balance at fixed δx,
+/// δx from the x balance along δy(δx), both by [`bracketed_root`] (the ring residual is the
+/// gradient of a convex energy, so both are non-decreasing). `None` if it does not converge.
+fn nested_ring(
+    eval: &impl Fn([f64; 2], &Vec<RollerState>) -> Result<Sample<Vec<RollerState>>, QsError>,
+    start: [f64; 2],
+    states: Vec<RollerState>,
+    step: f64,
+    tol: f64,
+) -> Result<Option<Newton2dOutcome<Vec<RollerState>>>, QsError> {
+    let converged = |s: &Sample<Vec<RollerState>>, k: usize| s.residual[k].abs() <= tol * s.scale;
+    let mut warm = states;
+    let mut evals = 0;
+    let mut y0 = start[1];
+    let mut solve_y = |dx: f64,
+                       warm: &mut Vec<RollerState>,
+                       evals: &mut usize|
+     -> Result<(f64, Sample<Vec<RollerState>>, bool), QsError> {
+        let (dy, sample, ok, n) = bracketed_root(
+            |dy| {
+                let s = eval([dx, dy], warm)?;
+                *warm = s.state.clone();
+                let [[_, _], [_, jyy]] = s.jacobian;
+                Ok::<_, QsError>((s.residual[1], jyy, converged(&s, 1), s))
+            },
+            y0,
+            step,
+        )?;
+        *evals += n;
+        y0 = dy;
+        Ok((dy, sample, ok))
+    };
+    let (dx, (dy, sample, _), ok, _) = bracketed_root(
+        |dx| {
+            let (dy, s, ok_y) = solve_y(dx, &mut warm, &mut evals)?;
+            let [[jxx, jxy], [_, jyy]] = s.jacobian;
+            let slope = if jyy > 0.0 {
+                jxx - jxy * jxy / jyy
+            } else {
+                jxx
+            };
+            let ok = ok_y && converged(&s, 0);
+            Ok::<_, QsError>((s.residual[0], slope, ok, (dy, s, ok_y)))
+        },
+        start[0],
+        step,
+    )?;
+    if !ok {
+        return Ok(None);
+    }
+    Ok(Some(Newton2dOutcome {
+        x: [dx, dy],
+        residual: sample.residual,
+        scale: sample.scale,
+        iterations: evals,
+        status: Newton2dStatus::Converged,
+        state: sample.state,
+    }))
 }
 
 /// Newton iterations of one tilted roller equilibrium.
@@ -506,7 +679,7 @@ impl RollerContext<'_> {
         };
         for _ in 0..200 {
             let (r, dr, li, lo_) = g(u);
-            let scale = self.scale(&li, &lo_, u.abs() + (e - u).abs());
+            let scale = self.scale(&li, &lo_, u.abs(), (e - u).abs());
             if r.abs() <= self.tol * scale || (hi - lo) <= 4.0 * f64::EPSILON * hi.abs() {
                 let k = if li.force > 0.0 {
                     let (ki, ko) = (li.dforce_dapproach, lo_.dforce_dapproach);
@@ -555,16 +728,15 @@ impl RollerContext<'_> {
         ))
     }
 
-    /// Force scale S of the roller convergence tests (module docs); `reach` is the magnitude
-    /// of the approach and tilt terms of the slice approaches δ_s = a + x_s tan φ − z_s, m.
-    /// The drops z_s of the loaded slices (δ_s > 0) are below a + x_s tan φ, so the terms
-    /// of a loaded slice's approach sum to at most 2·reach.
-    fn scale(&self, li: &SliceLoad, lo: &SliceLoad, reach: f64) -> f64 {
-        let noise = ROUNDOFF_ULPS
-            * f64::EPSILON
-            * 2.0
-            * reach
-            * (li.dforce_dapproach + lo.dforce_dapproach).max(0.0);
+    /// Force scale S of the roller convergence tests (module docs); `reach_o`, `reach_i` are
+    /// the magnitudes of the approach and tilt terms of the outer and inner slice approaches
+    /// δ_s = a + x_s tan φ − z_s, m. The drops z_s of the loaded slices (δ_s > 0) are below
+    /// a + x_s tan φ, so the terms of a loaded slice's approach sum to at most 2·reach. The
+    /// rounding of the inner terms only enters the inner force; that of the roller position
+    /// (u, β) enters both.
+    fn scale(&self, li: &SliceLoad, lo: &SliceLoad, reach_o: f64, reach_i: f64) -> f64 {
+        let (ko, ki) = (lo.dforce_dapproach.max(0.0), li.dforce_dapproach.max(0.0));
+        let noise = ROUNDOFF_ULPS * f64::EPSILON * 2.0 * (reach_o * (ko + ki) + reach_i * ki);
         (lo.force + li.force + self.fc)
             .max(self.force_floor)
             .max(noise / self.tol)
@@ -657,11 +829,14 @@ impl RollerContext<'_> {
             let j12 = (lo_.dforce_dtilt + li.dforce_dtilt) / ls;
             let j21 = (lo_.dmoment_dapproach + li.dmoment_dapproach) / ls;
             let j22 = (lo_.dmoment_dtilt + li.dmoment_dtilt) / (ls * ls);
-            let reach = u.abs() + (e - u).abs() + ls * (b.tan().abs() + (theta - b).tan().abs());
+            let (reach_o, reach_i) = (
+                u.abs() + ls * b.tan().abs(),
+                (e - u).abs() + ls * (theta - b).tan().abs(),
+            );
             Ok(Sample::new(
                 [lo_.force - li.force - fc, (lo_.moment - li.moment) / ls],
                 [[j11, j12], [j21, j22]],
-                self.scale(&li, &lo_, reach),
+                self.scale(&li, &lo_, reach_o, reach_i),
                 (li, lo_),
             ))
         };
@@ -699,17 +874,180 @@ impl RollerContext<'_> {
                     k: implicit_stiffness(&li, &lo_, ls),
                 })
             }
-            Newton2dStatus::NoDescent => Err(QsError::not_converged(
-                "roller radial/moment balance",
-                ROLLER_ITERATIONS,
-                &[("force / N", g1), ("moment / (N·m/half-length)", g2)],
-            )),
-            Newton2dStatus::IterationLimit => Err(QsError::not_converged(
-                "roller radial/moment balance",
-                ROLLER_ITERATIONS,
-                &[("iterations", ROLLER_ITERATIONS as f64)],
-            )),
+            // the bracketed nested solve is slower but cannot leave the contact region
+            Newton2dStatus::NoDescent => self.solve_nested(e, theta).map_err(|_| {
+                QsError::not_converged(
+                    "roller radial/moment balance",
+                    ROLLER_ITERATIONS,
+                    &[("force / N", g1), ("moment / (N·m/half-length)", g2)],
+                )
+            }),
+            Newton2dStatus::IterationLimit => self.solve_nested(e, theta).map_err(|_| {
+                QsError::not_converged(
+                    "roller radial/moment balance",
+                    ROLLER_ITERATIONS,
+                    &[("iterations", ROLLER_ITERATIONS as f64)],
+                )
+            }),
         }
+    }
+
+    /// Radial balance `Q_o − Q_i − F_c = 0` of a roller at fixed tilt `beta`: the outer
+    /// approach u (non-decreasing residual in u) by safeguarded Newton steps in the bracket
+    /// from the first touch of the outer raceway (`Q_o = 0`, residual ≤ 0) to an approach at
+    /// which the outer raceway carries `F_c + Q_i` of the lower end (residual ≥ 0). Returns
+    /// u, the inner and outer loads and whether the residual met the tolerance.
+    fn balance_at_tilt(&self, e: f64, theta: f64, beta: f64) -> (f64, SliceLoad, SliceLoad, bool) {
+        let m = self.model;
+        let fc = self.fc;
+        let ls = m.half_span;
+        let (touch_o, _) = self.play(e, theta, beta);
+        let eval = |u: f64| {
+            let lo_ = m.outer.evaluate_totals(u, beta);
+            let li = m.inner.evaluate_totals(e - u, theta - beta);
+            let scale = self.scale(
+                &li,
+                &lo_,
+                u.abs() + ls * beta.tan().abs(),
+                (e - u).abs() + ls * (theta - beta).tan().abs(),
+            );
+            (lo_.force - li.force - fc, li, lo_, scale)
+        };
+        let mut lo = touch_o;
+        let (r_lo, li_lo, lo_lo, scale_lo) = eval(lo);
+        if r_lo >= -self.tol * scale_lo {
+            return (lo, li_lo, lo_lo, true);
+        }
+        let target = fc + li_lo.force;
+        let mut hi = m
+            .outer
+            .solve_approach(target, beta, &slice_opts(1e-3))
+            .map(|s| s.approach)
+            .unwrap_or(lo + 1e-9)
+            .max(lo);
+        let mut step = (hi - lo).max(1e-12);
+        for _ in 0..60 {
+            if eval(hi).0 >= 0.0 {
+                break;
+            }
+            lo = hi;
+            hi += step;
+            step *= 2.0;
+        }
+        let mut u = hi;
+        let mut last = (u, li_lo, lo_lo, false);
+        for _ in 0..200 {
+            let (r, li, lo_, scale) = eval(u);
+            let ok = r.abs() <= self.tol * scale;
+            last = (u, li, lo_, ok);
+            if ok || hi - lo <= 4.0 * f64::EPSILON * lo.abs().max(hi.abs()) {
+                return last;
+            }
+            if r > 0.0 {
+                hi = u;
+            } else {
+                lo = u;
+            }
+            let dr = lo_.dforce_dapproach + li.dforce_dapproach;
+            let next = if dr > 0.0 { u - r / dr } else { f64::NAN };
+            let next = if next > lo && next < hi {
+                next
+            } else {
+                0.5 * (lo + hi)
+            };
+            if next == u {
+                return last;
+            }
+            u = next;
+        }
+        last
+    }
+
+    /// Fallback of [`Self::solve_tilted`] (module docs): the roller tilt β by safeguarded
+    /// Newton steps on the moment balance `M_o − M_i` along the radial balance u(β)
+    /// ([`Self::balance_at_tilt`]); the moment residual is non-decreasing in β (the balance is
+    /// the gradient of the convex elastic energy minus `F_c u`), so the root is bracketed
+    /// between tilts beyond those of both raceways.
+    fn solve_nested(&self, e: f64, theta: f64) -> Result<RollerState, QsError> {
+        let ls = self.model.half_span;
+        let moment = |beta: f64| {
+            let (u, li, lo_, ok) = self.balance_at_tilt(e, theta, beta);
+            let scale = self.scale(
+                &li,
+                &lo_,
+                u.abs() + ls * beta.tan().abs(),
+                (e - u).abs() + ls * (theta - beta).tan().abs(),
+            );
+            let r2 = (lo_.moment - li.moment) / ls;
+            let j11 = lo_.dforce_dapproach + li.dforce_dapproach;
+            let j12 = (lo_.dforce_dtilt + li.dforce_dtilt) / ls;
+            let j21 = (lo_.dmoment_dapproach + li.dmoment_dapproach) / ls;
+            let j22 = (lo_.dmoment_dtilt + li.dmoment_dtilt) / (ls * ls);
+            // d r2/d(ls β) along u(β) (Schur complement of the Jacobian)
+            let slope = if j11 > 0.0 {
+                j22 - j21 * j12 / j11
+            } else {
+                j22
+            };
+            (r2, slope, u, li, lo_, ok && r2.abs() <= self.tol * scale)
+        };
+        let w = theta.abs().max(1e-6);
+        let (mut lo, mut hi) = (theta.min(0.0) - w, theta.max(0.0) + w);
+        let mut width = w;
+        for _ in 0..40 {
+            if moment(lo).0 <= 0.0 {
+                break;
+            }
+            lo -= width;
+            width *= 2.0;
+        }
+        let mut width = w;
+        for _ in 0..40 {
+            if moment(hi).0 >= 0.0 {
+                break;
+            }
+            hi += width;
+            width *= 2.0;
+        }
+        let mut beta = 0.5 * (lo + hi);
+        let mut last = f64::INFINITY;
+        for _ in 0..200 {
+            let (r2, slope, u, li, lo_, ok) = moment(beta);
+            let done = ok || hi - lo <= 4.0 * f64::EPSILON * lo.abs().max(hi.abs()).max(1e-300);
+            if r2 > 0.0 {
+                hi = beta;
+            } else {
+                lo = beta;
+            }
+            // Newton step, or bisection when the last step did not halve the residual
+            let next = if slope > 0.0 && r2.abs() <= 0.5 * last {
+                beta - r2 / (slope * ls)
+            } else {
+                f64::NAN
+            };
+            last = r2.abs();
+            let next = if next > lo && next < hi {
+                next
+            } else {
+                0.5 * (lo + hi)
+            };
+            if done || next == beta {
+                return Ok(RollerState {
+                    e,
+                    theta,
+                    u,
+                    beta,
+                    qi: li.force,
+                    k: implicit_stiffness(&li, &lo_, ls),
+                });
+            }
+            beta = next;
+        }
+        Err(QsError::not_converged(
+            "roller radial/moment balance",
+            200,
+            &[("tilt bracket / rad", hi - lo)],
+        ))
     }
 }
 
