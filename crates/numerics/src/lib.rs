@@ -3,7 +3,13 @@
 //!
 //! * [`newton2d`]: damped Newton (Levenberg–Marquardt + backtracking line search) for a
 //!   system of two nonlinear equations.
+//! * [`root1d`]: safeguarded Newton (bracket search, Newton/secant steps, bisection) for one
+//!   equation in one unknown.
 
 pub mod newton2d;
+pub mod root1d;
 
 pub use newton2d::{Damping, Newton2dOptions, Newton2dOutcome, Newton2dStatus, Sample, solve_2d};
+pub use root1d::{
+    Bracket, Derivative, Point, Root1dOptions, Root1dOutcome, Root1dStatus, find_root,
+};

@@ -17,7 +17,6 @@
 //! | [`cage_equilibrium`] | cage moment equation Φ(ε₀) = 0 | §5.5 |
 //! | [`cage_land`] | [`CageLandModel`] trait, short-bearing (Ocvirk) land | §5.5 |
 //! | [`drag`] | air–oil drag of the cage | §4.10, §5.5 |
-//! | [`solver`] | safeguarded Newton (finite-difference derivative) | §5.6, §9.2 |
 //! | [`results`] | [`SkidResult`] | §5.6 |
 //! | [`options`] / [`conditions`] | [`QuasiStaticOptions`], [`OperatingConditions`] | §5.6 |
 //! | [`mod@sweep`] | deterministic sweeps over speed, load, misalignment | |
@@ -49,7 +48,6 @@ pub mod operating_geometry;
 pub mod options;
 pub mod results;
 pub mod roller_equilibrium;
-pub mod solver;
 pub mod studies;
 pub mod sweep;
 

@@ -64,7 +64,8 @@ use rolldyn_contact::roller_raceway::{RollerRacewayContact, SliceLawChoice};
 use rolldyn_contact::slices::{SliceLoad, SlicedRoller, SolveOptions};
 use rolldyn_geometry::{BearingModel, CylindricalRollerBearing};
 use rolldyn_numerics::{
-    Damping, Newton2dOptions, Newton2dOutcome, Newton2dStatus, Sample, solve_2d,
+    Bracket, Damping, Derivative, Newton2dOptions, Newton2dOutcome, Newton2dStatus, Point,
+    Root1dOptions, Root1dStatus, Sample, find_root, solve_2d,
 };
 use serde::Serialize;
 use std::convert::Infallible;
@@ -469,83 +470,10 @@ impl LoadModel {
 /// Bracketed evaluations of one level of [`nested_ring`].
 const NESTED_ITERATIONS: usize = 200;
 
-/// Root of a non-decreasing function `f` (returning value, slope, whether the point meets
-/// the convergence test, and a state) from `x0`: the bracket is found by steps of doubling
-/// length from `x0` (first `step`), the root by Newton steps inside the bracket, bisection
-/// when a Newton step leaves it or did not halve the residual. Returns the last point, its
-/// state, whether it converged, and the evaluation count.
-fn bracketed_root<S, E>(
-    mut f: impl FnMut(f64) -> Result<(f64, f64, bool, S), E>,
-    x0: f64,
-    step: f64,
-) -> Result<(f64, S, bool, usize), E> {
-    let mut evals = 1;
-    let (v0, mut slope, ok, mut state) = f(x0)?;
-    if ok {
-        return Ok((x0, state, true, evals));
-    }
-    let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
-    let mut x = x0;
-    let mut value = v0;
-    let dir = if v0 < 0.0 { 1.0 } else { -1.0 };
-    let mut h = step;
-    // bracket
-    loop {
-        if value < 0.0 {
-            lo = x;
-        } else {
-            hi = x;
-        }
-        if lo.is_finite() && hi.is_finite() {
-            break;
-        }
-        if evals >= NESTED_ITERATIONS {
-            return Ok((x, state, false, evals));
-        }
-        x += dir * h;
-        h *= 2.0;
-        let (v, sl, ok, st) = f(x)?;
-        evals += 1;
-        (value, slope, state) = (v, sl, st);
-        if ok {
-            return Ok((x, state, true, evals));
-        }
-    }
-    let mut last = f64::INFINITY;
-    while evals < NESTED_ITERATIONS {
-        let newton = if slope > 0.0 && value.abs() <= 0.5 * last {
-            x - value / slope
-        } else {
-            f64::NAN
-        };
-        last = value.abs();
-        let next = if newton > lo && newton < hi {
-            newton
-        } else {
-            0.5 * (lo + hi)
-        };
-        if next == x || next == lo || next == hi {
-            break;
-        }
-        x = next;
-        let (v, sl, ok, st) = f(x)?;
-        evals += 1;
-        (value, slope, state) = (v, sl, st);
-        if ok {
-            return Ok((x, state, true, evals));
-        }
-        if value < 0.0 {
-            lo = x;
-        } else {
-            hi = x;
-        }
-    }
-    Ok((x, state, false, evals))
-}
-
 /// Fallback of the ring Newton iteration (module docs): δy from the y balance at fixed δx,
-/// δx from the x balance along δy(δx), both by [`bracketed_root`] (the ring residual is the
-/// gradient of a convex energy, so both are non-decreasing). `None` if it does not converge.
+/// δx from the x balance along δy(δx), both by [`find_root`] (doubling bracket search,
+/// analytic slopes; the ring residual is the gradient of a convex energy, so both are
+/// non-decreasing). `None` if it does not converge.
 fn nested_ring(
     eval: &impl Fn([f64; 2], &Vec<RollerState>) -> Result<Sample<Vec<RollerState>>, QsError>,
     start: [f64; 2],
@@ -554,6 +482,12 @@ fn nested_ring(
     tol: f64,
 ) -> Result<Option<Newton2dOutcome<Vec<RollerState>>>, QsError> {
     let converged = |s: &Sample<Vec<RollerState>>, k: usize| s.residual[k].abs() <= tol * s.scale;
+    let options = Root1dOptions {
+        bracket: Bracket::Expand { first_step: step },
+        derivative: Derivative::Supplied,
+        max_evaluations: NESTED_ITERATIONS,
+        ..Root1dOptions::default()
+    };
     let mut warm = states;
     let mut evals = 0;
     let mut y0 = start[1];
@@ -561,21 +495,22 @@ fn nested_ring(
                        warm: &mut Vec<RollerState>,
                        evals: &mut usize|
      -> Result<(f64, Sample<Vec<RollerState>>, bool), QsError> {
-        let (dy, sample, ok, n) = bracketed_root(
+        let root = find_root(
             |dy| {
                 let s = eval([dx, dy], warm)?;
                 *warm = s.state.clone();
                 let [[_, _], [_, jyy]] = s.jacobian;
-                Ok::<_, QsError>((s.residual[1], jyy, converged(&s, 1), s))
+                Ok::<_, QsError>(Point::new(s.residual[1], jyy, converged(&s, 1), s))
             },
             y0,
-            step,
+            &options,
         )?;
-        *evals += n;
-        y0 = dy;
-        Ok((dy, sample, ok))
+        *evals += root.evaluations;
+        y0 = root.x;
+        let ok = root.converged();
+        Ok((root.x, root.state, ok))
     };
-    let (dx, (dy, sample, _), ok, _) = bracketed_root(
+    let root = find_root(
         |dx| {
             let (dy, s, ok_y) = solve_y(dx, &mut warm, &mut evals)?;
             let [[jxx, jxy], [_, jyy]] = s.jacobian;
@@ -585,16 +520,17 @@ fn nested_ring(
                 jxx
             };
             let ok = ok_y && converged(&s, 0);
-            Ok::<_, QsError>((s.residual[0], slope, ok, (dy, s, ok_y)))
+            Ok::<_, QsError>(Point::new(s.residual[0], slope, ok, (dy, s)))
         },
         start[0],
-        step,
+        &options,
     )?;
-    if !ok {
+    if !root.converged() {
         return Ok(None);
     }
+    let (dy, sample) = root.state;
     Ok(Some(Newton2dOutcome {
-        x: [dx, dy],
+        x: [root.x, dy],
         residual: sample.residual,
         scale: sample.scale,
         iterations: evals,
@@ -603,7 +539,8 @@ fn nested_ring(
     }))
 }
 
-/// Newton iterations of one tilted roller equilibrium.
+/// Iteration budget of one roller equilibrium (Newton iterations of a tilted roller,
+/// evaluations of the radial balance of an untilted one).
 const ROLLER_ITERATIONS: usize = 200;
 
 /// Per-roller unknowns and results of one evaluation.
@@ -649,8 +586,8 @@ impl RollerContext<'_> {
             .iter()
             .copied()
             .fold(f64::INFINITY, f64::min);
-        let mut lo = self.u_c;
-        let mut hi = e - touch_i;
+        let lo = self.u_c;
+        let hi = e - touch_i;
         let base = RollerState {
             e,
             theta: 0.0,
@@ -662,70 +599,51 @@ impl RollerContext<'_> {
         if hi <= lo {
             return Ok(base);
         }
-        let g = |u: f64| {
-            let lo_ = m.outer.evaluate_totals(u, 0.0);
-            let li = m.inner.evaluate_totals(e - u, 0.0);
-            (
-                lo_.force - li.force - fc,
-                lo_.dforce_dapproach + li.dforce_dapproach,
-                li,
-                lo_,
-            )
-        };
-        let mut u = if guess.u > lo && guess.u < hi {
+        let start = if guess.u > lo && guess.u < hi {
             guess.u
         } else {
             hi
         };
-        for _ in 0..200 {
-            let (r, dr, li, lo_) = g(u);
-            let scale = self.scale(&li, &lo_, u.abs(), (e - u).abs());
-            if r.abs() <= self.tol * scale || (hi - lo) <= 4.0 * f64::EPSILON * hi.abs() {
-                let k = if li.force > 0.0 {
-                    let (ki, ko) = (li.dforce_dapproach, lo_.dforce_dapproach);
-                    ki * ko / (ki + ko)
-                } else {
-                    0.0
-                };
-                return Ok(RollerState {
-                    u,
-                    qi: li.force,
-                    k,
-                    ..base
-                });
-            }
-            if r > 0.0 {
-                hi = u;
-            } else {
-                lo = u;
-            }
-            let next = if dr > 0.0 { u - r / dr } else { f64::NAN };
-            let next = if next > lo && next < hi {
-                next
-            } else {
-                0.5 * (lo + hi)
-            };
-            if next == u {
-                let k = if li.force > 0.0 {
-                    let (ki, ko) = (li.dforce_dapproach, lo_.dforce_dapproach);
-                    ki * ko / (ki + ko)
-                } else {
-                    0.0
-                };
-                return Ok(RollerState {
-                    u,
-                    qi: li.force,
-                    k,
-                    ..base
-                });
-            }
-            u = next;
+        let options = Root1dOptions {
+            bracket: Bracket::Given { lo, hi },
+            derivative: Derivative::Supplied,
+            x_rel_tol: 4.0 * f64::EPSILON,
+            halving_test: false,
+            max_evaluations: ROLLER_ITERATIONS,
+            ..Root1dOptions::default()
+        };
+        let Ok(root) = find_root(
+            |u| {
+                let lo_ = m.outer.evaluate_totals(u, 0.0);
+                let li = m.inner.evaluate_totals(e - u, 0.0);
+                let r = lo_.force - li.force - fc;
+                let scale = self.scale(&li, &lo_, u.abs(), (e - u).abs());
+                let slope = lo_.dforce_dapproach + li.dforce_dapproach;
+                Ok::<_, Infallible>(Point::new(r, slope, r.abs() <= self.tol * scale, (li, lo_)))
+            },
+            start,
+            &options,
+        );
+        if !matches!(root.status, Root1dStatus::Converged | Root1dStatus::Stalled) {
+            return Err(QsError::not_converged(
+                "roller radial balance",
+                root.evaluations,
+                &[("bracket width / m", root.bracket.1 - root.bracket.0)],
+            ));
         }
-        Err(QsError::not_converged(
-            "roller radial balance",
-            200,
-            &[("bracket width / m", hi - lo)],
-        ))
+        let (li, lo_) = root.state;
+        let k = if li.force > 0.0 {
+            let (ki, ko) = (li.dforce_dapproach, lo_.dforce_dapproach);
+            ki * ko / (ki + ko)
+        } else {
+            0.0
+        };
+        Ok(RollerState {
+            u: root.x,
+            qi: li.force,
+            k,
+            ..base
+        })
     }
 
     /// Force scale S of the roller convergence tests (module docs); `reach_o`, `reach_i` are
@@ -913,54 +831,41 @@ impl RollerContext<'_> {
             );
             (lo_.force - li.force - fc, li, lo_, scale)
         };
-        let mut lo = touch_o;
+        let lo = touch_o;
         let (r_lo, li_lo, lo_lo, scale_lo) = eval(lo);
         if r_lo >= -self.tol * scale_lo {
             return (lo, li_lo, lo_lo, true);
         }
+        // first guess: the outer raceway alone carrying F_c + Q_i(first touch)
         let target = fc + li_lo.force;
-        let mut hi = m
+        let hi = m
             .outer
             .solve_approach(target, beta, &slice_opts(1e-3))
             .map(|s| s.approach)
             .unwrap_or(lo + 1e-9)
             .max(lo);
-        let mut step = (hi - lo).max(1e-12);
-        for _ in 0..60 {
-            if eval(hi).0 >= 0.0 {
-                break;
-            }
-            lo = hi;
-            hi += step;
-            step *= 2.0;
-        }
-        let mut u = hi;
-        let mut last = (u, li_lo, lo_lo, false);
-        for _ in 0..200 {
-            let (r, li, lo_, scale) = eval(u);
-            let ok = r.abs() <= self.tol * scale;
-            last = (u, li, lo_, ok);
-            if ok || hi - lo <= 4.0 * f64::EPSILON * lo.abs().max(hi.abs()) {
-                return last;
-            }
-            if r > 0.0 {
-                hi = u;
-            } else {
-                lo = u;
-            }
-            let dr = lo_.dforce_dapproach + li.dforce_dapproach;
-            let next = if dr > 0.0 { u - r / dr } else { f64::NAN };
-            let next = if next > lo && next < hi {
-                next
-            } else {
-                0.5 * (lo + hi)
-            };
-            if next == u {
-                return last;
-            }
-            u = next;
-        }
-        last
+        let options = Root1dOptions {
+            bracket: Bracket::Expand {
+                first_step: (hi - lo).max(1e-12),
+            },
+            derivative: Derivative::Supplied,
+            x_rel_tol: 4.0 * f64::EPSILON,
+            halving_test: false,
+            max_evaluations: NESTED_ITERATIONS,
+            ..Root1dOptions::default()
+        };
+        let Ok(root) = find_root(
+            |u| {
+                let (r, li, lo_, scale) = eval(u);
+                let ok = r.abs() <= self.tol * scale;
+                let slope = lo_.dforce_dapproach + li.dforce_dapproach;
+                Ok::<_, Infallible>(Point::new(r, slope, ok, (li, lo_, ok)))
+            },
+            hi,
+            &options,
+        );
+        let (li, lo_, ok) = root.state;
+        (root.x, li, lo_, ok)
     }
 
     /// Fallback of [`Self::solve_tilted`] (module docs): the roller tilt β by safeguarded
@@ -991,63 +896,39 @@ impl RollerContext<'_> {
             };
             (r2, slope, u, li, lo_, ok && r2.abs() <= self.tol * scale)
         };
+        // β beyond the tilts of both raceways brackets the root; search outwards from between
         let w = theta.abs().max(1e-6);
-        let (mut lo, mut hi) = (theta.min(0.0) - w, theta.max(0.0) + w);
-        let mut width = w;
-        for _ in 0..40 {
-            if moment(lo).0 <= 0.0 {
-                break;
-            }
-            lo -= width;
-            width *= 2.0;
+        let options = Root1dOptions {
+            bracket: Bracket::Expand { first_step: w },
+            derivative: Derivative::Supplied,
+            x_rel_tol: 4.0 * f64::EPSILON,
+            max_evaluations: NESTED_ITERATIONS,
+            ..Root1dOptions::default()
+        };
+        let Ok(root) = find_root(
+            |beta| {
+                let (r2, slope, u, li, lo_, ok) = moment(beta);
+                Ok::<_, Infallible>(Point::new(r2, slope * ls, ok, (u, li, lo_)))
+            },
+            0.5 * theta,
+            &options,
+        );
+        if !matches!(root.status, Root1dStatus::Converged | Root1dStatus::Stalled) {
+            return Err(QsError::not_converged(
+                "roller radial/moment balance",
+                root.evaluations,
+                &[("tilt bracket / rad", root.bracket.1 - root.bracket.0)],
+            ));
         }
-        let mut width = w;
-        for _ in 0..40 {
-            if moment(hi).0 >= 0.0 {
-                break;
-            }
-            hi += width;
-            width *= 2.0;
-        }
-        let mut beta = 0.5 * (lo + hi);
-        let mut last = f64::INFINITY;
-        for _ in 0..200 {
-            let (r2, slope, u, li, lo_, ok) = moment(beta);
-            let done = ok || hi - lo <= 4.0 * f64::EPSILON * lo.abs().max(hi.abs()).max(1e-300);
-            if r2 > 0.0 {
-                hi = beta;
-            } else {
-                lo = beta;
-            }
-            // Newton step, or bisection when the last step did not halve the residual
-            let next = if slope > 0.0 && r2.abs() <= 0.5 * last {
-                beta - r2 / (slope * ls)
-            } else {
-                f64::NAN
-            };
-            last = r2.abs();
-            let next = if next > lo && next < hi {
-                next
-            } else {
-                0.5 * (lo + hi)
-            };
-            if done || next == beta {
-                return Ok(RollerState {
-                    e,
-                    theta,
-                    u,
-                    beta,
-                    qi: li.force,
-                    k: implicit_stiffness(&li, &lo_, ls),
-                });
-            }
-            beta = next;
-        }
-        Err(QsError::not_converged(
-            "roller radial/moment balance",
-            200,
-            &[("tilt bracket / rad", hi - lo)],
-        ))
+        let (u, li, lo_) = root.state;
+        Ok(RollerState {
+            e,
+            theta,
+            u,
+            beta: root.x,
+            qi: li.force,
+            k: implicit_stiffness(&li, &lo_, ls),
+        })
     }
 }
 

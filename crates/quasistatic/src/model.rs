@@ -28,12 +28,12 @@ use crate::results::{
 use crate::roller_equilibrium::{
     ContactSetup, RibFilm, RollerEnv, RollerEval, RollerLoads, circular_segment_area,
 };
-use crate::solver::{RootOptions, solve_1d};
 use rolldyn_contact::hertz::reduced_modulus;
 use rolldyn_geometry::{CageGuidance, CylindricalRollerBearing};
 use rolldyn_lubrication::scuffing::{CriticalSlip, SlipSearch, critical_slip};
 use rolldyn_lubrication::traction::FrictionLaw;
 use rolldyn_lubrication::{ContactState, FrictionRegime, Traction, TractionModel};
+use rolldyn_numerics::{Bracket, Derivative, Point, Root1dOptions, Root1dStatus, find_root};
 
 /// Largest operating preload accepted, as a fraction of the roller diameter (as the geometry
 /// crate's mounting limit).
@@ -77,7 +77,6 @@ struct Workspace {
     scale: Option<f64>,
     load_iterations: usize,
     roller_evaluations: usize,
-    error: Option<QsError>,
 }
 
 fn finite(name: &str, v: f64) -> Result<f64, QsError> {
@@ -587,43 +586,36 @@ pub(crate) fn run(
         let (lo, hi) = (wi.min(wo).min(0.0), wi.max(wo).max(0.0));
         let w = wi.abs().max(wo.abs());
         let x0 = setup.epicyclic * (1.0 - opts.initial_cage_slip);
-        let ropts = RootOptions {
-            f_tol: opts.cage_tolerance,
+        let ropts = Root1dOptions {
+            bracket: Bracket::Search {
+                limits: (lo, hi),
+                fd_step: (opts.fd_relative_step * w).max(opts.fd_min_step_rad_s),
+                // 1 % of the ring speed difference (of the speed if the rings rotate together):
+                // slips of 1e-4…0.3 are bracketed in a few steps and the equilibrium nearest to
+                // the guess is found first
+                max_first_step: 0.01 * ((wi - wo).abs().max(1e-3 * w)),
+            },
+            derivative: Derivative::Secant,
             x_tol: 1e-13 * w,
-            fd_step: (opts.fd_relative_step * w).max(opts.fd_min_step_rad_s),
             max_evaluations: opts.max_cage_evaluations,
-            // 1 % of the ring speed difference (of the speed if the rings rotate together):
-            // slips of 1e-4…0.3 are bracketed in a few steps and the equilibrium nearest to the
-            // guess is found first
-            max_first_step: 0.01 * ((wi - wo).abs().max(1e-3 * w)),
+            ..Root1dOptions::default()
         };
-        let root = {
-            let ws = &mut ws;
-            solve_1d(
-                |x| match setup.cage_residual(x, ws, land_model) {
-                    Ok(v) => v,
-                    Err(e) => {
-                        if ws.error.is_none() {
-                            ws.error = Some(e);
-                        }
-                        f64::NAN
-                    }
-                },
-                x0,
-                (lo, hi),
-                &ropts,
-            )
-        };
-        if let Some(e) = ws.error.take() {
-            return Err(e);
-        }
-        if !root.converged {
+        let root = find_root(
+            |x| {
+                setup
+                    .cage_residual(x, &mut ws, land_model)
+                    .map(|v| Point::residual(v, opts.cage_tolerance))
+            },
+            x0,
+            &ropts,
+        )?;
+        if !root.converged() {
             let mut res = vec![
-                ("cage moment / scale", root.f),
+                ("cage moment / scale", root.value),
                 ("cage speed / (rad/s)", root.x),
                 ("cage slip", cage_slip(root.x, setup.epicyclic)),
             ];
-            if root.no_sign_change {
+            if root.status == Root1dStatus::NoSignChange {
                 res.push(("no equilibrium between the ring speeds", 1.0));
             }
             return Err(QsError::not_converged(

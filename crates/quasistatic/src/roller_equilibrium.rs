@@ -28,16 +28,17 @@
 //! segment of the end face.
 //!
 //! The unknown is the roller spin ω_w (equivalently ε_w); ΣT(ω_w) decreases with ω_w, and is
-//! solved by the safeguarded Newton of [`crate::solver`]. The unloaded zone (Q_i = 0,
+//! solved by the safeguarded Newton of [`rolldyn_numerics::root1d`] (secant slope). The unloaded zone (Q_i = 0,
 //! Q_o = F_c) uses the same equations (SPEC §5.4 proposal).
 
 use crate::conditions::ContactTemperatures;
 use crate::error::QsError;
 use crate::friction::BarLaw;
 use crate::kinematics::Kinematics;
-use crate::solver::{RootOptions, solve_1d};
 use rolldyn_lubrication::traction::regularisation;
 use rolldyn_lubrication::{ContactGeometry, ContactState, Traction, TractionModel, traction};
+use rolldyn_numerics::{Bracket, Derivative, Point, Root1dOptions, find_root};
+use std::convert::Infallible;
 
 /// Geometry and surface data of one contact type.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -269,25 +270,31 @@ impl RollerEnv<'_> {
             so
         });
         let scale = k.roller_radius * (loads.inner_n + loads.outer_n) + 1e-9;
-        let opts = RootOptions {
-            f_tol: tol,
+        let opts = Root1dOptions {
+            bracket: Bracket::Search {
+                limits: (lo, hi),
+                fd_step: (fd_rel * w).max(fd_min),
+                max_first_step: 0.05 * (w + 1.0),
+            },
+            derivative: Derivative::Secant,
             x_tol: 1e-12 * (w + 1.0),
-            fd_step: (fd_rel * w).max(fd_min),
             max_evaluations: max_evals,
-            max_first_step: 0.05 * (w + 1.0),
+            ..Root1dOptions::default()
         };
-        let root = solve_1d(
-            |x| self.evaluate(loads, x).moment / scale,
+        let Ok(root) = find_root(
+            |x| {
+                let moment = self.evaluate(loads, x).moment / scale;
+                Ok::<_, Infallible>(Point::residual(moment, tol))
+            },
             x0,
-            (lo, hi),
             &opts,
         );
-        if !root.converged {
+        if !root.converged() {
             return Err(QsError::not_converged(
                 "roller moment equation",
                 root.evaluations,
                 &[
-                    ("roller moment / (R_w ΣQ)", root.f),
+                    ("roller moment / (R_w ΣQ)", root.value),
                     ("roller spin / (rad/s)", root.x),
                 ],
             ));
