@@ -188,16 +188,7 @@ fn force_balance_general_case_1e9() {
         let ld = model
             .solve(&c, None, &QuasiStaticOptions::default())
             .unwrap();
-        let fx: f64 = ld
-            .rollers
-            .iter()
-            .map(|r| r.inner_force_n * r.azimuth_rad.sin())
-            .sum();
-        let fy: f64 = ld
-            .rollers
-            .iter()
-            .map(|r| r.inner_force_n * r.azimuth_rad.cos())
-            .sum();
+        let [fx, fy] = common::ring_force(&ld);
         assert!(fx.abs() < 1e-9 * c.radial_load_n, "G = {g}: Fx = {fx}");
         assert!(
             (fy - c.radial_load_n).abs() < 1e-9 * c.radial_load_n,

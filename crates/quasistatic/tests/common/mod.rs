@@ -64,3 +64,12 @@ pub fn assert_finite(r: &SkidResult) {
         assert!(v.is_finite(), "value #{k} is not finite: {v}");
     }
 }
+
+/// Force of the rollers on the inner ring (Σ Q_i sin ψ, Σ Q_i cos ψ), N: the radial load it
+/// balances (along +y).
+pub fn ring_force(ld: &rolldyn_quasistatic::LoadDistribution) -> [f64; 2] {
+    ld.rollers.iter().fold([0.0, 0.0], |[x, y], r| {
+        let (s, c) = r.azimuth_rad.sin_cos();
+        [x + r.inner_force_n * s, y + r.inner_force_n * c]
+    })
+}
