@@ -52,12 +52,7 @@ fn check(model: &LoadModel, b: &CylindricalRollerBearing, c: &LoadCase) -> Resul
     let floor = fr / b.roller_count as f64;
     let fc = c.centrifugal_force_n;
     for r in &ld.rollers {
-        let li = model
-            .inner_slices()
-            .evaluate_totals(r.inner_approach_m, r.ring_tilt_rad - r.roller_tilt_rad);
-        let lo = model
-            .outer_slices()
-            .evaluate_totals(r.outer_approach_m, r.roller_tilt_rad);
+        let (li, lo) = common::raceway_loads(model, r);
         let q = lo.force.max(floor);
         if (lo.force - li.force - fc).abs() > 1e-9 * q
             || (lo.moment - li.moment).abs() > 1e-9 * q * 0.5 * b.roller.length
@@ -79,6 +74,19 @@ fn check(model: &LoadModel, b: &CylindricalRollerBearing, c: &LoadCase) -> Resul
         }
     }
     Ok(())
+}
+
+/// Runs `grid` and fails with the list of failing cases.
+fn assert_all_pass(grid: &Grid) {
+    let (failures, count) = sweep(grid);
+    for f in &failures {
+        println!("{f}");
+    }
+    assert!(
+        failures.is_empty(),
+        "{} of {count} cases fail",
+        failures.len()
+    );
 }
 
 /// Grid of a sweep: (F_c, F_r, G in µm, θ in arcmin, ψ_θ, phase).
@@ -141,15 +149,7 @@ fn light_loads_with_clearance_and_misalignment_solve_and_balance() {
         azimuth: vec![0.0, 0.3, 1.0],
         phase: vec![0.0, 0.1],
     };
-    let (failures, count) = sweep(&grid);
-    for f in &failures {
-        println!("{f}");
-    }
-    assert!(
-        failures.is_empty(),
-        "{} of {count} cases fail",
-        failures.len()
-    );
+    assert_all_pass(&grid);
 }
 
 /// Light loads at low speed (small centrifugal force F_c): the start-up regime of skidding.
@@ -167,15 +167,7 @@ fn light_loads_with_centrifugal_force_solve_and_balance() {
         azimuth: vec![0.3, 1.0],
         phase: vec![0.0, 0.1],
     };
-    let (failures, count) = sweep(&grid);
-    for f in &failures {
-        println!("{f}");
-    }
-    assert!(
-        failures.is_empty(),
-        "{} of {count} cases fail",
-        failures.len()
-    );
+    assert_all_pass(&grid);
 }
 
 fn env_list(var: &str) -> Option<Vec<f64>> {

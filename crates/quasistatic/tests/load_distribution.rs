@@ -196,12 +196,7 @@ fn force_balance_general_case_1e9() {
         );
         // every roller in radial and moment equilibrium (friction neglected, seed 001)
         for r in &ld.rollers {
-            let li = model
-                .inner_slices()
-                .evaluate_totals(r.inner_approach_m, r.ring_tilt_rad - r.roller_tilt_rad);
-            let lo = model
-                .outer_slices()
-                .evaluate_totals(r.outer_approach_m, r.roller_tilt_rad);
+            let (li, lo) = common::raceway_loads(&model, r);
             let q = lo.force.max(1.0);
             assert!((lo.force - li.force - c.centrifugal_force_n).abs() < 1e-9 * q);
             assert!((lo.moment - li.moment).abs() < 1e-9 * q * 0.5 * b.roller.length);

@@ -73,3 +73,20 @@ pub fn ring_force(ld: &rolldyn_quasistatic::LoadDistribution) -> [f64; 2] {
         [x + r.inner_force_n * s, y + r.inner_force_n * c]
     })
 }
+
+/// Slice totals of one solved roller against the inner and outer raceway.
+pub fn raceway_loads(
+    model: &rolldyn_quasistatic::LoadModel,
+    r: &rolldyn_quasistatic::RollerLoad,
+) -> (
+    rolldyn_contact::slices::SliceLoad,
+    rolldyn_contact::slices::SliceLoad,
+) {
+    let li = model
+        .inner_slices()
+        .evaluate_totals(r.inner_approach_m, r.ring_tilt_rad - r.roller_tilt_rad);
+    let lo = model
+        .outer_slices()
+        .evaluate_totals(r.outer_approach_m, r.roller_tilt_rad);
+    (li, lo)
+}
