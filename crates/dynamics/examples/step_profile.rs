@@ -1,17 +1,24 @@
-//! Which state components limit the DOPRI5 step on the 2002834 benchmark case (the
-//! `cargo bench` model): histogram of the limiting components, grouped by name.
+//! Which state components limit the step on the 2002834 benchmark case (the `cargo bench`
+//! model): histogram of the limiting components, grouped by name.
 //! `cargo run --release -p rolldyn-dynamics --example step_profile [duration_s] [tolerance]
-//! [safety] [pi_beta]`
+//! [safety] [pi_beta] [dopri5|tsit5|rosenbrock-w]` (the method name may stand anywhere; the
+//! numbers keep their order; default DOPRI5)
 
 use rolldyn_dynamics::*;
 use rolldyn_lubrication::{TractionModel, lubricant_by_name};
 use std::collections::BTreeMap;
 
 fn main() {
-    let duration: f64 = std::env::args()
-        .nth(1)
-        .and_then(|a| a.parse().ok())
-        .unwrap_or(0.02);
+    let method = |a: &str| match a {
+        "dopri5" => Some(IntegratorMethod::Dopri5),
+        "tsit5" => Some(IntegratorMethod::Tsit5),
+        "rosenbrock-w" => Some(IntegratorMethod::RosenbrockW),
+        _ => None,
+    };
+    let (names, numbers): (Vec<String>, Vec<String>) =
+        std::env::args().skip(1).partition(|a| method(a).is_some());
+    let arg = |i: usize| numbers.get(i - 1).and_then(|a| a.parse::<f64>().ok());
+    let duration = arg(1).unwrap_or(0.02);
     let b = rolldyn_model::default_cylindrical_bearing();
     let mut cond = OperatingConditions::new(6371.0 * std::f64::consts::TAU / 60.0, 500.0);
     cond.cage_drag_n_m_s = CAGE_DRAG_2002834_100C;
@@ -19,7 +26,9 @@ fn main() {
         output_step_s: 0.0,
         ..DynamicsSettings::default()
     };
-    let arg = |i: usize| std::env::args().nth(i).and_then(|a| a.parse::<f64>().ok());
+    if let Some(m) = names.last().and_then(|a| method(a)) {
+        settings.integrator.method = m;
+    }
     if let Some(tol) = arg(2) {
         settings.integrator.tolerance = tol;
     }
@@ -45,7 +54,8 @@ fn main() {
     let wall = wall.elapsed().as_secs_f64();
     let stats = sim.stats();
     println!(
-        "simulated {duration} s in {wall:.3} s: ratio {:.4}; steps {} rejected {} rhs {} → {:.1} µs/rhs, mean step {:.2} µs",
+        "{:?}: simulated {duration} s in {wall:.3} s: ratio {:.4}; steps {} rejected {} rhs {} → {:.1} µs/rhs, mean step {:.2} µs",
+        settings.integrator.method,
         duration / wall,
         stats.accepted,
         stats.rejected,

@@ -10,7 +10,7 @@ use crate::layout::{CAGE_DOF, INNER_DOF, ROLLER_DOF};
 use crate::model::{Model, RacewaySlices};
 use crate::vec3::{V3, add, axpy, cross, dot, norm, perp, power, scale, sub, unit_or};
 use rolldyn_contact::damping::SliceDamping;
-use rolldyn_lubrication::{ContactGeometry, ContactState, traction};
+use rolldyn_lubrication::{BatchContact, ContactGeometry, ContactState, SliceBatch};
 
 /// Per-roller contact quantities of one raceway (struct of arrays). Speeds, film, Λ and μ are
 /// load-weighted means over the loaded slices; force and power are sums.
@@ -110,8 +110,39 @@ pub(crate) struct Diagnostics {
     pub inner_speed: f64,
     pub outer_speed: f64,
     pub violation: Option<Violation>,
-    /// scratch: loaded slices of the contact being evaluated
+    /// scratch: loaded raceway slices of every roller, their traction batches and the roller
+    /// forces and moments before traction
+    slices: RacewayScratch,
+}
+
+/// Scratch of the raceway contacts of one evaluation: the loaded slices (pass 1 of [`rhs`]),
+/// their traction, evaluated in one batch per raceway, and the roller forces and moments
+/// collected before the traction is applied.
+#[derive(Debug, Clone)]
+struct RacewayScratch {
     hits: Vec<SliceHit>,
+    inner: SliceBatch,
+    outer: SliceBatch,
+    force: Vec<V3>,
+    moment: Vec<V3>,
+}
+
+impl RacewayScratch {
+    fn new(z: usize, slices: usize) -> Self {
+        Self {
+            hits: Vec::with_capacity(2 * z * slices),
+            inner: SliceBatch::with_capacity(z * slices),
+            outer: SliceBatch::with_capacity(z * slices),
+            force: vec![[0.0; 3]; z],
+            moment: vec![[0.0; 3]; z],
+        }
+    }
+
+    fn clear(&mut self) {
+        self.hits.clear();
+        self.inner.clear();
+        self.outer.clear();
+    }
 }
 
 impl Diagnostics {
@@ -134,7 +165,7 @@ impl Diagnostics {
             inner_speed: 0.0,
             outer_speed: 0.0,
             violation: None,
-            hits: Vec::with_capacity(slices),
+            slices: RacewayScratch::new(z, slices),
         }
     }
 }
@@ -187,14 +218,18 @@ fn note(diag: &mut Diagnostics, what: &'static str, index: usize, penetration: f
     }
 }
 
-/// A loaded slice of the contact being evaluated (scratch of [`raceway_contacts`]).
-#[derive(Debug, Clone, Copy, Default)]
-pub(crate) struct SliceHit {
-    slice: usize,
+/// A loaded raceway slice (scratch of [`rhs`]): pass 1 applies its normal force, pass 2 its
+/// traction.
+#[derive(Debug, Clone, Copy)]
+struct SliceHit {
+    roller: usize,
+    inner: bool,
+    /// slice number along the roller while pass 1 runs, then the index in the raceway's
+    /// traction batch
+    batch_index: usize,
+    contact: Option<BatchContact>,
     /// normal force, N
     q: f64,
-    /// unit normal from the ring into the roller
-    n: V3,
     /// contact point relative to the roller centre, m
     r_cp: V3,
     /// tangential relative velocity (roller − ring), m/s
@@ -205,17 +240,18 @@ pub(crate) struct SliceHit {
     u: f64,
 }
 
-/// Slices of roller `j` on one raceway. Adds the force and moment on the roller to `f`, `m` and
-/// returns the force on the ring.
+/// Slices of roller `j` on one raceway, pass 1 (SPEC §2.1–2.2): the slice law and damping give
+/// the loaded slices. Adds their normal forces to the roller (`f`, `m`) and returns the normal
+/// force on the ring; records each loaded slice in `scratch` for the traction pass.
 ///
-/// Two passes: the slice law and damping give the loaded slices (SPEC §2.1–2.2); the EHL film is
-/// evaluated once for the whole roller–raceway contact (its total load over the loaded length
-/// and the load-weighted entrainment speed — the film of a line contact is set in the common
-/// inlet and depends on the load only weakly, seed 000 (2.17)), then the traction per slice with
-/// its own pressure, half-width and sliding velocity (SPEC §3.3).
+/// The EHL film is prepared once for the whole roller–raceway contact (its total load over the
+/// loaded length and the load-weighted entrainment speed — the film of a line contact is set
+/// in the common inlet and depends on the load only weakly, seed 000 (2.17)); the traction per
+/// slice with its own pressure, half-width and sliding velocity (SPEC §3.3) follows in
+/// [`apply_traction`], for all rollers in one batch.
 #[allow(clippy::too_many_arguments)]
 #[inline]
-fn raceway_contacts(
+fn raceway_slices(
     model: &Model,
     rs: &RacewaySlices,
     inner: bool,
@@ -225,13 +261,12 @@ fn raceway_contacts(
     f: &mut V3,
     m: &mut V3,
     table: &mut ContactTable,
-    hits: &mut Vec<SliceHit>,
+    scratch: &mut RacewayScratch,
     limit: f64,
     violation: &mut Option<Violation>,
 ) -> V3 {
     let mut f_ring = [0.0; 3];
     table.reset(j);
-    hits.clear();
     // Slice centres p = c + x a: their offset from the ring axis is dp(x) = dp_c + x a⊥, so
     // ρ(x)² = A + 2Bx + Cx². The distance from the axis is 1-Lipschitz, which bounds every
     // slice's approach from the centre's: no slice can touch when the bound is ≤ 0.
@@ -250,9 +285,9 @@ fn raceway_contacts(
     } - model.min_slice_drop
         - rs.min_drop;
     if bound <= 0.0 {
-        table.finish(j);
         return f_ring;
     }
+    let first = scratch.hits.len();
     let mut load = 0.0;
     let mut length = 0.0;
     let mut entrainment = 0.0;
@@ -299,6 +334,10 @@ fn raceway_contacts(
         if q <= 0.0 {
             continue;
         }
+        let normal = scale(n, q);
+        *f = add(*f, normal);
+        *m = add(*m, cross(r_cp, normal));
+        f_ring = sub(f_ring, normal);
         let vt = perp(vrel, n);
         // rolling direction and entrainment speed in the roller's orbital frame (SPEC §3.5)
         let t_dir = cross(ring.axis, n_out);
@@ -307,64 +346,84 @@ fn raceway_contacts(
         load += q;
         length += model.slice_len[s];
         entrainment += q * u;
-        hits.push(SliceHit {
-            slice: s,
+        table.force[j] += q;
+        scratch.hits.push(SliceHit {
+            roller: j,
+            inner,
+            batch_index: s,
+            contact: None,
             q,
-            n,
             r_cp,
             vt,
             vs: norm(vt),
             u,
         });
     }
-    if hits.is_empty() {
-        table.finish(j);
+    if scratch.hits.len() == first {
         return f_ring;
     }
-    let tmodel = if inner {
-        &model.traction.inner
+    let (tmodel, batch) = if inner {
+        (&model.traction.inner, &mut scratch.inner)
     } else {
-        &model.traction.outer
+        (&model.traction.outer, &mut scratch.outer)
     };
-    let state = |q: f64, length_m: f64, u: f64, vs: f64| ContactState {
-        normal_force_n: q,
-        geometry: ContactGeometry::Line { length_m },
+    let whole = ContactState {
+        normal_force_n: load,
+        geometry: ContactGeometry::Line { length_m: length },
         reduced_radius_m: rs.reduced_radius,
         reduced_modulus_pa: rs.reduced_modulus,
-        rolling_speed_m_s: u,
-        sliding_speed_m_s: vs,
+        rolling_speed_m_s: entrainment / load,
+        sliding_speed_m_s: 0.0,
         temperature_k: rs.temperature_k,
         roughness_ra_m: rs.roughness,
         film_thickness_m: None,
     };
-    let prepared = tmodel.prepare_contact(&state(load, length, entrainment / load, 0.0), None);
-    for h in hits.iter() {
-        let st = state(h.q, model.slice_len[h.slice], h.u, h.vs);
-        let tr = match &prepared {
-            Some(prep) => tmodel.traction_prepared(prep, &st),
-            None => traction(&st, tmodel),
+    let contact = batch.add_contact(tmodel, &whole);
+    for h in &mut scratch.hits[first..] {
+        let slice_len = model.slice_len[h.batch_index];
+        h.contact = Some(contact);
+        h.batch_index = batch.push(contact, h.q, slice_len, h.u, h.vs);
+    }
+    f_ring
+}
+
+/// Pass 2 of the raceway contacts: evaluates the traction of every loaded slice (one batch per
+/// raceway, [`SliceBatch::evaluate`]) and adds the friction forces to the rollers, the inner
+/// ring (`f_inner`) and the per-roller contact tables.
+fn apply_traction(model: &Model, diag: &mut Diagnostics, f_inner: &mut V3) {
+    let sc = &mut diag.slices;
+    sc.inner.evaluate(&model.traction.inner);
+    sc.outer.evaluate(&model.traction.outer);
+    for h in &sc.hits {
+        let (batch, table) = if h.inner {
+            (&sc.inner, &mut diag.inner)
+        } else {
+            (&sc.outer, &mut diag.outer)
         };
-        let mut fs = scale(h.n, h.q);
+        let mu = batch.coefficient(h.batch_index);
+        let j = h.roller;
         if h.vs > 0.0 {
-            fs = axpy(fs, -tr.coefficient * h.q / h.vs, h.vt);
+            let friction = scale(h.vt, -mu * h.q / h.vs);
+            sc.force[j] = add(sc.force[j], friction);
+            sc.moment[j] = add(sc.moment[j], cross(h.r_cp, friction));
+            if h.inner {
+                *f_inner = sub(*f_inner, friction);
+            }
         }
-        *f = add(*f, fs);
-        *m = add(*m, cross(h.r_cp, fs));
-        f_ring = sub(f_ring, fs);
-        table.force[j] += h.q;
+        let (_, film_minimum, lambda) = h
+            .contact
+            .map_or((f64::NAN, f64::NAN, f64::NAN), |c| batch.film(c));
         table.sliding[j] += h.q * h.vs;
         table.rolling[j] += h.q * h.u.abs();
-        table.film[j] += h.q * tr.film_minimum_m;
-        table.lambda[j] += h.q * tr.lambda.min(1e3);
-        table.mu[j] += h.q * tr.coefficient;
-        table.power[j] += tr.coefficient.abs() * h.q * h.vs;
+        table.film[j] += h.q * film_minimum;
+        table.lambda[j] += h.q * lambda.min(1e3);
+        table.mu[j] += h.q * mu;
+        table.power[j] += mu.abs() * h.q * h.vs;
         if h.q > table.worst_q[j] {
             table.worst_q[j] = h.q;
-            table.worst[j] = Some(st);
+            table.worst[j] = Some(batch.state(h.batch_index));
         }
     }
-    table.finish(j);
-    f_ring
 }
 
 /// Evaluates `dy = f(t, y)` and fills `diag`.
@@ -416,6 +475,7 @@ pub(crate) fn rhs(model: &Model, t: f64, y: &[f64], dy: &mut [f64], diag: &mut D
     let bar_share = 0.5; // K_p and C_h split over the two evaluation points along the roller
     let bar_damping = SliceDamping::new(bar_share * bar.c_h, bar.d);
     let pitch = std::f64::consts::TAU / model.z as f64;
+    diag.slices.clear();
 
     for j in 0..model.z {
         let b = lay.roller(j);
@@ -424,8 +484,6 @@ pub(crate) fn rhs(model: &Model, t: f64, y: &[f64], dy: &mut [f64], diag: &mut D
         let (thd, rdot, zd) = (y[b + 6], y[b + 7], y[b + 8]);
         let l = rd(y, b + 9);
         let (s, c) = th.sin_cos();
-        let er = [c, s, 0.0];
-        let et = [-s, c, 0.0];
         let centre = [r * c, r * s, zz];
         let v = [rdot * c - r * thd * s, rdot * s + r * thd * c, zd];
         let w = axisymmetric_omega(l, a, model.ia_r, model.it_r);
@@ -438,7 +496,7 @@ pub(crate) fn rhs(model: &Model, t: f64, y: &[f64], dy: &mut [f64], diag: &mut D
         };
         let mut f = scale(g, model.m_r);
         let mut m = [0.0; 3];
-        let fr = raceway_contacts(
+        let fr = raceway_slices(
             model,
             &model.inner,
             true,
@@ -448,12 +506,12 @@ pub(crate) fn rhs(model: &Model, t: f64, y: &[f64], dy: &mut [f64], diag: &mut D
             &mut f,
             &mut m,
             &mut diag.inner,
-            &mut diag.hits,
+            &mut diag.slices,
             div_limit,
             &mut diag.violation,
         );
         f_inner = add(f_inner, fr);
-        raceway_contacts(
+        raceway_slices(
             model,
             &model.outer,
             false,
@@ -463,7 +521,7 @@ pub(crate) fn rhs(model: &Model, t: f64, y: &[f64], dy: &mut [f64], diag: &mut D
             &mut f,
             &mut m,
             &mut diag.outer,
-            &mut diag.hits,
+            &mut diag.slices,
             div_limit,
             &mut diag.violation,
         );
@@ -640,17 +698,33 @@ pub(crate) fn rhs(model: &Model, t: f64, y: &[f64], dy: &mut [f64], diag: &mut D
         diag.pocket[j] = pocket_q;
         diag.pocket_power[j] = pocket_pw;
 
-        // Newton–Euler in cylindrical coordinates (seed 000 (2.1)) and L̇ = M ((2.2) in the
-        // inertial frame: the gyroscopic term is contained in ω(L, a))
-        let fr_ = dot(f, er);
-        let ft_ = dot(f, et);
-        let mr = model.m_r;
+        diag.slices.force[j] = f;
+        diag.slices.moment[j] = m;
+    }
+
+    // raceway traction of all rollers, then Newton–Euler in cylindrical coordinates (seed 000
+    // (2.1)) and L̇ = M ((2.2) in the inertial frame: the gyroscopic term is contained in
+    // ω(L, a))
+    apply_traction(model, diag, &mut f_inner);
+    let mr = model.m_r;
+    for j in 0..model.z {
+        diag.inner.finish(j);
+        diag.outer.finish(j);
+        let b = lay.roller(j);
+        let (th, r) = (y[b], y[b + 1]);
+        let a = unit_or(rd(y, b + 3), [0.0, 0.0, 1.0]);
+        let (thd, rdot, zd) = (y[b + 6], y[b + 7], y[b + 8]);
+        let w = axisymmetric_omega(rd(y, b + 9), a, model.ia_r, model.it_r);
+        let (s, c) = th.sin_cos();
+        let (f, m) = (diag.slices.force[j], diag.slices.moment[j]);
+        let f_radial = dot(f, [c, s, 0.0]);
+        let f_tangential = dot(f, [-s, c, 0.0]);
         dy[b] = thd;
         dy[b + 1] = rdot;
         dy[b + 2] = zd;
         wr(dy, b + 3, cross(w, a));
-        dy[b + 6] = (ft_ / mr - 2.0 * rdot * thd) / r;
-        dy[b + 7] = fr_ / mr + r * thd * thd;
+        dy[b + 6] = (f_tangential / mr - 2.0 * rdot * thd) / r;
+        dy[b + 7] = f_radial / mr + r * thd * thd;
         dy[b + 8] = f[2] / mr;
         wr(dy, b + 9, m);
     }

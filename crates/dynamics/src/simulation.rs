@@ -138,6 +138,23 @@ impl Simulation {
         self.ig.invalidate();
     }
 
+    /// Switches the integration method ([`crate::IntegratorSettings::method`], e.g. the CLI's
+    /// `--integrator`) at the current state: the new stepper starts from the current `(t, y)`
+    /// with the initial step size and keeps the step statistics. Call it before running (and
+    /// before [`Simulation::restore`] of a checkpoint written with `method`).
+    pub fn set_integrator_method(&mut self, method: IntegratorMethod) {
+        if self.settings.integrator.method == method {
+            return;
+        }
+        self.settings.integrator.method = method;
+        let set = &self.settings.integrator;
+        let (scale, relative) = error_scales(&self.model, set.velocity_scale);
+        let (t, y) = (self.ig.t(), self.ig.y().to_vec());
+        let mut ig = new_stepper(&self.model, set, t, y, scale, relative);
+        *ig.stats_mut() = self.ig.stats().clone();
+        self.ig = ig;
+    }
+
     fn from_model(
         model: Model,
         settings: DynamicsSettings,
@@ -173,40 +190,7 @@ impl Simulation {
         }
         let y = pack_state(&model, init)?;
         let (scale, relative) = error_scales(&model, set.velocity_scale);
-        let ig = match set.method {
-            IntegratorMethod::Dopri5 => {
-                Stepper::Dopri5(Dopri5::new(0.0, y, scale, relative, set.initial_step_s))
-            }
-            IntegratorMethod::RosenbrockW => {
-                // one block per body; rollers form one colour group (a roller's derivative
-                // depends on no other roller's state), cage and inner ring one group each
-                let rollers = (0..model.z)
-                    .map(|j| JacobianBlock {
-                        start: lay.roller(j),
-                        n: ROLLER_DOF,
-                    })
-                    .collect();
-                let groups = [
-                    rollers,
-                    vec![JacobianBlock {
-                        start: lay.cage(),
-                        n: CAGE_DOF,
-                    }],
-                    vec![JacobianBlock {
-                        start: lay.inner(),
-                        n: INNER_DOF,
-                    }],
-                ];
-                Stepper::RosenbrockW(RosenbrockW::new(
-                    0.0,
-                    y,
-                    scale,
-                    relative,
-                    set.initial_step_s,
-                    &groups,
-                ))
-            }
-        };
+        let ig = new_stepper(&model, set, 0.0, y, scale, relative);
         let z = model.z;
         let fingerprint = fingerprint(&model);
         let mut sim = Self {
@@ -873,6 +857,59 @@ pub(crate) fn roller_contact_frequency(model: &Model) -> f64 {
         rs.n * REFERENCE_LOAD_N / delta
     };
     ((stiffness(&model.inner) + stiffness(&model.outer)) / model.m_r).sqrt()
+}
+
+/// The stepper of `set.method` at `(t, y)` with the error scales of [`error_scales`].
+fn new_stepper(
+    model: &Model,
+    set: &crate::settings::IntegratorSettings,
+    t: f64,
+    y: Vec<f64>,
+    scale: Vec<f64>,
+    relative: Vec<f64>,
+) -> Stepper {
+    let lay = model.layout;
+    match set.method {
+        IntegratorMethod::Dopri5 => {
+            Stepper::Dopri5(Dopri5::new(t, y, scale, relative, set.initial_step_s))
+        }
+        IntegratorMethod::Tsit5 => Stepper::Tsit5(crate::tsit5::Tsit5::new(
+            t,
+            y,
+            scale,
+            relative,
+            set.initial_step_s,
+        )),
+        IntegratorMethod::RosenbrockW => {
+            // one block per body; rollers form one colour group (a roller's derivative
+            // depends on no other roller's state), cage and inner ring one group each
+            let rollers = (0..model.z)
+                .map(|j| JacobianBlock {
+                    start: lay.roller(j),
+                    n: ROLLER_DOF,
+                })
+                .collect();
+            let groups = [
+                rollers,
+                vec![JacobianBlock {
+                    start: lay.cage(),
+                    n: CAGE_DOF,
+                }],
+                vec![JacobianBlock {
+                    start: lay.inner(),
+                    n: INNER_DOF,
+                }],
+            ];
+            Stepper::RosenbrockW(RosenbrockW::new(
+                t,
+                y,
+                scale,
+                relative,
+                set.initial_step_s,
+                &groups,
+            ))
+        }
+    }
 }
 
 /// Characteristic scales of the state components (crate docs, "Error control").

@@ -1,4 +1,4 @@
-//! The integrator of a [`crate::Simulation`]: either method of [`crate::IntegratorMethod`]
+//! The integrator of a [`crate::Simulation`]: any method of [`crate::IntegratorMethod`]
 //! behind one interface, with its checkpoint serialisation.
 
 use crate::checkpoint::{Reader, Writer};
@@ -6,13 +6,54 @@ use crate::error::DynError;
 use crate::integrator::{Dopri5, OdeSystem, StepError, StepStats};
 use crate::rosenbrock::RosenbrockW;
 use crate::settings::IntegratorSettings;
+use crate::tsit5::Tsit5;
 
 /// One stepper per simulation, so the size difference of the variants costs nothing worth a box.
 #[allow(clippy::large_enum_variant)]
 #[derive(Debug, Clone)]
 pub(crate) enum Stepper {
     Dopri5(Dopri5),
+    Tsit5(Tsit5),
     RosenbrockW(RosenbrockW),
+}
+
+/// Checkpoint of an explicit pair ([`Dopri5`], [`Tsit5`]: the same fields), after its tag.
+macro_rules! save_explicit {
+    ($w:expr, $ig:expr) => {{
+        let (w, ig) = (&mut *$w, $ig);
+        w.f64(ig.t);
+        w.f64(ig.h);
+        w.f64(ig.err_old);
+        w.u64(u64::from(ig.last_rejected));
+        w.u64(u64::from(ig.k1_valid));
+        w.slice(&ig.y);
+        w.slice(&ig.k[0]);
+        w.f64(ig.dense_t);
+        w.f64(ig.dense_h);
+        for d in ig.dense_parts() {
+            w.slice(d);
+        }
+    }};
+}
+
+/// Reads what `save_explicit` wrote.
+macro_rules! load_explicit {
+    ($r:expr, $ig:expr) => {{
+        let (r, ig) = (&mut *$r, $ig);
+        ig.t = r.f64()?;
+        ig.h = r.f64()?;
+        ig.err_old = r.f64()?;
+        ig.last_rejected = r.u64()? != 0;
+        ig.k1_valid = r.u64()? != 0;
+        r.slice_into(&mut ig.y)?;
+        r.slice_into(&mut ig.k[0])?;
+        ig.dense_t = r.f64()?;
+        ig.dense_h = r.f64()?;
+        for d in ig.dense_parts_mut().iter_mut() {
+            r.slice_into(d)?;
+        }
+        &mut ig.stats
+    }};
 }
 
 impl Stepper {
@@ -20,6 +61,7 @@ impl Stepper {
     pub fn t(&self) -> f64 {
         match self {
             Self::Dopri5(i) => i.t,
+            Self::Tsit5(i) => i.t,
             Self::RosenbrockW(i) => i.t,
         }
     }
@@ -27,31 +69,43 @@ impl Stepper {
     pub fn y(&self) -> &[f64] {
         match self {
             Self::Dopri5(i) => &i.y,
+            Self::Tsit5(i) => &i.y,
             Self::RosenbrockW(i) => &i.y,
         }
     }
     pub fn stats(&self) -> &StepStats {
         match self {
             Self::Dopri5(i) => &i.stats,
+            Self::Tsit5(i) => &i.stats,
             Self::RosenbrockW(i) => &i.stats,
+        }
+    }
+    pub fn stats_mut(&mut self) -> &mut StepStats {
+        match self {
+            Self::Dopri5(i) => &mut i.stats,
+            Self::Tsit5(i) => &mut i.stats,
+            Self::RosenbrockW(i) => &mut i.stats,
         }
     }
     /// Dense output of a step is available.
     pub fn has_dense(&self) -> bool {
         match self {
             Self::Dopri5(i) => i.dense_h > 0.0,
+            Self::Tsit5(i) => i.dense_h > 0.0,
             Self::RosenbrockW(i) => i.dense_h > 0.0,
         }
     }
     pub fn dense_start(&self) -> f64 {
         match self {
             Self::Dopri5(i) => i.dense_start(),
+            Self::Tsit5(i) => i.dense_start(),
             Self::RosenbrockW(i) => i.dense_start(),
         }
     }
     pub fn interpolate(&self, t: f64, out: &mut [f64]) {
         match self {
             Self::Dopri5(i) => i.interpolate(t, out),
+            Self::Tsit5(i) => i.interpolate(t, out),
             Self::RosenbrockW(i) => i.interpolate(t, out),
         }
     }
@@ -59,6 +113,7 @@ impl Stepper {
     pub fn invalidate(&mut self) {
         match self {
             Self::Dopri5(i) => i.k1_valid = false,
+            Self::Tsit5(i) => i.k1_valid = false,
             Self::RosenbrockW(i) => i.invalidate(),
         }
     }
@@ -69,6 +124,7 @@ impl Stepper {
     ) -> Result<(), StepError> {
         match self {
             Self::Dopri5(i) => i.step(sys, set),
+            Self::Tsit5(i) => i.step(sys, set),
             Self::RosenbrockW(i) => i.step(sys, set),
         }
     }
@@ -79,18 +135,11 @@ impl Stepper {
         match self {
             Self::Dopri5(ig) => {
                 w.u64(0);
-                w.f64(ig.t);
-                w.f64(ig.h);
-                w.f64(ig.err_old);
-                w.u64(u64::from(ig.last_rejected));
-                w.u64(u64::from(ig.k1_valid));
-                w.slice(&ig.y);
-                w.slice(&ig.k[0]);
-                w.f64(ig.dense_t);
-                w.f64(ig.dense_h);
-                for d in ig.dense_parts() {
-                    w.slice(d);
-                }
+                save_explicit!(w, ig);
+            }
+            Self::Tsit5(ig) => {
+                w.u64(2);
+                save_explicit!(w, ig);
             }
             Self::RosenbrockW(ig) => {
                 w.u64(1);
@@ -126,21 +175,8 @@ impl Stepper {
         let tag = r.u64()?;
         let mut out = self.clone();
         let stats = match (&mut out, tag) {
-            (Self::Dopri5(ig), 0) => {
-                ig.t = r.f64()?;
-                ig.h = r.f64()?;
-                ig.err_old = r.f64()?;
-                ig.last_rejected = r.u64()? != 0;
-                ig.k1_valid = r.u64()? != 0;
-                r.slice_into(&mut ig.y)?;
-                r.slice_into(&mut ig.k[0])?;
-                ig.dense_t = r.f64()?;
-                ig.dense_h = r.f64()?;
-                for d in ig.dense_parts_mut().iter_mut() {
-                    r.slice_into(d)?;
-                }
-                &mut ig.stats
-            }
+            (Self::Dopri5(ig), 0) => load_explicit!(r, ig),
+            (Self::Tsit5(ig), 2) => load_explicit!(r, ig),
             (Self::RosenbrockW(ig), 1) => {
                 ig.t = r.f64()?;
                 ig.h = r.f64()?;

@@ -1,6 +1,6 @@
 //! Cost of one `traction()` call (budget: ≤ 200 ns per call, dynamics calls it per slice per stage).
 use criterion::{Criterion, criterion_group, criterion_main};
-use rolldyn_lubrication::traction::{FrictionLaw, LubricatedFriction, TractionConfig};
+use rolldyn_lubrication::traction::{FrictionLaw, LubricatedFriction, SliceBatch, TractionConfig};
 use rolldyn_lubrication::*;
 use std::hint::black_box;
 
@@ -41,6 +41,64 @@ fn bench(c: &mut Criterion) {
             let mut s = st;
             s.sliding_speed_m_s = 0.01 + (k % 64) as f64 * 0.02; // vary the slip
             traction(black_box(&s), black_box(&mixed))
+        })
+    });
+
+    // 18 roller–raceway contacts × 10 slices, per slice (`traction_prepared`) and batched
+    // (`SliceBatch`, the dynamics' path)
+    let wholes: Vec<ContactState> = (0..18)
+        .map(|j| ContactState {
+            normal_force_n: 50.0 + 20.0 * j as f64,
+            geometry: ContactGeometry::Line { length_m: 8e-3 },
+            ..st
+        })
+        .collect();
+    let slice_of = |j: usize, s: usize| ContactState {
+        normal_force_n: (5.0 + 2.0 * j as f64) * (0.8 + 0.04 * s as f64),
+        geometry: ContactGeometry::Line { length_m: 0.8e-3 },
+        sliding_speed_m_s: 0.01 + 0.003 * (j * 10 + s) as f64,
+        ..st
+    };
+    c.bench_function("traction/180_slices_per_slice", |b| {
+        b.iter(|| {
+            let mut sum = 0.0;
+            for (j, w) in wholes.iter().enumerate() {
+                let prep = mixed.prepare_contact(black_box(w), None).unwrap();
+                for s in 0..10 {
+                    sum += mixed.traction_prepared(&prep, &slice_of(j, s)).coefficient;
+                }
+            }
+            sum
+        })
+    });
+    c.bench_function("traction/18_contacts_prepare", |b| {
+        b.iter(|| {
+            let mut sum = 0.0;
+            for w in wholes.iter() {
+                sum += mixed.prepare_contact(black_box(w), None).unwrap().film().0;
+            }
+            sum
+        })
+    });
+    let mut batch = SliceBatch::with_capacity(180);
+    c.bench_function("traction/180_slices_batch", |b| {
+        b.iter(|| {
+            batch.clear();
+            for (j, w) in wholes.iter().enumerate() {
+                let contact = batch.add_contact(&mixed, black_box(w));
+                for s in 0..10 {
+                    let sl = slice_of(j, s);
+                    batch.push(
+                        contact,
+                        sl.normal_force_n,
+                        0.8e-3,
+                        sl.rolling_speed_m_s,
+                        sl.sliding_speed_m_s,
+                    );
+                }
+            }
+            batch.evaluate(&mixed);
+            batch.coefficient(17)
         })
     });
 

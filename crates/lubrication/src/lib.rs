@@ -62,7 +62,7 @@ pub use lubricant::{Lubricant, OilProperties, SolidThermal, TempLaw, ViscosityLa
 pub use regime::{FrictionRegime, LambdaDefinition, LubricationRegime};
 pub use scuffing::{CriticalSlip, SlipSearch, critical_slip};
 pub use traction::{
-    BoundaryFriction, FrictionLaw, Hydrodynamic, LubricatedFriction, MixedLimits, MurakiSettings,
-    PreparedContact, Rheology, Seed001Settings, SmallShearRate, Traction, TractionModel,
-    TwoLevelLaw, Warnings, traction,
+    BatchContact, BoundaryFriction, FrictionLaw, Hydrodynamic, LubricatedFriction, MixedLimits,
+    MurakiSettings, PreparedContact, Rheology, Seed001Settings, SliceBatch, SmallShearRate,
+    Traction, TractionModel, TwoLevelLaw, Warnings, traction,
 };

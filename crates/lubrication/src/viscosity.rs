@@ -2,6 +2,7 @@
 //! pressure–viscosity, Reynolds–Filonov exponential slope.
 
 use crate::lubricant::TempLaw;
+use rolldyn_numerics::fastmath;
 
 /// Walther / ASTM D341 constants through two kinematic viscosities (standard form, not in the
 /// seeds; SPEC §4.2.5): log₁₀ log₁₀(ν + 0.7) = A − B log₁₀ T, ν in mm²/s, T in K.
@@ -37,7 +38,7 @@ pub enum PiezoViscosity {
 /// Barus viscosity η0·exp(ᾱp).
 #[inline]
 pub fn barus(eta0: f64, alpha: f64, p: f64) -> f64 {
-    eta0 * (alpha * p).exp()
+    eta0 * fastmath::exp(alpha * p)
 }
 
 /// Roelands index Z matching the initial slope ᾱ: Z = ᾱ / (5.1×10⁻⁹ (ln η0 + 9.67)).

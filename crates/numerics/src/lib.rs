@@ -5,7 +5,9 @@
 //!   system of two nonlinear equations.
 //! * [`root1d`]: safeguarded Newton (bracket search, Newton/secant steps, bisection) for one
 //!   equation in one unknown.
+//! * [`fastmath`]: branch-free, vectorisable `exp`, `ln`, `ln_1p` for hot loops.
 
+pub mod fastmath;
 pub mod newton2d;
 pub mod root1d;
 

@@ -5,7 +5,9 @@
 Each folder holds the `revolutions.csv` and `summary.json` of
 `rolldyn simulate examples/2002834.toml --duration 20rev --tolerance TOL --output-step 1ms --json --out DIR`:
 `tTOL` with the default error scales (VelocityErrorScale::ContactFrequency), `oldTOL` with
-VelocityErrorScale::SurfaceSpeed (a build with that default). For every per-revolution figure it
+VelocityErrorScale::SurfaceSpeed (a build with that default), `tsit5-TOL` with the Tsitouras 5(4)
+pair (`--integrator tsit5`, default error scales; every such folder is listed, by tolerance).
+For every per-revolution figure it
 prints the mean over revolutions FIRST..20 relative to the τ = 1e-8 reference and, in brackets,
 the difference in units of the combined standard error of the two means (|z| ≲ 2: within the
 revolution-to-revolution scatter).
@@ -51,9 +53,11 @@ def main():
     ref, ref_rhs, n = load("t1e-8")
     print(f"revolutions {FIRST}..20 ({n}); reference τ = 1e-8, {ref_rhs} RHS")
     print("reference: " + "  ".join(f"{s} {ref[k][0]:.4g}±{ref[k][1]:.2g}" for s, k in FIGURES))
-    print(f"{'run':8s} {'RHS':>7s} " + " ".join(f"{s:>14s}" for s, _ in FIGURES))
+    print(f"{'run':10s} {'RHS':>7s} " + " ".join(f"{s:>14s}" for s, _ in FIGURES))
     runs = ["t2e-8", "t1e-7", "t1e-6", "t3e-6", "t1e-5", "t3e-5", "t1e-4"]
     runs += ["old1e-6", "old3e-6", "old1e-5", "old3e-5"]
+    tsit5 = [d for d in os.listdir(HERE) if d.startswith("tsit5-")]
+    runs += sorted(tsit5, key=lambda d: float(d.split("-", 1)[1]))
     for run in runs:
         stats, rhs, _ = load(run)
         cells = []
@@ -61,7 +65,7 @@ def main():
             (m, se), (m0, se0) = stats[key], ref[key]
             z = (m - m0) / math.hypot(se, se0) if se + se0 > 0 else 0.0
             cells.append(f"{100 * (m / m0 - 1):+6.1f}%({z:+5.1f})")
-        print(f"{run:8s} {rhs:7d} " + " ".join(f"{c:>14s}" for c in cells))
+        print(f"{run:10s} {rhs:7d} " + " ".join(f"{c:>14s}" for c in cells))
 
 
 if __name__ == "__main__":

@@ -4,6 +4,7 @@
 use crate::failure::Failure;
 use crate::output::{load_model, out_dir, print_json};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use rolldyn_dynamics::IntegratorMethod;
 use rolldyn_dynamics::output::{OutputSink, RevolutionSummary, RunSummary, Snapshot};
 use rolldyn_output::{Formats, OutputError, TableWriter};
 use rolldyn_plot::{Labels, Series, line_plot};
@@ -46,6 +47,27 @@ impl FromStr for Duration {
     }
 }
 
+/// Integration method (`docs/dynamics-integrator.md`).
+#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum IntegratorArg {
+    /// explicit Dormand–Prince 5(4)
+    Dopri5,
+    /// explicit Tsitouras 5(4)
+    Tsit5,
+    /// linearly implicit Rosenbrock-W ROS34PW2, order 3(2)
+    RosenbrockW,
+}
+
+impl IntegratorArg {
+    fn method(self) -> IntegratorMethod {
+        match self {
+            Self::Dopri5 => IntegratorMethod::Dopri5,
+            Self::Tsit5 => IntegratorMethod::Tsit5,
+            Self::RosenbrockW => IntegratorMethod::RosenbrockW,
+        }
+    }
+}
+
 #[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
 pub enum LoadDirectionArg {
     Fixed,
@@ -80,6 +102,9 @@ pub struct Args {
     /// Relative tolerance of the integrator.
     #[arg(long)]
     pub tolerance: Option<f64>,
+    /// Integration method (default: the settings default, dopri5).
+    #[arg(long, value_enum)]
+    pub integrator: Option<IntegratorArg>,
     /// Write the state to this file after every cage revolution (and at the end).
     #[arg(long)]
     pub checkpoint: Option<PathBuf>,
@@ -527,11 +552,20 @@ pub fn run(args: Args) -> Result<(), Failure> {
         0.0
     };
     let (mut sim, revolution) = prepare(&model, &args.overrides(), output_step, args.tolerance)?;
+    if let Some(integrator) = args.integrator {
+        sim.set_integrator_method(integrator.method());
+    }
     if let Some(path) = &args.resume {
         let bytes =
             std::fs::read(path).map_err(|e| Failure::Input(format!("{}: {e}", path.display())))?;
-        sim.restore(&bytes)
-            .map_err(|e| Failure::Input(format!("{}: {e}", path.display())))?;
+        sim.restore(&bytes).map_err(|e| {
+            let hint = if e.to_string().contains("integrator method") {
+                " (resume with the --integrator of the run that wrote it)"
+            } else {
+                ""
+            };
+            Failure::Input(format!("{}: {e}{hint}", path.display()))
+        })?;
     }
     if matches!(args.duration, Duration::CageRevolutions(_)) && revolution > 1e6 {
         return Err(Failure::Input(

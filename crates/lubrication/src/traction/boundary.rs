@@ -1,5 +1,7 @@
 //! Boundary friction, Kragelsky, seed 000 (2.10), SPEC §4.4.
 
+use rolldyn_numerics::fastmath;
+
 /// Boundary (asperity) friction law.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub enum BoundaryFriction {
@@ -16,7 +18,7 @@ pub enum BoundaryFriction {
 #[inline]
 pub fn kragelsky(s: f64) -> f64 {
     let s = s.abs();
-    (-0.1 + 22.28 * s) * (-181.46 * s).exp() + 0.1
+    (-0.1 + 22.28 * s) * fastmath::exp(-181.46 * s) + 0.1
 }
 
 impl BoundaryFriction {

@@ -17,6 +17,7 @@
 //! [`TractionConfig::min_rolling_speed_m_s`] in s = v/u and in the Muraki groups, the film → 0);
 //! continuous across the regime switches of (1.3) and across the elastic/viscous branches of (1.8).
 
+pub mod batch;
 pub mod boundary;
 pub mod flash;
 pub mod mixed;
@@ -24,6 +25,7 @@ pub mod muraki;
 pub mod table;
 pub mod two_level;
 
+pub use batch::{BatchContact, SliceBatch};
 pub use boundary::{BoundaryFriction, kragelsky};
 pub use flash::{Seed001Inputs, Seed001Result, Seed001Settings, seed001_friction};
 pub use mixed::{MixedLimits, mixed_friction};
@@ -327,6 +329,7 @@ impl TractionModel {
 impl TractionConfig {
     /// Sign of the traction for the sliding speed `v`: regularised over
     /// `regularisation_speed_m_s` when set, else the plain sign (0 at rest).
+    #[inline(always)]
     fn sliding_sign(&self, v: f64) -> f64 {
         if self.regularisation_speed_m_s > 0.0 {
             regularisation(v, self.regularisation_speed_m_s)
@@ -599,52 +602,25 @@ impl TractionModel {
         };
         let sign = cfg.sliding_sign(v);
         let hz = state.hertz();
-        let pr = &prep.props;
         let (hc, hm, lambda) = (prep.film_central_m, prep.film_minimum_m, prep.lambda);
-
-        // --- hydrodynamic friction
-        let mu_hd = match &lf.hydrodynamic {
-            Hydrodynamic::Constant(m) => *m,
-            Hydrodynamic::Muraki(ms) => {
-                let out = muraki(
-                    &MurakiInputs {
-                        mean_pressure: hz.mean_pressure_pa,
-                        half_width: hz.half_width_m,
-                        film: hc.max(1e-9),
-                        rolling_speed: u_eff,
-                        sliding_speed: v.abs(),
-                        eta0: pr.eta0,
-                        alpha: pr.alpha,
-                        roelands_z: oil.roelands_z,
-                        shear_modulus: pr.gamma,
-                        tau0: pr.tau0,
-                        beta0: pr.beta0,
-                        kappa: oil.kappa_per_k_pa.unwrap_or(0.0),
-                        k_f: pr.k_f,
-                    },
-                    ms,
-                );
-                if out.sqrt_negative {
-                    w |= Warnings::SQRT_NEGATIVE_F34;
-                }
-                if out.sigma_invalid {
-                    w |= Warnings::SIGMA_INVALID_F34;
-                }
-                out.mu
-            }
-        };
-
-        // --- boundary and mixed
-        let (mu, mu_bd, regime) = match &lf.mixed {
-            None => (mu_hd, f64::NAN, FrictionRegime::Hydrodynamic),
-            // μ_bd only matters below Λ_hd (mixed and boundary regimes)
-            Some(lim) if lambda < lim.lambda_hd => {
-                let mu_bd = lf.boundary.eval(s);
-                let (m, r) = mixed_friction(mu_bd, mu_hd, lambda, lim);
-                (m, mu_bd, r)
-            }
-            Some(_) => (mu_hd, f64::NAN, FrictionRegime::Hydrodynamic),
-        };
+        let LubricatedParts {
+            mu_hd,
+            mu_bd,
+            mu,
+            regime,
+            warnings,
+        } = lubricated_coefficient(
+            lf,
+            oil,
+            &prep.props,
+            prep.film_central_m,
+            prep.lambda,
+            hz.mean_pressure_pa,
+            hz.half_width_m,
+            u_eff,
+            v,
+        );
+        w |= warnings;
         let coefficient = mu * sign;
         Traction {
             coefficient,
@@ -664,4 +640,83 @@ impl TractionModel {
             warnings: Warnings(w),
         }
     }
+}
+
+/// μ_hd (Muraki or constant), μ_bd and the Λ blend (1.3) of a lubricated slice with the oil
+/// properties `pr`, central film `film_central` and film parameter `lambda` of its contact,
+/// mean pressure p̄ and half-width b (SPEC §4.5–4.7), rolling speed `u_eff` (already floored)
+/// and sliding speed `v`. The one implementation behind
+/// [`TractionModel::traction_prepared`] and [`SliceBatch::evaluate`]; call-free so that a loop
+/// over slices is vectorised.
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+pub(crate) fn lubricated_coefficient(
+    lf: &LubricatedFriction,
+    oil: &Lubricant,
+    pr: &HotProps,
+    film_central: f64,
+    lambda: f64,
+    mean_pressure: f64,
+    half_width: f64,
+    u_eff: f64,
+    v: f64,
+) -> LubricatedParts {
+    let mut warnings = 0u16;
+    let mu_hd = match &lf.hydrodynamic {
+        Hydrodynamic::Constant(m) => *m,
+        Hydrodynamic::Muraki(ms) => {
+            let out = muraki(
+                &MurakiInputs {
+                    mean_pressure,
+                    half_width,
+                    film: film_central.max(1e-9),
+                    rolling_speed: u_eff,
+                    sliding_speed: v.abs(),
+                    eta0: pr.eta0,
+                    alpha: pr.alpha,
+                    roelands_z: oil.roelands_z,
+                    shear_modulus: pr.gamma,
+                    tau0: pr.tau0,
+                    beta0: pr.beta0,
+                    kappa: oil.kappa_per_k_pa.unwrap_or(0.0),
+                    k_f: pr.k_f,
+                },
+                ms,
+            );
+            if out.sqrt_negative {
+                warnings |= Warnings::SQRT_NEGATIVE_F34;
+            }
+            if out.sigma_invalid {
+                warnings |= Warnings::SIGMA_INVALID_F34;
+            }
+            out.mu
+        }
+    };
+    let (mu, mu_bd, regime) = match &lf.mixed {
+        None => (mu_hd, f64::NAN, FrictionRegime::Hydrodynamic),
+        // μ_bd only matters below Λ_hd (mixed and boundary regimes)
+        Some(lim) if lambda < lim.lambda_hd => {
+            let mu_bd = lf.boundary.eval(v / u_eff);
+            let (m, r) = mixed_friction(mu_bd, mu_hd, lambda, lim);
+            (m, mu_bd, r)
+        }
+        Some(_) => (mu_hd, f64::NAN, FrictionRegime::Hydrodynamic),
+    };
+    LubricatedParts {
+        mu_hd,
+        mu_bd,
+        mu,
+        regime,
+        warnings,
+    }
+}
+
+/// Result of [`lubricated_coefficient`].
+pub(crate) struct LubricatedParts {
+    pub mu_hd: f64,
+    pub mu_bd: f64,
+    /// blended coefficient (magnitude)
+    pub mu: f64,
+    pub regime: FrictionRegime,
+    pub warnings: u16,
 }

@@ -27,6 +27,7 @@
 use crate::lubricant::SolidThermal;
 use crate::step::step;
 use crate::viscosity::{PiezoViscosity, viscosity_at_pressure};
+use rolldyn_numerics::fastmath;
 
 /// How (1.8) is continued to small dimensionless shear rates (F-34). See the module docs.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -141,7 +142,7 @@ fn s_thermal(sigma: f64, d: f64, phi: f64, l: f64) -> (f64, bool) {
 
 /// Dimensionless mean shear stress S(σ, D, Φ) with the selected small-σ continuation.
 /// Returns (S, elastic_limited, sqrt_negative, sigma_invalid).
-#[inline]
+#[inline(always)]
 pub fn dimensionless_stress(
     sigma: f64,
     d: f64,
@@ -155,7 +156,7 @@ pub fn dimensionless_stress(
         SmallShearRate::Asinh => {
             // sinh⁻¹σ = ln(1 + σ + σ²/(1 + √(1 + σ²))) (cheaper than std's hypot-based asinh,
             // no cancellation for small σ)
-            let l = (sigma + sigma * sigma / (1.0 + (1.0 + sigma * sigma).sqrt())).ln_1p();
+            let l = fastmath::ln_1p(sigma + sigma * sigma / (1.0 + (1.0 + sigma * sigma).sqrt()));
             if d * l >= 2.0 * sigma {
                 let x = phi * sigma;
                 (
@@ -188,7 +189,7 @@ pub fn dimensionless_stress(
 }
 
 /// Muraki hydrodynamic traction coefficient μ_hd ≥ 0 (magnitude; the caller applies the sign).
-#[inline]
+#[inline(always)]
 pub fn muraki(inp: &MurakiInputs, settings: &MurakiSettings) -> MurakiOutput {
     let p = inp.mean_pressure;
     let (h, u, v, b) = (

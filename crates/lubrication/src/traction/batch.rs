@@ -1,0 +1,392 @@
+//! Traction of many line-contact slices in one call (struct of arrays).
+//!
+//! The dynamics evaluates the traction of every loaded slice of every roller at every
+//! integrator stage — a few hundred slices per right-hand side. One call per slice spends most
+//! of its time in `exp`/`ln` calls and in building and returning the full [`Traction`] record.
+//! [`SliceBatch`] collects the slices of many prepared contacts (SPEC §3.3: one film per
+//! roller–raceway contact, the traction per slice with its own pressure, half-width and sliding
+//! speed) and evaluates only the coefficients, in one loop over contiguous arrays that the
+//! compiler vectorises (with the branch-free [`rolldyn_numerics::fastmath`] functions).
+//!
+//! The physics is exactly that of [`TractionModel::traction_prepared`]: both call
+//! [`TractionModel::lubricated_coefficient`]. Laws without a film (two-level, seed 001) fall
+//! back to [`traction()`] per slice.
+//!
+//! [`Traction`]: super::Traction
+
+use super::table::HotProps;
+use super::{
+    BoundaryFriction, FrictionLaw, Hydrodynamic, LubricatedFriction, MixedLimits, MurakiSettings,
+    PreparedContact, Rheology, SmallShearRate, TractionConfig, TractionModel,
+    lubricated_coefficient, traction,
+};
+use crate::contact_state::{ContactGeometry, ContactState, line_half_width, line_mean_pressure};
+use crate::lubricant::{Lubricant, SolidThermal};
+use crate::viscosity::PiezoViscosity;
+
+/// Handle of a contact added to a [`SliceBatch`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct BatchContact(usize);
+
+/// A contact of the batch: its prepared oil, film and Λ, and its geometry.
+#[derive(Debug, Clone, Copy)]
+struct Contact {
+    /// `None` for laws without a film (two-level, seed 001)
+    prepared: Option<PreparedContact>,
+    reduced_radius_m: f64,
+    reduced_modulus_pa: f64,
+    temperature_k: f64,
+    roughness_ra_m: [f64; 2],
+}
+
+/// Slices of many line contacts of one traction model, evaluated together by
+/// [`SliceBatch::evaluate`]. Allocates only while growing: reuse one batch with
+/// [`SliceBatch::clear`].
+#[derive(Debug, Clone, Default)]
+pub struct SliceBatch {
+    contacts: Vec<Contact>,
+    contact_of: Vec<usize>,
+    normal_force_n: Vec<f64>,
+    length_m: Vec<f64>,
+    rolling_speed_m_s: Vec<f64>,
+    sliding_speed_m_s: Vec<f64>,
+    coefficient: Vec<f64>,
+    lanes: ContactLanes,
+}
+
+impl SliceBatch {
+    /// An empty batch with room for `slices` slices.
+    pub fn with_capacity(slices: usize) -> Self {
+        Self {
+            contacts: Vec::with_capacity(slices),
+            contact_of: Vec::with_capacity(slices),
+            normal_force_n: Vec::with_capacity(slices),
+            length_m: Vec::with_capacity(slices),
+            rolling_speed_m_s: Vec::with_capacity(slices),
+            sliding_speed_m_s: Vec::with_capacity(slices),
+            coefficient: Vec::with_capacity(slices),
+            lanes: ContactLanes::default(),
+        }
+    }
+
+    /// Removes every contact and slice (keeps the memory).
+    pub fn clear(&mut self) {
+        self.contacts.clear();
+        self.contact_of.clear();
+        self.normal_force_n.clear();
+        self.length_m.clear();
+        self.rolling_speed_m_s.clear();
+        self.sliding_speed_m_s.clear();
+        self.coefficient.clear();
+    }
+
+    /// Adds a contact. `whole` describes the whole contact (total load over the loaded length,
+    /// mean entrainment speed, temperature, R', E', roughness); its film and Λ are computed
+    /// here once for all its slices ([`TractionModel::prepare_contact`]).
+    pub fn add_contact(&mut self, model: &TractionModel, whole: &ContactState) -> BatchContact {
+        self.contacts.push(Contact {
+            prepared: model.prepare_contact(whole, None),
+            reduced_radius_m: whole.reduced_radius_m,
+            reduced_modulus_pa: whole.reduced_modulus_pa,
+            temperature_k: whole.temperature_k,
+            roughness_ra_m: whole.roughness_ra_m,
+        });
+        BatchContact(self.contacts.len() - 1)
+    }
+
+    /// Adds a slice of `contact`: normal force (N), slice length (m), rolling and sliding speed
+    /// (m/s; the coefficient takes the sign of the sliding speed). Returns its index.
+    pub fn push(
+        &mut self,
+        contact: BatchContact,
+        normal_force_n: f64,
+        length_m: f64,
+        rolling_speed_m_s: f64,
+        sliding_speed_m_s: f64,
+    ) -> usize {
+        self.contact_of.push(contact.0);
+        self.normal_force_n.push(normal_force_n);
+        self.length_m.push(length_m);
+        self.rolling_speed_m_s.push(rolling_speed_m_s);
+        self.sliding_speed_m_s.push(sliding_speed_m_s);
+        self.len() - 1
+    }
+
+    /// Number of slices.
+    pub fn len(&self) -> usize {
+        self.contact_of.len()
+    }
+
+    /// No slices?
+    pub fn is_empty(&self) -> bool {
+        self.contact_of.is_empty()
+    }
+
+    /// Central and minimum film and Λ of `contact` (NaN for laws without a film).
+    pub fn film(&self, contact: BatchContact) -> (f64, f64, f64) {
+        match &self.contacts[contact.0].prepared {
+            Some(p) => (p.film_central_m, p.film_minimum_m, p.lambda),
+            None => (f64::NAN, f64::NAN, f64::NAN),
+        }
+    }
+
+    /// The state of slice `i` as a single contact (for reports and the scuffing check).
+    pub fn state(&self, i: usize) -> ContactState {
+        let c = &self.contacts[self.contact_of[i]];
+        ContactState {
+            normal_force_n: self.normal_force_n[i],
+            geometry: ContactGeometry::Line {
+                length_m: self.length_m[i],
+            },
+            reduced_radius_m: c.reduced_radius_m,
+            reduced_modulus_pa: c.reduced_modulus_pa,
+            rolling_speed_m_s: self.rolling_speed_m_s[i],
+            sliding_speed_m_s: self.sliding_speed_m_s[i],
+            temperature_k: c.temperature_k,
+            roughness_ra_m: c.roughness_ra_m,
+            film_thickness_m: None,
+        }
+    }
+
+    /// Traction coefficient of slice `i` after [`SliceBatch::evaluate`].
+    pub fn coefficient(&self, i: usize) -> f64 {
+        self.coefficient[i]
+    }
+
+    /// Evaluates the traction coefficient of every slice with `model` (the model whose
+    /// [`SliceBatch::add_contact`] prepared the contacts). Equal to
+    /// `traction_prepared(prepared, state(i)).coefficient` for the lubricated laws and to
+    /// `traction(state(i), model).coefficient` otherwise.
+    pub fn evaluate(&mut self, model: &TractionModel) {
+        let n = self.len();
+        self.coefficient.clear();
+        self.coefficient.resize(n, 0.0);
+        let (FrictionLaw::Lubricated(lf), Some(oil)) = (&model.cfg.law, model.cfg.oil.as_ref())
+        else {
+            for i in 0..n {
+                self.coefficient[i] = traction(&self.state(i), model).coefficient;
+            }
+            return;
+        };
+        self.lanes.gather(&self.contacts, &self.contact_of);
+        let slices = Slices {
+            lanes: &self.lanes,
+            normal_force_n: &self.normal_force_n,
+            length_m: &self.length_m,
+            rolling_speed_m_s: &self.rolling_speed_m_s,
+            sliding_speed_m_s: &self.sliding_speed_m_s,
+        };
+        let out = &mut self.coefficient;
+        let cfg = &model.cfg;
+        // The common laws get a loop in which the law's variants are compile-time constants, so
+        // that the compiler sees a branch-free body and vectorises it.
+        match (&lf.hydrodynamic, lf.boundary) {
+            (Hydrodynamic::Muraki(ms), BoundaryFriction::Kragelsky)
+                if ms.small_shear_rate == SmallShearRate::Asinh
+                    && ms.piezo == PiezoViscosity::Barus =>
+            {
+                let solid = ms.solid;
+                match (ms.rheology, lf.mixed) {
+                    (Rheology::ViscoElastic, Some(lim)) => {
+                        evaluate_muraki::<true>(&slices, oil, cfg, solid, Some(lim), out)
+                    }
+                    (Rheology::ViscoElastic, None) => {
+                        evaluate_muraki::<true>(&slices, oil, cfg, solid, None, out)
+                    }
+                    (Rheology::Isothermal, mixed) => {
+                        evaluate_muraki::<false>(&slices, oil, cfg, solid, mixed, out)
+                    }
+                    _ => evaluate_lubricated(lf, oil, cfg, &slices, out),
+                }
+            }
+            _ => evaluate_lubricated(lf, oil, cfg, &slices, out),
+        }
+    }
+}
+
+/// The arrays of a batch read by the evaluation loops.
+struct Slices<'a> {
+    lanes: &'a ContactLanes,
+    normal_force_n: &'a [f64],
+    length_m: &'a [f64],
+    rolling_speed_m_s: &'a [f64],
+    sliding_speed_m_s: &'a [f64],
+}
+
+/// Per-slice copies of their contact's data, so that the main loop reads contiguous arrays.
+#[derive(Debug, Clone, Default)]
+struct ContactLanes {
+    /// 1 when the contact is prepared (lubricated and loaded), else 0
+    prepared: Vec<bool>,
+    film_central_m: Vec<f64>,
+    lambda: Vec<f64>,
+    reduced_radius_m: Vec<f64>,
+    reduced_modulus_pa: Vec<f64>,
+    eta0: Vec<f64>,
+    alpha: Vec<f64>,
+    gamma: Vec<f64>,
+    tau0: Vec<f64>,
+    beta0: Vec<f64>,
+    k_f: Vec<f64>,
+}
+
+impl ContactLanes {
+    fn gather(&mut self, contacts: &[Contact], contact_of: &[usize]) {
+        let n = contact_of.len();
+        self.prepared.resize(n, false);
+        self.film_central_m.resize(n, 0.0);
+        self.lambda.resize(n, 0.0);
+        self.reduced_radius_m.resize(n, 0.0);
+        self.reduced_modulus_pa.resize(n, 0.0);
+        for column in [
+            &mut self.eta0,
+            &mut self.alpha,
+            &mut self.gamma,
+            &mut self.tau0,
+            &mut self.beta0,
+            &mut self.k_f,
+        ] {
+            column.resize(n, 0.0);
+        }
+        for (i, &k) in contact_of.iter().enumerate() {
+            let c = &contacts[k];
+            self.reduced_radius_m[i] = c.reduced_radius_m;
+            self.reduced_modulus_pa[i] = c.reduced_modulus_pa;
+            self.prepared[i] = c.prepared.is_some();
+            if let Some(p) = &c.prepared {
+                self.film_central_m[i] = p.film_central_m;
+                self.lambda[i] = p.lambda;
+                let pr = &p.props;
+                self.eta0[i] = pr.eta0;
+                self.alpha[i] = pr.alpha;
+                self.gamma[i] = pr.gamma;
+                self.tau0[i] = pr.tau0;
+                self.beta0[i] = pr.beta0;
+                self.k_f[i] = pr.k_f;
+            }
+        }
+    }
+}
+
+/// [`evaluate_lubricated`] for Muraki (visco-elastic when `THERMAL`, else isothermal) with
+/// L = sinh⁻¹σ, Barus viscosity and Kragelsky boundary friction: the law is rebuilt here from
+/// constant variants, so every `match` on it folds away and the loop body is branch-free.
+///
+/// On x86-64 CPUs with AVX2 the loop is compiled a second time for AVX2 (four lanes) and
+/// chosen at run time. Both versions give the same bits: Rust never fuses a multiply and an
+/// add on its own, and `+ − × ÷ √`, `min`/`max` and comparisons are exact in every width.
+fn evaluate_muraki<const THERMAL: bool>(
+    slices: &Slices,
+    oil: &Lubricant,
+    cfg: &TractionConfig,
+    solid: SolidThermal,
+    mixed: Option<MixedLimits>,
+    out: &mut [f64],
+) {
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("avx2") {
+        // SAFETY: the CPU supports AVX2 (checked just above).
+        unsafe { evaluate_muraki_avx2::<THERMAL>(slices, oil, cfg, solid, mixed, out) };
+        return;
+    }
+    evaluate_muraki_portable::<THERMAL>(slices, oil, cfg, solid, mixed, out);
+}
+
+/// [`evaluate_muraki_portable`] compiled for AVX2.
+///
+/// # Safety
+/// Only call on a CPU that supports AVX2.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+unsafe fn evaluate_muraki_avx2<const THERMAL: bool>(
+    slices: &Slices,
+    oil: &Lubricant,
+    cfg: &TractionConfig,
+    solid: SolidThermal,
+    mixed: Option<MixedLimits>,
+    out: &mut [f64],
+) {
+    evaluate_muraki_portable::<THERMAL>(slices, oil, cfg, solid, mixed, out);
+}
+
+/// See [`evaluate_muraki`].
+#[inline(always)]
+fn evaluate_muraki_portable<const THERMAL: bool>(
+    slices: &Slices,
+    oil: &Lubricant,
+    cfg: &TractionConfig,
+    solid: SolidThermal,
+    mixed: Option<MixedLimits>,
+    out: &mut [f64],
+) {
+    let rheology = if THERMAL {
+        Rheology::ViscoElastic
+    } else {
+        Rheology::Isothermal
+    };
+    let law = |mixed| LubricatedFriction {
+        hydrodynamic: Hydrodynamic::Muraki(MurakiSettings {
+            rheology,
+            small_shear_rate: SmallShearRate::Asinh,
+            solid,
+            piezo: PiezoViscosity::Barus,
+        }),
+        boundary: BoundaryFriction::Kragelsky,
+        mixed,
+    };
+    match mixed {
+        Some(lim) => evaluate_lubricated(&law(Some(lim)), oil, cfg, slices, out),
+        None => evaluate_lubricated(&law(None), oil, cfg, slices, out),
+    }
+}
+
+/// The loop of [`SliceBatch::evaluate`] for the lubricated laws: every input a contiguous
+/// array, the law loop-invariant, no calls.
+#[inline(always)]
+fn evaluate_lubricated(
+    lf: &LubricatedFriction,
+    oil: &Lubricant,
+    cfg: &TractionConfig,
+    slices: &Slices,
+    coefficient: &mut [f64],
+) {
+    let n = coefficient.len();
+    let lanes = slices.lanes;
+    let (normal_force_n, length_m) = (&slices.normal_force_n[..n], &slices.length_m[..n]);
+    let rolling = &slices.rolling_speed_m_s[..n];
+    let sliding = &slices.sliding_speed_m_s[..n];
+    let (prepared, film, lambda) = (
+        &lanes.prepared[..n],
+        &lanes.film_central_m[..n],
+        &lanes.lambda[..n],
+    );
+    let (radius, modulus) = (&lanes.reduced_radius_m[..n], &lanes.reduced_modulus_pa[..n]);
+    let (eta0, alpha, gamma) = (&lanes.eta0[..n], &lanes.alpha[..n], &lanes.gamma[..n]);
+    let (tau0, beta0, k_f) = (&lanes.tau0[..n], &lanes.beta0[..n], &lanes.k_f[..n]);
+    for i in 0..n {
+        let props = HotProps {
+            eta0: eta0[i],
+            alpha: alpha[i],
+            gamma: gamma[i],
+            tau0: tau0[i],
+            beta0: beta0[i],
+            k_f: k_f[i],
+        };
+        let (q, l, e, r) = (normal_force_n[i], length_m[i], modulus[i], radius[i]);
+        let v = sliding[i];
+        let u_eff = rolling[i].abs().max(cfg.min_rolling_speed_m_s);
+        let parts = lubricated_coefficient(
+            lf,
+            oil,
+            &props,
+            film[i],
+            lambda[i],
+            line_mean_pressure(q, l, e, r),
+            line_half_width(q, l, e, r),
+            u_eff,
+            v,
+        );
+        let mu = parts.mu * cfg.sliding_sign(v);
+        coefficient[i] = if prepared[i] && q > 0.0 { mu } else { 0.0 };
+    }
+}

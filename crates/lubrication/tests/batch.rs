@@ -1,0 +1,124 @@
+//! `SliceBatch` (the dynamics' traction path) gives the per-slice `traction_prepared` /
+//! `traction` coefficients bit for bit, for every friction law.
+
+use rolldyn_lubrication::traction::{
+    FrictionLaw, LubricatedFriction, Rheology, SliceBatch, TractionConfig, TwoLevelLaw,
+};
+use rolldyn_lubrication::*;
+
+fn whole(q: f64, u: f64, t_c: f64) -> ContactState {
+    ContactState {
+        normal_force_n: q,
+        geometry: ContactGeometry::Line { length_m: 8e-3 },
+        reduced_radius_m: 1.0 / (1.0 / 0.0075 + 1.0 / 0.0825),
+        reduced_modulus_pa: 210e9 / 0.91,
+        rolling_speed_m_s: u,
+        sliding_speed_m_s: 0.0,
+        temperature_k: 273.15 + t_c,
+        roughness_ra_m: [0.2e-6, 0.16e-6],
+        film_thickness_m: None,
+    }
+}
+
+fn models() -> Vec<(&'static str, TractionModel)> {
+    let pao = lubricant_by_name("pao1-vg320").unwrap();
+    let lubricated = |rheology, mixed, reg| {
+        TractionModel::new(TractionConfig {
+            oil: Some(pao.clone()),
+            law: FrictionLaw::Lubricated(LubricatedFriction {
+                hydrodynamic: Hydrodynamic::Muraki(MurakiSettings {
+                    rheology,
+                    ..MurakiSettings::default()
+                }),
+                boundary: BoundaryFriction::Kragelsky,
+                mixed,
+            }),
+            regularisation_speed_m_s: reg,
+            ..TractionConfig::default()
+        })
+        .unwrap()
+    };
+    vec![
+        (
+            "muraki + mixed (literature limits)",
+            lubricated(Rheology::ViscoElastic, Some(MixedLimits::LITERATURE), 0.0),
+        ),
+        (
+            "muraki + mixed (NVI 65 limits, regularised)",
+            lubricated(Rheology::ViscoElastic, Some(MixedLimits::NVI65), 1e-3),
+        ),
+        (
+            "isothermal, no blend",
+            lubricated(Rheology::Isothermal, None, 0.0),
+        ),
+        (
+            "linear elastic",
+            lubricated(Rheology::LinearElastic { cap: 0.1 }, None, 0.0),
+        ),
+        (
+            "seed 001",
+            TractionModel::new(TractionConfig {
+                oil: Some(pao.clone()),
+                law: FrictionLaw::Seed001(Default::default()),
+                ..TractionConfig::default()
+            })
+            .unwrap(),
+        ),
+        (
+            "two-level",
+            TractionModel::new(TractionConfig {
+                law: FrictionLaw::TwoLevel(TwoLevelLaw {
+                    mu_s: 0.1,
+                    mu_d: 0.08,
+                    v_s: 1e-3,
+                    v_d: 2e-3,
+                }),
+                ..TractionConfig::default()
+            })
+            .unwrap(),
+        ),
+    ]
+}
+
+#[test]
+fn batch_equals_single_slice_evaluation() {
+    for (name, model) in models() {
+        let mut batch = SliceBatch::default();
+        let mut expected = Vec::new();
+        // contacts over loads, speeds (incl. below the rolling-speed floor) and temperatures
+        for (c, &(q, u, t_c)) in [
+            (400.0, 30.0, 100.0),
+            (20.0, 5.0, 60.0),
+            (150.0, 1e-4, 100.0),
+            (1e-3, 30.0, 120.0),
+        ]
+        .iter()
+        .enumerate()
+        {
+            let w = whole(q, u, t_c);
+            let contact = batch.add_contact(&model, &w);
+            let prepared = model.prepare_contact(&w, None);
+            for s in 0..10 {
+                let share = q * (0.02 + 0.03 * s as f64);
+                let q_s = if s == 9 { 0.0 } else { share };
+                let u_s = u * (1.0 + 0.01 * s as f64) * if c == 2 { -1.0 } else { 1.0 };
+                let v_s = [-0.5, -1e-4, 0.0, 1e-5, 3e-4, 0.01, 0.2, 1.0, 5.0, 0.3][s];
+                let i = batch.push(contact, q_s, 0.8e-3, u_s, v_s);
+                let st = batch.state(i);
+                let reference = match &prepared {
+                    Some(p) => model.traction_prepared(p, &st).coefficient,
+                    None => traction(&st, &model).coefficient,
+                };
+                expected.push(reference);
+            }
+        }
+        batch.evaluate(&model);
+        for (i, e) in expected.iter().enumerate() {
+            let got = batch.coefficient(i);
+            assert!(
+                got.to_bits() == e.to_bits() || (got == 0.0 && *e == 0.0),
+                "{name}, slice {i}: batch {got} vs single {e}"
+            );
+        }
+    }
+}
