@@ -1,7 +1,7 @@
 //! Which state components limit the step on the 2002834 benchmark case (the `cargo bench`
 //! model): histogram of the limiting components, grouped by name.
 //! `cargo run --release -p rolldyn-dynamics --example step_profile [duration_s] [tolerance]
-//! [safety] [pi_beta] [dopri5|tsit5|rosenbrock-w]` (the method name may stand anywhere; the
+//! [safety] [pi_beta] [dopri5|rosenbrock-w]` (the method name may stand anywhere; the
 //! numbers keep their order; default DOPRI5)
 
 use rolldyn_dynamics::*;
@@ -11,7 +11,6 @@ use std::collections::BTreeMap;
 fn main() {
     let method = |a: &str| match a {
         "dopri5" => Some(IntegratorMethod::Dopri5),
-        "tsit5" => Some(IntegratorMethod::Tsit5),
         "rosenbrock-w" => Some(IntegratorMethod::RosenbrockW),
         _ => None,
     };

@@ -288,7 +288,7 @@ impl Dopri5 {
 }
 
 /// Stage point of an explicit Runge–Kutta method: `out = y + h Σ a_s k_s` over the
-/// `(s, a_s)` pairs of `coeffs` (shared by [`Dopri5`] and [`crate::Tsit5`]).
+/// `(s, a_s)` pairs of `coeffs` (of [`Dopri5`]).
 #[inline]
 pub(crate) fn rk_stage(
     out: &mut [f64],
@@ -313,7 +313,7 @@ pub(crate) fn explicit_expo1(set: &IntegratorSettings) -> f64 {
     0.2 - 0.75 * set.pi_beta
 }
 
-/// Error test of an explicit embedded pair (shared by [`Dopri5`] and [`crate::Tsit5`]): the
+/// Error test of an explicit embedded pair (of [`Dopri5`]): the
 /// norm `max_i |e_i| / (τ (s_i + ρ_i max(|y_i|, |ŷ_i|)))` of the local error estimate
 /// `e(i)` and the component attaining it, or `Err(i)` with the first component whose error,
 /// new state `ynew` or new derivative `fnew` is not finite.
@@ -400,7 +400,7 @@ pub(crate) fn judge(
 
 /// Next step size after an accepted step: PI controller (Hairer, Nørsett & Wanner I, §II.4;
 /// Gustafsson) `h · safety · err^(−expo1) · err_old^β`, bounded by the shrink/growth limits,
-/// no growth right after a rejection, at most `max_step_s`. Shared by DOPRI5, Tsit5 and the
+/// no growth right after a rejection, at most `max_step_s`. Shared by DOPRI5 and the
 /// Rosenbrock-W method (which pass their own `expo1`).
 pub(crate) fn accepted_step(
     h: f64,

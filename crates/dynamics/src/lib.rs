@@ -93,7 +93,6 @@ mod simulation;
 mod stepper;
 pub mod study;
 mod summary;
-pub mod tsit5;
 mod vec3;
 
 pub use conditions::{
@@ -117,5 +116,4 @@ pub use rhs::axisymmetric_omega;
 pub use rosenbrock::{JacobianBlock, RosenbrockW};
 pub use settings::{DynamicsSettings, IntegratorMethod, IntegratorSettings, VelocityErrorScale};
 pub use simulation::Simulation;
-pub use tsit5::Tsit5;
 pub use vec3::V3;

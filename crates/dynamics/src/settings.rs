@@ -8,10 +8,6 @@ pub enum IntegratorMethod {
     /// ([`crate::Dopri5`]).
     #[default]
     Dopri5,
-    /// Explicit Tsitouras 5(4) pair with FSAL and its free 4th-order dense output
-    /// ([`crate::Tsit5`]): same cost per step and same error control as DOPRI5, smaller error
-    /// constant of the 5th-order solution.
-    Tsit5,
     /// Linearly implicit Rosenbrock-W method ROS34PW2, order 3(2), with a block-diagonal
     /// finite-difference Jacobian per body reused over many steps ([`crate::RosenbrockW`]).
     RosenbrockW,

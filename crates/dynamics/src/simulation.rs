@@ -873,13 +873,6 @@ fn new_stepper(
         IntegratorMethod::Dopri5 => {
             Stepper::Dopri5(Dopri5::new(t, y, scale, relative, set.initial_step_s))
         }
-        IntegratorMethod::Tsit5 => Stepper::Tsit5(crate::tsit5::Tsit5::new(
-            t,
-            y,
-            scale,
-            relative,
-            set.initial_step_s,
-        )),
         IntegratorMethod::RosenbrockW => {
             // one block per body; rollers form one colour group (a roller's derivative
             // depends on no other roller's state), cage and inner ring one group each

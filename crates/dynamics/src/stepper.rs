@@ -6,18 +6,16 @@ use crate::error::DynError;
 use crate::integrator::{Dopri5, OdeSystem, StepError, StepStats};
 use crate::rosenbrock::RosenbrockW;
 use crate::settings::IntegratorSettings;
-use crate::tsit5::Tsit5;
 
 /// One stepper per simulation, so the size difference of the variants costs nothing worth a box.
 #[allow(clippy::large_enum_variant)]
 #[derive(Debug, Clone)]
 pub(crate) enum Stepper {
     Dopri5(Dopri5),
-    Tsit5(Tsit5),
     RosenbrockW(RosenbrockW),
 }
 
-/// Checkpoint of an explicit pair ([`Dopri5`], [`Tsit5`]: the same fields), after its tag.
+/// Checkpoint of an explicit pair ([`Dopri5`]), after its tag.
 macro_rules! save_explicit {
     ($w:expr, $ig:expr) => {{
         let (w, ig) = (&mut *$w, $ig);
@@ -61,7 +59,6 @@ impl Stepper {
     pub fn t(&self) -> f64 {
         match self {
             Self::Dopri5(i) => i.t,
-            Self::Tsit5(i) => i.t,
             Self::RosenbrockW(i) => i.t,
         }
     }
@@ -69,21 +66,18 @@ impl Stepper {
     pub fn y(&self) -> &[f64] {
         match self {
             Self::Dopri5(i) => &i.y,
-            Self::Tsit5(i) => &i.y,
             Self::RosenbrockW(i) => &i.y,
         }
     }
     pub fn stats(&self) -> &StepStats {
         match self {
             Self::Dopri5(i) => &i.stats,
-            Self::Tsit5(i) => &i.stats,
             Self::RosenbrockW(i) => &i.stats,
         }
     }
     pub fn stats_mut(&mut self) -> &mut StepStats {
         match self {
             Self::Dopri5(i) => &mut i.stats,
-            Self::Tsit5(i) => &mut i.stats,
             Self::RosenbrockW(i) => &mut i.stats,
         }
     }
@@ -91,21 +85,18 @@ impl Stepper {
     pub fn has_dense(&self) -> bool {
         match self {
             Self::Dopri5(i) => i.dense_h > 0.0,
-            Self::Tsit5(i) => i.dense_h > 0.0,
             Self::RosenbrockW(i) => i.dense_h > 0.0,
         }
     }
     pub fn dense_start(&self) -> f64 {
         match self {
             Self::Dopri5(i) => i.dense_start(),
-            Self::Tsit5(i) => i.dense_start(),
             Self::RosenbrockW(i) => i.dense_start(),
         }
     }
     pub fn interpolate(&self, t: f64, out: &mut [f64]) {
         match self {
             Self::Dopri5(i) => i.interpolate(t, out),
-            Self::Tsit5(i) => i.interpolate(t, out),
             Self::RosenbrockW(i) => i.interpolate(t, out),
         }
     }
@@ -113,7 +104,6 @@ impl Stepper {
     pub fn invalidate(&mut self) {
         match self {
             Self::Dopri5(i) => i.k1_valid = false,
-            Self::Tsit5(i) => i.k1_valid = false,
             Self::RosenbrockW(i) => i.invalidate(),
         }
     }
@@ -124,7 +114,6 @@ impl Stepper {
     ) -> Result<(), StepError> {
         match self {
             Self::Dopri5(i) => i.step(sys, set),
-            Self::Tsit5(i) => i.step(sys, set),
             Self::RosenbrockW(i) => i.step(sys, set),
         }
     }
@@ -135,10 +124,6 @@ impl Stepper {
         match self {
             Self::Dopri5(ig) => {
                 w.u64(0);
-                save_explicit!(w, ig);
-            }
-            Self::Tsit5(ig) => {
-                w.u64(2);
                 save_explicit!(w, ig);
             }
             Self::RosenbrockW(ig) => {
@@ -176,7 +161,6 @@ impl Stepper {
         let mut out = self.clone();
         let stats = match (&mut out, tag) {
             (Self::Dopri5(ig), 0) => load_explicit!(r, ig),
-            (Self::Tsit5(ig), 2) => load_explicit!(r, ig),
             (Self::RosenbrockW(ig), 1) => {
                 ig.t = r.f64()?;
                 ig.h = r.f64()?;

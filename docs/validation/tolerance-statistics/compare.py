@@ -6,7 +6,8 @@ Each folder holds the `revolutions.csv` and `summary.json` of
 `rolldyn simulate examples/2002834.toml --duration 20rev --tolerance TOL --output-step 1ms --json --out DIR`:
 `tTOL` with the default error scales (VelocityErrorScale::ContactFrequency), `oldTOL` with
 VelocityErrorScale::SurfaceSpeed (a build with that default), `tsit5-TOL` with the Tsitouras 5(4)
-pair (`--integrator tsit5`, default error scales; every such folder is listed, by tolerance).
+pair (`--integrator tsit5` of commit b964a45; the pair was removed afterwards because it was not
+cheaper, see docs/dynamics-integrator.md; every such folder is listed, by tolerance).
 For every per-revolution figure it
 prints the mean over revolutions FIRST..20 relative to the τ = 1e-8 reference and, in brackets,
 the difference in units of the combined standard error of the two means (|z| ≲ 2: within the

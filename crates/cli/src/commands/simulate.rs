@@ -52,8 +52,6 @@ impl FromStr for Duration {
 pub enum IntegratorArg {
     /// explicit Dormand–Prince 5(4)
     Dopri5,
-    /// explicit Tsitouras 5(4)
-    Tsit5,
     /// linearly implicit Rosenbrock-W ROS34PW2, order 3(2)
     RosenbrockW,
 }
@@ -62,7 +60,6 @@ impl IntegratorArg {
     fn method(self) -> IntegratorMethod {
         match self {
             Self::Dopri5 => IntegratorMethod::Dopri5,
-            Self::Tsit5 => IntegratorMethod::Tsit5,
             Self::RosenbrockW => IntegratorMethod::RosenbrockW,
         }
     }
