@@ -155,7 +155,14 @@ impl Dopri5 {
 
     #[inline]
     fn stage(&mut self, h: f64, coeffs: &[(usize, f64)]) {
-        rk_stage(&mut self.ytmp, &self.y, &self.k, h, coeffs);
+        let n = self.y.len();
+        for i in 0..n {
+            let mut acc = 0.0;
+            for &(s, a) in coeffs {
+                acc += a * self.k[s][i];
+            }
+            self.ytmp[i] = self.y[i] + h * acc;
+        }
     }
 
     /// Takes one accepted step (retrying rejected ones). `sys` is evaluated at the stage points;
@@ -168,14 +175,16 @@ impl Dopri5 {
     ) -> Result<(), StepError> {
         let n = self.y.len();
         if !self.k1_valid {
-            sys.rhs(self.t, &self.y, &mut self.k[0]);
+            let (k0, _) = self.k.split_at_mut(1);
+            sys.rhs(self.t, &self.y, &mut k0[0]);
             self.stats.rhs_evaluations += 1;
             self.k1_valid = true;
         }
-        let expo1 = explicit_expo1(set);
+        let expo1 = 0.2 - 0.75 * set.pi_beta;
         loop {
             let h = self.h.min(set.max_step_s);
             let t = self.t;
+            let mut nonfinite_at = None;
             macro_rules! eval {
                 ($dst:expr, $c:expr) => {{
                     let (ytmp, k) = (&self.ytmp, &mut self.k);
@@ -200,60 +209,77 @@ impl Dopri5 {
             }
             self.stats.rhs_evaluations += 6;
             // error estimate
-            let k = &self.k;
-            let test = error_test(
-                set,
-                &self.scale,
-                &self.relative,
-                &self.y,
-                &self.ynew,
-                &k[6],
-                |i| {
-                    h * (E1 * k[0][i]
-                        + E3 * k[2][i]
-                        + E4 * k[3][i]
-                        + E5 * k[4][i]
-                        + E6 * k[5][i]
-                        + E7 * k[6][i])
-                },
-            );
-            match judge(test, h, expo1, set, &mut self.stats) {
-                Verdict::Accept(err) => {
-                    // dense output coefficients (Hairer's contd5)
-                    for i in 0..n {
-                        let y0 = self.y[i];
-                        let y1 = self.ynew[i];
-                        let dy = y1 - y0;
-                        let bspl = h * self.k[0][i] - dy;
-                        self.dense[0][i] = y0;
-                        self.dense[1][i] = dy;
-                        self.dense[2][i] = bspl;
-                        self.dense[3][i] = dy - h * self.k[6][i] - bspl;
-                        self.dense[4][i] = h
-                            * (D1 * self.k[0][i]
-                                + D3 * self.k[2][i]
-                                + D4 * self.k[3][i]
-                                + D5 * self.k[4][i]
-                                + D6 * self.k[5][i]
-                                + D7 * self.k[6][i]);
+            let mut err = 0.0_f64;
+            let mut arg = 0usize;
+            for i in 0..n {
+                let e = h
+                    * (E1 * self.k[0][i]
+                        + E3 * self.k[2][i]
+                        + E4 * self.k[3][i]
+                        + E5 * self.k[4][i]
+                        + E6 * self.k[5][i]
+                        + E7 * self.k[6][i]);
+                let sc = set.tolerance
+                    * (self.scale[i] + self.relative[i] * self.y[i].abs().max(self.ynew[i].abs()));
+                let r = (e / sc).abs();
+                if !r.is_finite() || !self.ynew[i].is_finite() || !self.k[6][i].is_finite() {
+                    if nonfinite_at.is_none() {
+                        nonfinite_at = Some(i);
                     }
-                    self.dense_t = t;
-                    self.dense_h = h;
-                    std::mem::swap(&mut self.y, &mut self.ynew);
-                    self.k.swap(0, 6);
-                    self.t = t + h;
-                    self.h = accepted_step(h, err, self.err_old, self.last_rejected, expo1, set);
-                    self.err_old = err.max(1e-4);
-                    self.last_rejected = false;
-                    return Ok(());
+                } else if r > err {
+                    err = r;
+                    arg = i;
                 }
-                Verdict::Reject { h_next, error } => {
-                    self.last_rejected = true;
-                    self.h = h_next;
-                    if let Some(e) = error {
-                        return Err(e);
-                    }
+            }
+            if let Some(i) = nonfinite_at {
+                self.stats.rejected += 1;
+                self.last_rejected = true;
+                self.h = h * set.min_shrink;
+                if self.h < set.min_step_s {
+                    return Err(StepError::NonFinite { h, component: i });
                 }
+                continue;
+            }
+            self.stats.limiting[arg] += 1;
+            if err <= 1.0 {
+                // dense output coefficients (Hairer's contd5)
+                for i in 0..n {
+                    let y0 = self.y[i];
+                    let y1 = self.ynew[i];
+                    let dy = y1 - y0;
+                    let bspl = h * self.k[0][i] - dy;
+                    self.dense[0][i] = y0;
+                    self.dense[1][i] = dy;
+                    self.dense[2][i] = bspl;
+                    self.dense[3][i] = dy - h * self.k[6][i] - bspl;
+                    self.dense[4][i] = h
+                        * (D1 * self.k[0][i]
+                            + D3 * self.k[2][i]
+                            + D4 * self.k[3][i]
+                            + D5 * self.k[4][i]
+                            + D6 * self.k[5][i]
+                            + D7 * self.k[6][i]);
+                }
+                self.dense_t = t;
+                self.dense_h = h;
+                std::mem::swap(&mut self.y, &mut self.ynew);
+                self.k.swap(0, 6);
+                self.t = t + h;
+                self.stats.accepted += 1;
+                self.h = accepted_step(h, err, self.err_old, self.last_rejected, expo1, set);
+                self.err_old = err.max(1e-4);
+                self.last_rejected = false;
+                return Ok(());
+            }
+            self.stats.rejected += 1;
+            self.last_rejected = true;
+            let fac = (set.safety * err.powf(-expo1)).clamp(set.min_shrink, 1.0);
+            self.h = h * fac;
+            if self.h < set.min_step_s {
+                return Err(StepError::Collapse {
+                    h: self.h,
+                    component: arg,
+                });
             }
         }
     }
@@ -284,117 +310,6 @@ impl Dopri5 {
 
     pub(crate) fn dense_parts_mut(&mut self) -> &mut [Vec<f64>; 5] {
         &mut self.dense
-    }
-}
-
-/// Stage point of an explicit Runge–Kutta method: `out = y + h Σ a_s k_s` over the
-/// `(s, a_s)` pairs of `coeffs` (of [`Dopri5`]).
-#[inline]
-pub(crate) fn rk_stage(
-    out: &mut [f64],
-    y: &[f64],
-    k: &[Vec<f64>],
-    h: f64,
-    coeffs: &[(usize, f64)],
-) {
-    for i in 0..out.len() {
-        let mut acc = 0.0;
-        for &(s, a) in coeffs {
-            acc += a * k[s][i];
-        }
-        out[i] = y[i] + h * acc;
-    }
-}
-
-/// Exponent on the current error of the PI controller of the explicit 5(4) pairs
-/// (Hairer's DOPRI5: `1/5 − 0.75 β`).
-#[inline]
-pub(crate) fn explicit_expo1(set: &IntegratorSettings) -> f64 {
-    0.2 - 0.75 * set.pi_beta
-}
-
-/// Error test of an explicit embedded pair (of [`Dopri5`]): the
-/// norm `max_i |e_i| / (τ (s_i + ρ_i max(|y_i|, |ŷ_i|)))` of the local error estimate
-/// `e(i)` and the component attaining it, or `Err(i)` with the first component whose error,
-/// new state `ynew` or new derivative `fnew` is not finite.
-#[inline]
-pub(crate) fn error_test(
-    set: &IntegratorSettings,
-    scale: &[f64],
-    relative: &[f64],
-    y: &[f64],
-    ynew: &[f64],
-    fnew: &[f64],
-    e: impl Fn(usize) -> f64,
-) -> Result<(f64, usize), usize> {
-    let mut err = 0.0_f64;
-    let mut arg = 0usize;
-    let mut nonfinite_at = None;
-    for i in 0..y.len() {
-        let sc = set.tolerance * (scale[i] + relative[i] * y[i].abs().max(ynew[i].abs()));
-        let r = (e(i) / sc).abs();
-        if !r.is_finite() || !ynew[i].is_finite() || !fnew[i].is_finite() {
-            if nonfinite_at.is_none() {
-                nonfinite_at = Some(i);
-            }
-        } else if r > err {
-            err = r;
-            arg = i;
-        }
-    }
-    match nonfinite_at {
-        Some(i) => Err(i),
-        None => Ok((err, arg)),
-    }
-}
-
-/// Verdict on an attempted step of an explicit embedded pair.
-pub(crate) enum Verdict {
-    /// accept with this error norm (the caller commits the step and calls [`accepted_step`])
-    Accept(f64),
-    /// reject: retry with `h_next`, or stop with `error` when it fell below the minimum step
-    Reject {
-        h_next: f64,
-        error: Option<StepError>,
-    },
-}
-
-/// Judges the error test of a step of size `h` and counts it in `stats` (rejections, limiting
-/// component): a non-finite state shrinks the step by `min_shrink`, an error norm above 1 by
-/// `safety · err^(−expo1)` (at least `min_shrink`, never growing).
-pub(crate) fn judge(
-    test: Result<(f64, usize), usize>,
-    h: f64,
-    expo1: f64,
-    set: &IntegratorSettings,
-    stats: &mut StepStats,
-) -> Verdict {
-    match test {
-        Err(component) => {
-            stats.rejected += 1;
-            let h_next = h * set.min_shrink;
-            Verdict::Reject {
-                h_next,
-                error: (h_next < set.min_step_s).then_some(StepError::NonFinite { h, component }),
-            }
-        }
-        Ok((err, arg)) => {
-            stats.limiting[arg] += 1;
-            if err <= 1.0 {
-                stats.accepted += 1;
-                return Verdict::Accept(err);
-            }
-            stats.rejected += 1;
-            let fac = (set.safety * err.powf(-expo1)).clamp(set.min_shrink, 1.0);
-            let h_next = h * fac;
-            Verdict::Reject {
-                h_next,
-                error: (h_next < set.min_step_s).then_some(StepError::Collapse {
-                    h: h_next,
-                    component: arg,
-                }),
-            }
-        }
     }
 }
 

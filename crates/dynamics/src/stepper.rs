@@ -1,4 +1,4 @@
-//! The integrator of a [`crate::Simulation`]: any method of [`crate::IntegratorMethod`]
+//! The integrator of a [`crate::Simulation`]: either method of [`crate::IntegratorMethod`]
 //! behind one interface, with its checkpoint serialisation.
 
 use crate::checkpoint::{Reader, Writer};
@@ -13,45 +13,6 @@ use crate::settings::IntegratorSettings;
 pub(crate) enum Stepper {
     Dopri5(Dopri5),
     RosenbrockW(RosenbrockW),
-}
-
-/// Checkpoint of an explicit pair ([`Dopri5`]), after its tag.
-macro_rules! save_explicit {
-    ($w:expr, $ig:expr) => {{
-        let (w, ig) = (&mut *$w, $ig);
-        w.f64(ig.t);
-        w.f64(ig.h);
-        w.f64(ig.err_old);
-        w.u64(u64::from(ig.last_rejected));
-        w.u64(u64::from(ig.k1_valid));
-        w.slice(&ig.y);
-        w.slice(&ig.k[0]);
-        w.f64(ig.dense_t);
-        w.f64(ig.dense_h);
-        for d in ig.dense_parts() {
-            w.slice(d);
-        }
-    }};
-}
-
-/// Reads what `save_explicit` wrote.
-macro_rules! load_explicit {
-    ($r:expr, $ig:expr) => {{
-        let (r, ig) = (&mut *$r, $ig);
-        ig.t = r.f64()?;
-        ig.h = r.f64()?;
-        ig.err_old = r.f64()?;
-        ig.last_rejected = r.u64()? != 0;
-        ig.k1_valid = r.u64()? != 0;
-        r.slice_into(&mut ig.y)?;
-        r.slice_into(&mut ig.k[0])?;
-        ig.dense_t = r.f64()?;
-        ig.dense_h = r.f64()?;
-        for d in ig.dense_parts_mut().iter_mut() {
-            r.slice_into(d)?;
-        }
-        &mut ig.stats
-    }};
 }
 
 impl Stepper {
@@ -124,7 +85,18 @@ impl Stepper {
         match self {
             Self::Dopri5(ig) => {
                 w.u64(0);
-                save_explicit!(w, ig);
+                w.f64(ig.t);
+                w.f64(ig.h);
+                w.f64(ig.err_old);
+                w.u64(u64::from(ig.last_rejected));
+                w.u64(u64::from(ig.k1_valid));
+                w.slice(&ig.y);
+                w.slice(&ig.k[0]);
+                w.f64(ig.dense_t);
+                w.f64(ig.dense_h);
+                for d in ig.dense_parts() {
+                    w.slice(d);
+                }
             }
             Self::RosenbrockW(ig) => {
                 w.u64(1);
@@ -160,7 +132,21 @@ impl Stepper {
         let tag = r.u64()?;
         let mut out = self.clone();
         let stats = match (&mut out, tag) {
-            (Self::Dopri5(ig), 0) => load_explicit!(r, ig),
+            (Self::Dopri5(ig), 0) => {
+                ig.t = r.f64()?;
+                ig.h = r.f64()?;
+                ig.err_old = r.f64()?;
+                ig.last_rejected = r.u64()? != 0;
+                ig.k1_valid = r.u64()? != 0;
+                r.slice_into(&mut ig.y)?;
+                r.slice_into(&mut ig.k[0])?;
+                ig.dense_t = r.f64()?;
+                ig.dense_h = r.f64()?;
+                for d in ig.dense_parts_mut().iter_mut() {
+                    r.slice_into(d)?;
+                }
+                &mut ig.stats
+            }
             (Self::RosenbrockW(ig), 1) => {
                 ig.t = r.f64()?;
                 ig.h = r.f64()?;
