@@ -15,7 +15,7 @@
 use crate::lubricant::Lubricant;
 
 /// Properties needed by the traction hot path (NaN = not given).
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct HotProps {
     /// η0, Pa·s
     pub eta0: f64,
