@@ -14,6 +14,13 @@ use crate::settings::IntegratorSettings;
 pub trait OdeSystem {
     /// Evaluates `dy = f(t, y)`. Must not allocate in hot use.
     fn rhs(&mut self, t: f64, y: &[f64], dy: &mut [f64]);
+
+    /// Evaluates `dy = f(t, y)` at a state the integrator may accept (the start state and each
+    /// step's new state). Systems that report per-evaluation side results (contact tables,
+    /// powers) compute them here only; the intermediate stages call [`OdeSystem::rhs`].
+    fn rhs_reported(&mut self, t: f64, y: &[f64], dy: &mut [f64]) {
+        self.rhs(t, y, dy);
+    }
 }
 
 /// Step statistics.
@@ -176,7 +183,7 @@ impl Dopri5 {
         let n = self.y.len();
         if !self.k1_valid {
             let (k0, _) = self.k.split_at_mut(1);
-            sys.rhs(self.t, &self.y, &mut k0[0]);
+            sys.rhs_reported(self.t, &self.y, &mut k0[0]);
             self.stats.rhs_evaluations += 1;
             self.k1_valid = true;
         }
@@ -205,7 +212,7 @@ impl Dopri5 {
             std::mem::swap(&mut self.ytmp, &mut self.ynew);
             {
                 let (ynew, k) = (&self.ynew, &mut self.k);
-                sys.rhs(t + h, ynew, &mut k[6]);
+                sys.rhs_reported(t + h, ynew, &mut k[6]);
             }
             self.stats.rhs_evaluations += 6;
             // error estimate

@@ -90,6 +90,7 @@ mod rhs;
 pub mod rosenbrock;
 pub mod settings;
 mod simulation;
+mod slice_kernel;
 mod stepper;
 pub mod study;
 mod summary;

@@ -8,6 +8,7 @@ use crate::error::DynError;
 use crate::land::{CageLandModel, TwoLevelLand};
 use crate::layout::Layout;
 use crate::parameters::ContactParameters;
+use crate::slice_kernel::SliceConstants;
 use rolldyn_contact::damping::SliceDamping;
 use rolldyn_geometry::{
     CageGuidance, CylindricalRollerBearing, EndFace, Profile, RibFace, RibSide, Ring,
@@ -36,12 +37,12 @@ impl RacewayTraction {
 /// Roller slices against one raceway (struct of arrays).
 #[derive(Debug, Clone)]
 pub(crate) struct RacewaySlices {
+    /// the per-slice constants below, padded for the vectorised slice kernel
+    pub lanes: SliceConstants,
     /// elastic coefficient k_s of `Q_s = k_s δⁿ` per slice, N/mⁿ
     pub k: Vec<f64>,
     /// exponent n
     pub n: f64,
-    /// damping ramp per slice (C_max share, δ*)
-    pub damping: Vec<SliceDamping>,
     /// reduced radius R' in the rolling direction, m (seed 000 (1.12))
     pub reduced_radius: f64,
     /// reduced modulus E' (seed 000 (1.13)), Pa
@@ -151,7 +152,6 @@ pub(crate) struct Model {
     pub it_r: f64,
     pub rw: f64,
     pub slice_x: Vec<f64>,
-    pub slice_len: Vec<f64>,
     pub slice_drop: Vec<f64>,
     /// largest |x| of a slice centre along the roller axis, m
     pub slice_reach: f64,
@@ -159,6 +159,8 @@ pub(crate) struct Model {
     pub min_slice_drop: f64,
     pub inner: RacewaySlices,
     pub outer: RacewaySlices,
+    /// (sin, cos) of the pocket angles 2πj/Z relative to the cage angle
+    pub pocket_sin_cos: Vec<(f64, f64)>,
     /// inner raceway radius R_i, m
     pub ri: f64,
     /// effective outer raceway radius R_i + D_w + G_r/2, m
@@ -261,10 +263,12 @@ impl Model {
                     .map(|i| pr.drop(roller.length * (i as f64 / 400.0 - 0.5) * 2.0))
                     .fold(0.0, f64::min)
             });
+            let lanes =
+                SliceConstants::new(&stack.position, &stack.drop, &stack.length, &k, &damping);
             Ok(RacewaySlices {
+                lanes,
                 k,
                 n: law.exponent(),
-                damping,
                 reduced_radius,
                 reduced_modulus,
                 roughness: [roller.roughness_ra, ring.roughness_ra],
@@ -395,12 +399,14 @@ impl Model {
             it_r: mp.transverse_inertia,
             rw,
             slice_x: stack.position.clone(),
-            slice_len: stack.length.clone(),
             slice_drop: stack.drop.clone(),
             slice_reach: stack.position.iter().fold(0.0, |a, x| a.max(x.abs())),
             min_slice_drop: stack.drop.iter().fold(0.0, |a, &d| a.min(d)),
             inner,
             outer,
+            pocket_sin_cos: (0..z)
+                .map(|j| (std::f64::consts::TAU * j as f64 / z as f64).sin_cos())
+                .collect(),
             ri,
             ro,
             clearance: bearing.clearance.radial,

@@ -8,6 +8,7 @@ use crate::ends::{BodyKin, EndContactRegime, EndForce, EndLubrication, RollerSta
 use crate::land::LandKinematics;
 use crate::layout::{CAGE_DOF, INNER_DOF, ROLLER_DOF};
 use crate::model::{Model, RacewaySlices};
+use crate::slice_kernel::{self, LANES, PairKinematics, SliceOutputs};
 use crate::vec3::{V3, add, axpy, cross, dot, norm, perp, power, scale, sub, unit_or};
 use rolldyn_contact::damping::SliceDamping;
 use rolldyn_lubrication::{BatchContact, ContactGeometry, ContactState, SliceBatch};
@@ -71,6 +72,16 @@ impl ContactTable {
     }
 }
 
+/// Whether an evaluation fills the per-roller contact tables of [`Diagnostics`] (sliding and
+/// rolling speeds, film, Λ, μ, friction power, worst slice). The forces, the divergence check
+/// and the per-roller normal forces are always computed; the tables are needed only at states
+/// that are reported (accepted steps, output samples), not at the integrator's inner stages.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Tables {
+    Fill,
+    Skip,
+}
+
 /// Which body pierced what (divergence diagnosis).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct Violation {
@@ -115,31 +126,71 @@ pub(crate) struct Diagnostics {
     slices: RacewayScratch,
 }
 
-/// Scratch of the raceway contacts of one evaluation: the loaded slices (pass 1 of [`rhs`]),
-/// their traction, evaluated in one batch per raceway, and the roller forces and moments
-/// collected before the traction is applied.
+/// Scratch of the raceway contacts of one evaluation: the slice kernel's results for the
+/// current roller–raceway pair and, per raceway, the loaded contacts (pass 1 of [`rhs`]) whose
+/// traction is evaluated in one batch, and the roller forces and moments collected before the
+/// traction is applied.
 #[derive(Debug, Clone)]
 struct RacewayScratch {
-    hits: Vec<SliceHit>,
-    inner: SliceBatch,
-    outer: SliceBatch,
+    /// per-slice results of the slice kernel for the current roller–raceway pair
+    kernel: SliceOutputs,
+    /// raceway drop under each slice (profiled raceways)
+    race_drop: Vec<f64>,
+    inner: LoadedContacts,
+    outer: LoadedContacts,
     force: Vec<V3>,
     moment: Vec<V3>,
+    /// per roller: sin θ, cos θ, axis and angular velocity (pass 1, reused by Newton–Euler)
+    frame: Vec<(f64, f64, V3, V3)>,
 }
 
-impl RacewayScratch {
-    fn new(z: usize, slices: usize) -> Self {
+/// The loaded roller–raceway contacts of one raceway: one block of slots (the loaded slices
+/// of the roller) per contact in the traction batch, with the contact point and tangential
+/// velocity of every slot for the friction forces.
+#[derive(Debug, Clone)]
+struct LoadedContacts {
+    batch: SliceBatch,
+    /// roller, batch contact and batch slots of each block
+    blocks: Vec<(usize, BatchContact, std::ops::Range<usize>)>,
+    r_cp: [Vec<f64>; 3],
+    vt: [Vec<f64>; 3],
+}
+
+impl LoadedContacts {
+    fn new(slots: usize) -> Self {
+        let v = || Vec::with_capacity(slots);
         Self {
-            hits: Vec::with_capacity(2 * z * slices),
-            inner: SliceBatch::with_capacity(z * slices),
-            outer: SliceBatch::with_capacity(z * slices),
-            force: vec![[0.0; 3]; z],
-            moment: vec![[0.0; 3]; z],
+            batch: SliceBatch::with_capacity(slots),
+            blocks: Vec::with_capacity(slots),
+            r_cp: [v(), v(), v()],
+            vt: [v(), v(), v()],
         }
     }
 
     fn clear(&mut self) {
-        self.hits.clear();
+        self.batch.clear();
+        self.blocks.clear();
+        for v in self.r_cp.iter_mut().chain(self.vt.iter_mut()) {
+            v.clear();
+        }
+    }
+}
+
+impl RacewayScratch {
+    fn new(z: usize, slices: usize) -> Self {
+        let slots = slices.div_ceil(LANES) * LANES;
+        Self {
+            kernel: SliceOutputs::new(slots),
+            race_drop: vec![0.0; slots],
+            inner: LoadedContacts::new(z * slots),
+            outer: LoadedContacts::new(z * slots),
+            force: vec![[0.0; 3]; z],
+            moment: vec![[0.0; 3]; z],
+            frame: vec![(0.0, 1.0, [0.0, 0.0, 1.0], [0.0; 3]); z],
+        }
+    }
+
+    fn clear(&mut self) {
         self.inner.clear();
         self.outer.clear();
     }
@@ -218,31 +269,10 @@ fn note(diag: &mut Diagnostics, what: &'static str, index: usize, penetration: f
     }
 }
 
-/// A loaded raceway slice (scratch of [`rhs`]): pass 1 applies its normal force, pass 2 its
-/// traction.
-#[derive(Debug, Clone, Copy)]
-struct SliceHit {
-    roller: usize,
-    inner: bool,
-    /// slice number along the roller while pass 1 runs, then the index in the raceway's
-    /// traction batch
-    batch_index: usize,
-    contact: Option<BatchContact>,
-    /// normal force, N
-    q: f64,
-    /// contact point relative to the roller centre, m
-    r_cp: V3,
-    /// tangential relative velocity (roller − ring), m/s
-    vt: V3,
-    /// its magnitude, m/s
-    vs: f64,
-    /// entrainment speed in the roller's orbital frame, m/s
-    u: f64,
-}
-
-/// Slices of roller `j` on one raceway, pass 1 (SPEC §2.1–2.2): the slice law and damping give
-/// the loaded slices. Adds their normal forces to the roller (`f`, `m`) and returns the normal
-/// force on the ring; records each loaded slice in `scratch` for the traction pass.
+/// Slices of roller `j` on one raceway, pass 1 (SPEC §2.1–2.2): the slice kernel
+/// ([`slice_kernel::evaluate`]) gives the approach, slice law, damping and normal force of every
+/// slice. Adds the normal forces to the roller (`f`, `m`) and returns the normal force on the
+/// ring; records each loaded slice in `scratch` for the traction pass.
 ///
 /// The EHL film is prepared once for the whole roller–raceway contact (its total load over the
 /// loaded length and the load-weighted entrainment speed — the film of a line contact is set
@@ -251,10 +281,9 @@ struct SliceHit {
 /// [`apply_traction`], for all rollers in one batch.
 #[allow(clippy::too_many_arguments)]
 #[inline]
-fn raceway_slices(
+fn raceway_slices<const INNER: bool>(
     model: &Model,
     rs: &RacewaySlices,
-    inner: bool,
     j: usize,
     rk: &RollerKin,
     ring: &RingKin,
@@ -278,7 +307,7 @@ fn raceway_slices(
     let (qa, qb, qc) = (dot(dp_c, dp_c), dot(dp_c, a_perp), dot(a_perp, a_perp));
     let rho_c = qa.sqrt();
     let reach = model.slice_reach * qc.sqrt();
-    let bound = if inner {
+    let bound = if INNER {
         ring.raceway_radius + model.rw - (rho_c - reach)
     } else {
         rho_c + reach + model.rw - ring.raceway_radius
@@ -287,29 +316,46 @@ fn raceway_slices(
     if bound <= 0.0 {
         return f_ring;
     }
-    let first = scratch.hits.len();
+    let race_drop = match &rs.profile {
+        Some(pr) => {
+            for (d, &x) in scratch.race_drop.iter_mut().zip(&rs.lanes.x) {
+                *d = pr.drop(zeta_c + x * a_ax);
+            }
+            &scratch.race_drop
+        }
+        None => &rs.lanes.zero,
+    };
+    let pair = PairKinematics {
+        c: rk.c,
+        a: rk.a,
+        v: rk.v,
+        w: rk.w,
+        orbit: rk.orbit,
+        ring_o: ring.o,
+        ring_v: ring.v,
+        ring_axis: ring.axis,
+        ring_spin: ring.spin,
+        raceway_radius: ring.raceway_radius,
+        rw: model.rw,
+        dp_c,
+        a_perp,
+        qa,
+        qb,
+        qc,
+        exponent: rs.n,
+    };
+    let out = &mut scratch.kernel;
+    slice_kernel::evaluate::<INNER>(&rs.lanes, &pair, race_drop, out);
     let mut load = 0.0;
     let mut length = 0.0;
     let mut entrainment = 0.0;
+    // the loaded slices are moved to the front of the kernel's arrays (slot order kept)
+    let mut loaded_slices = 0;
     for s in 0..model.slice_x.len() {
-        let x = model.slice_x[s];
-        let rho = (qa + x * (2.0 * qb + x * qc)).max(0.0).sqrt();
-        let race_drop = match &rs.profile {
-            Some(pr) => pr.drop(zeta_c + x * a_ax),
-            None => 0.0,
-        };
-        let delta = if inner {
-            ring.raceway_radius + model.rw - rho
-        } else {
-            rho + model.rw - ring.raceway_radius
-        } - model.slice_drop[s]
-            - race_drop;
-        if delta <= 0.0 || rho == 0.0 {
-            continue;
-        }
+        let delta = out.delta[s];
         if delta > limit && violation.is_none() {
             *violation = Some(Violation {
-                what: if inner {
+                what: if INNER {
                     "roller ↔ inner raceway"
                 } else {
                     "roller ↔ outer raceway"
@@ -318,51 +364,25 @@ fn raceway_slices(
                 penetration: delta,
             });
         }
-        let p = axpy(rk.c, x, rk.a);
-        // outward unit normal of the ring axis through the slice centre
-        let n_out = scale(axpy(dp_c, x, a_perp), 1.0 / rho);
-        // unit normal pointing from the ring into the roller
-        let n = if inner { n_out } else { scale(n_out, -1.0) };
-        let cp = axpy(p, -model.rw, n);
-        let r_cp = sub(cp, rk.c);
-        let v_roll = add(rk.v, cross(rk.w, r_cp));
-        let v_ring = add(ring.v, scale(cross(ring.axis, sub(cp, ring.o)), ring.spin));
-        let vrel = sub(v_roll, v_ring);
-        let delta_dot = -dot(vrel, n);
-        let elastic = rs.k[s] * power(delta, rs.n);
-        let q = rs.damping[s].normal_force(elastic, delta, delta_dot);
+        let q = out.q[s];
         if q <= 0.0 {
             continue;
         }
-        let normal = scale(n, q);
+        let normal = out.force(s);
         *f = add(*f, normal);
-        *m = add(*m, cross(r_cp, normal));
+        *m = add(*m, out.moment(s));
         f_ring = sub(f_ring, normal);
-        let vt = perp(vrel, n);
-        // rolling direction and entrainment speed in the roller's orbital frame (SPEC §3.5)
-        let t_dir = cross(ring.axis, n_out);
-        let w_frame = [-rk.orbit * cp[1], rk.orbit * cp[0], 0.0];
-        let u = 0.5 * (dot(v_roll, t_dir) + dot(v_ring, t_dir)) - dot(w_frame, t_dir);
         load += q;
-        length += model.slice_len[s];
-        entrainment += q * u;
-        table.force[j] += q;
-        scratch.hits.push(SliceHit {
-            roller: j,
-            inner,
-            batch_index: s,
-            contact: None,
-            q,
-            r_cp,
-            vt,
-            vs: norm(vt),
-            u,
-        });
+        length += rs.lanes.len[s];
+        entrainment += q * out.u[s];
+        out.compact(s, loaded_slices, rs.lanes.len[s]);
+        loaded_slices += 1;
     }
-    if scratch.hits.len() == first {
+    if load <= 0.0 {
         return f_ring;
     }
-    let (tmodel, batch) = if inner {
+    table.force[j] = load;
+    let (tmodel, loaded) = if INNER {
         (&model.traction.inner, &mut scratch.inner)
     } else {
         (&model.traction.outer, &mut scratch.outer)
@@ -378,56 +398,81 @@ fn raceway_slices(
         roughness_ra_m: rs.roughness,
         film_thickness_m: None,
     };
-    let contact = batch.add_contact(tmodel, &whole);
-    for h in &mut scratch.hits[first..] {
-        let slice_len = model.slice_len[h.batch_index];
-        h.contact = Some(contact);
-        h.batch_index = batch.push(contact, h.q, slice_len, h.u, h.vs);
+    let contact = loaded.batch.add_contact(tmodel, &whole);
+    let n = loaded_slices;
+    let first = loaded.batch.push_block(
+        contact,
+        &out.q[..n],
+        &out.len[..n],
+        &out.u[..n],
+        &out.vs[..n],
+    );
+    loaded.blocks.push((j, contact, first..first + n));
+    for (to, from) in loaded.r_cp.iter_mut().zip(&out.r_cp) {
+        to.extend_from_slice(&from[..n]);
+    }
+    for (to, from) in loaded.vt.iter_mut().zip(&out.vt) {
+        to.extend_from_slice(&from[..n]);
     }
     f_ring
 }
 
 /// Pass 2 of the raceway contacts: evaluates the traction of every loaded slice (one batch per
 /// raceway, [`SliceBatch::evaluate`]) and adds the friction forces to the rollers, the inner
-/// ring (`f_inner`) and the per-roller contact tables.
-fn apply_traction(model: &Model, diag: &mut Diagnostics, f_inner: &mut V3) {
+/// ring (`f_inner`) and, with [`Tables::Fill`], the per-roller contact tables.
+fn apply_traction(model: &Model, diag: &mut Diagnostics, f_inner: &mut V3, tables: Tables) {
     let sc = &mut diag.slices;
-    sc.inner.evaluate(&model.traction.inner);
-    sc.outer.evaluate(&model.traction.outer);
-    for h in &sc.hits {
-        let (batch, table) = if h.inner {
-            (&sc.inner, &mut diag.inner)
-        } else {
-            (&sc.outer, &mut diag.outer)
-        };
-        let mu = batch.coefficient(h.batch_index);
-        let j = h.roller;
-        if h.vs > 0.0 {
-            let friction = scale(h.vt, -mu * h.q / h.vs);
-            sc.force[j] = add(sc.force[j], friction);
-            sc.moment[j] = add(sc.moment[j], cross(h.r_cp, friction));
-            if h.inner {
-                *f_inner = sub(*f_inner, friction);
+    for (loaded, table, tmodel, inner) in [
+        (&mut sc.inner, &mut diag.inner, &model.traction.inner, true),
+        (&mut sc.outer, &mut diag.outer, &model.traction.outer, false),
+    ] {
+        let batch = &mut loaded.batch;
+        batch.evaluate(tmodel);
+        for (j, contact, slots) in &loaded.blocks {
+            let j = *j;
+            let (_, film_minimum, lambda) = batch.film(*contact);
+            for i in slots.clone() {
+                let q = batch.normal_force(i);
+                let mu = batch.coefficient(i);
+                let vs = batch.sliding_speed(i);
+                if vs > 0.0 {
+                    let vt = [loaded.vt[0][i], loaded.vt[1][i], loaded.vt[2][i]];
+                    let r_cp = [loaded.r_cp[0][i], loaded.r_cp[1][i], loaded.r_cp[2][i]];
+                    let friction = scale(vt, -mu * q / vs);
+                    sc.force[j] = add(sc.force[j], friction);
+                    sc.moment[j] = add(sc.moment[j], cross(r_cp, friction));
+                    if inner {
+                        *f_inner = sub(*f_inner, friction);
+                    }
+                }
+                if tables == Tables::Skip {
+                    continue;
+                }
+                table.sliding[j] += q * vs;
+                table.rolling[j] += q * batch.rolling_speed(i).abs();
+                table.film[j] += q * film_minimum;
+                table.lambda[j] += q * lambda.min(1e3);
+                table.mu[j] += q * mu;
+                table.power[j] += mu.abs() * q * vs;
+                if q > table.worst_q[j] {
+                    table.worst_q[j] = q;
+                    table.worst[j] = Some(batch.state(i));
+                }
             }
-        }
-        let (_, film_minimum, lambda) = h
-            .contact
-            .map_or((f64::NAN, f64::NAN, f64::NAN), |c| batch.film(c));
-        table.sliding[j] += h.q * h.vs;
-        table.rolling[j] += h.q * h.u.abs();
-        table.film[j] += h.q * film_minimum;
-        table.lambda[j] += h.q * lambda.min(1e3);
-        table.mu[j] += h.q * mu;
-        table.power[j] += mu.abs() * h.q * h.vs;
-        if h.q > table.worst_q[j] {
-            table.worst_q[j] = h.q;
-            table.worst[j] = Some(batch.state(h.batch_index));
         }
     }
 }
 
-/// Evaluates `dy = f(t, y)` and fills `diag`.
-pub(crate) fn rhs(model: &Model, t: f64, y: &[f64], dy: &mut [f64], diag: &mut Diagnostics) {
+/// Evaluates `dy = f(t, y)` and fills `diag` (its raceway contact tables only with
+/// [`Tables::Fill`]).
+pub(crate) fn rhs(
+    model: &Model,
+    t: f64,
+    y: &[f64],
+    dy: &mut [f64],
+    diag: &mut Diagnostics,
+    tables: Tables,
+) {
     let lay = model.layout;
     let cond = &model.conditions;
     let g = cond.gravity_m_s2;
@@ -474,7 +519,7 @@ pub(crate) fn rhs(model: &Model, t: f64, y: &[f64], dy: &mut [f64], diag: &mut D
     let bar = &model.params.roller_cage;
     let bar_share = 0.5; // K_p and C_h split over the two evaluation points along the roller
     let bar_damping = SliceDamping::new(bar_share * bar.c_h, bar.d);
-    let pitch = std::f64::consts::TAU / model.z as f64;
+    let (sin_phi, cos_phi) = phi_c.sin_cos();
     diag.slices.clear();
 
     for j in 0..model.z {
@@ -482,11 +527,11 @@ pub(crate) fn rhs(model: &Model, t: f64, y: &[f64], dy: &mut [f64], diag: &mut D
         let (th, r, zz) = (y[b], y[b + 1], y[b + 2]);
         let a = unit_or(rd(y, b + 3), [0.0, 0.0, 1.0]);
         let (thd, rdot, zd) = (y[b + 6], y[b + 7], y[b + 8]);
-        let l = rd(y, b + 9);
+        let w = axisymmetric_omega(rd(y, b + 9), a, model.ia_r, model.it_r);
         let (s, c) = th.sin_cos();
+        diag.slices.frame[j] = (s, c, a, w);
         let centre = [r * c, r * s, zz];
         let v = [rdot * c - r * thd * s, rdot * s + r * thd * c, zd];
-        let w = axisymmetric_omega(l, a, model.ia_r, model.it_r);
         let rk = RollerKin {
             c: centre,
             a,
@@ -496,10 +541,9 @@ pub(crate) fn rhs(model: &Model, t: f64, y: &[f64], dy: &mut [f64], diag: &mut D
         };
         let mut f = scale(g, model.m_r);
         let mut m = [0.0; 3];
-        let fr = raceway_slices(
+        let fr = raceway_slices::<true>(
             model,
             &model.inner,
-            true,
             j,
             &rk,
             &inner,
@@ -511,10 +555,9 @@ pub(crate) fn rhs(model: &Model, t: f64, y: &[f64], dy: &mut [f64], diag: &mut D
             &mut diag.violation,
         );
         f_inner = add(f_inner, fr);
-        raceway_slices(
+        raceway_slices::<false>(
             model,
             &model.outer,
-            false,
             j,
             &rk,
             &outer,
@@ -528,8 +571,10 @@ pub(crate) fn rhs(model: &Model, t: f64, y: &[f64], dy: &mut [f64], diag: &mut D
 
         // roller ↔ cage bars: edge lines of pocket j at the bar contact radius, both pocket
         // sides, evaluated at both ends of the roller (SPEC §1.5 "bone-shaped" scar)
-        let php = phi_c + pitch * j as f64;
-        let (sp, cpp) = php.sin_cos();
+        // pocket centre angle φ_c + 2πj/Z by the angle-sum formulas
+        let (sin_pitch, cos_pitch) = model.pocket_sin_cos[j];
+        let sp = sin_phi * cos_pitch + cos_phi * sin_pitch;
+        let cpp = cos_phi * cos_pitch - sin_phi * sin_pitch;
         let ep = unit_or(perp([cpp, sp, 0.0], ac), [cpp, sp, 0.0]);
         let tp = cross(ac, ep);
         let mut bar_q = 0.0;
@@ -705,17 +750,15 @@ pub(crate) fn rhs(model: &Model, t: f64, y: &[f64], dy: &mut [f64], diag: &mut D
     // raceway traction of all rollers, then Newton–Euler in cylindrical coordinates (seed 000
     // (2.1)) and L̇ = M ((2.2) in the inertial frame: the gyroscopic term is contained in
     // ω(L, a))
-    apply_traction(model, diag, &mut f_inner);
+    apply_traction(model, diag, &mut f_inner, tables);
     let mr = model.m_r;
     for j in 0..model.z {
         diag.inner.finish(j);
         diag.outer.finish(j);
         let b = lay.roller(j);
-        let (th, r) = (y[b], y[b + 1]);
-        let a = unit_or(rd(y, b + 3), [0.0, 0.0, 1.0]);
+        let r = y[b + 1];
         let (thd, rdot, zd) = (y[b + 6], y[b + 7], y[b + 8]);
-        let w = axisymmetric_omega(rd(y, b + 9), a, model.ia_r, model.it_r);
-        let (s, c) = th.sin_cos();
+        let (s, c, a, w) = diag.slices.frame[j];
         let (f, m) = (diag.slices.force[j], diag.slices.moment[j]);
         let f_radial = dot(f, [c, s, 0.0]);
         let f_tangential = dot(f, [-s, c, 0.0]);

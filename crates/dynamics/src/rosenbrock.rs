@@ -437,7 +437,7 @@ impl RosenbrockW {
     ) -> Result<(), StepError> {
         let n = self.y.len();
         if !self.f0_valid {
-            sys.rhs(self.t, &self.y, &mut self.f0);
+            sys.rhs_reported(self.t, &self.y, &mut self.f0);
             self.stats.rhs_evaluations += 1;
             self.f0_valid = true;
         }
@@ -505,7 +505,7 @@ impl RosenbrockW {
                 }
             }
             if nonfinite_at.is_none() && err <= 1.0 {
-                sys.rhs(t + h, &self.ynew, &mut self.ftmp);
+                sys.rhs_reported(t + h, &self.ynew, &mut self.ftmp);
                 self.stats.rhs_evaluations += 1;
                 nonfinite_at = self.ftmp.iter().position(|v| !v.is_finite());
             }

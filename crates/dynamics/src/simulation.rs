@@ -16,7 +16,7 @@ use crate::output::{
     SnapshotBuffers,
 };
 use crate::parameters::ContactParameters;
-use crate::rhs::{Diagnostics, axisymmetric_omega, rhs};
+use crate::rhs::{Diagnostics, Tables, axisymmetric_omega, rhs};
 use crate::rosenbrock::{JacobianBlock, RosenbrockW};
 use crate::settings::DynamicsSettings;
 use crate::settings::{IntegratorMethod, VelocityErrorScale};
@@ -36,7 +36,12 @@ struct Sys<'a> {
 impl OdeSystem for Sys<'_> {
     #[inline]
     fn rhs(&mut self, t: f64, y: &[f64], dy: &mut [f64]) {
-        rhs(self.model, t, y, dy, self.diag);
+        rhs(self.model, t, y, dy, self.diag, Tables::Skip);
+    }
+
+    #[inline]
+    fn rhs_reported(&mut self, t: f64, y: &[f64], dy: &mut [f64]) {
+        rhs(self.model, t, y, dy, self.diag, Tables::Fill);
     }
 }
 
@@ -529,6 +534,7 @@ impl Simulation {
                 &self.scratch_y,
                 &mut self.scratch_dy,
                 &mut self.diag,
+                Tables::Fill,
             );
             self.write_sample(ts, sink);
             self.tr.next_sample += 1;
@@ -607,7 +613,14 @@ impl Simulation {
     /// diagnostics; `dy.len()` must equal the state length).
     pub fn evaluate_derivative(&mut self, dy: &mut [f64]) {
         if dy.len() == self.ig.y().len() {
-            rhs(&self.model, self.ig.t(), self.ig.y(), dy, &mut self.diag);
+            rhs(
+                &self.model,
+                self.ig.t(),
+                self.ig.y(),
+                dy,
+                &mut self.diag,
+                Tables::Fill,
+            );
         }
     }
 
@@ -621,6 +634,7 @@ impl Simulation {
             &self.scratch_y,
             &mut self.scratch_dy,
             &mut self.diag,
+            Tables::Fill,
         );
         self.write_sample(t, sink);
     }

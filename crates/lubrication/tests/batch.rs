@@ -122,3 +122,37 @@ fn batch_equals_single_slice_evaluation() {
         }
     }
 }
+
+/// `push_block` stores the same slices as one `push` per slice: same states and coefficients.
+#[test]
+fn block_equals_slice_by_slice_push() {
+    for (name, model) in models() {
+        let (mut by_slice, mut by_block) = (SliceBatch::default(), SliceBatch::default());
+        let w = whole(300.0, 20.0, 90.0);
+        let q = [30.0, 45.0, 0.0, 60.0, 12.0];
+        let len = [0.8e-3, 0.8e-3, 0.8e-3, 0.8e-3, 0.4e-3];
+        let u = [20.0, 20.1, 20.2, 19.9, 20.0];
+        let v = [0.01, -0.02, 0.0, 0.3, 1e-4];
+        let a = by_slice.add_contact(&model, &w);
+        for s in 0..q.len() {
+            by_slice.push(a, q[s], len[s], u[s], v[s]);
+        }
+        let b = by_block.add_contact(&model, &w);
+        assert_eq!(by_block.push_block(b, &q, &len, &u, &v), 0, "{name}");
+        by_slice.evaluate(&model);
+        by_block.evaluate(&model);
+        assert_eq!(by_block.len(), q.len());
+        for s in 0..q.len() {
+            assert_eq!(by_block.state(s), by_slice.state(s), "{name}, slice {s}");
+            assert_eq!(
+                by_block.coefficient(s).to_bits(),
+                by_slice.coefficient(s).to_bits(),
+                "{name}, slice {s}"
+            );
+            assert_eq!(by_block.normal_force(s), q[s]);
+            assert_eq!(by_block.rolling_speed(s), u[s]);
+            assert_eq!(by_block.sliding_speed(s), v[s]);
+        }
+        assert_eq!(by_block.coefficient(2), 0.0, "{name}: unloaded slice");
+    }
+}

@@ -112,6 +112,45 @@ impl SliceBatch {
         self.len() - 1
     }
 
+    /// Adds a block of slices of `contact`, one per element of the arrays (normal force N,
+    /// slice length m, rolling and sliding speed m/s, as in [`SliceBatch::push`]). Slots with
+    /// `normal_force_n ≤ 0` (unloaded slices, padding) get a zero coefficient. Returns the index
+    /// of the first.
+    pub fn push_block(
+        &mut self,
+        contact: BatchContact,
+        normal_force_n: &[f64],
+        length_m: &[f64],
+        rolling_speed_m_s: &[f64],
+        sliding_speed_m_s: &[f64],
+    ) -> usize {
+        let first = self.len();
+        let n = normal_force_n.len();
+        self.contact_of.resize(first + n, contact.0);
+        self.normal_force_n.extend_from_slice(normal_force_n);
+        self.length_m.extend_from_slice(&length_m[..n]);
+        self.rolling_speed_m_s
+            .extend_from_slice(&rolling_speed_m_s[..n]);
+        self.sliding_speed_m_s
+            .extend_from_slice(&sliding_speed_m_s[..n]);
+        first
+    }
+
+    /// Normal force of slice `i`, N.
+    pub fn normal_force(&self, i: usize) -> f64 {
+        self.normal_force_n[i]
+    }
+
+    /// Rolling speed of slice `i`, m/s.
+    pub fn rolling_speed(&self, i: usize) -> f64 {
+        self.rolling_speed_m_s[i]
+    }
+
+    /// Sliding speed of slice `i`, m/s.
+    pub fn sliding_speed(&self, i: usize) -> f64 {
+        self.sliding_speed_m_s[i]
+    }
+
     /// Number of slices.
     pub fn len(&self) -> usize {
         self.contact_of.len()
