@@ -210,52 +210,33 @@ pub(crate) fn evaluate<const INNER: bool>(
     call!(slots);
 }
 
-/// [`slots`] compiled for AVX2.
-///
-/// # Safety
-/// Only call on a CPU that supports AVX2.
-#[allow(clippy::too_many_arguments)]
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-unsafe fn slots_avx2<const INNER: bool>(
-    k: &PairKinematics,
-    x: &[f64],
-    drop: &[f64],
-    stiff: &[f64],
-    c_max: &[f64],
-    delta_star: &[f64],
-    race_drop: &[f64],
-    delta_out: &mut [f64],
-    q_out: &mut [f64],
-    fx: &mut [f64],
-    fy: &mut [f64],
-    fz: &mut [f64],
-    mx: &mut [f64],
-    my: &mut [f64],
-    mz: &mut [f64],
-    rx: &mut [f64],
-    ry: &mut [f64],
-    rz: &mut [f64],
-    tx: &mut [f64],
-    ty: &mut [f64],
-    tz: &mut [f64],
-    vs_out: &mut [f64],
-    u_out: &mut [f64],
-) {
-    slots::<INNER>(
-        k, x, drop, stiff, c_max, delta_star, race_drop, delta_out, q_out, fx, fy, fz, mx, my, mz,
-        rx, ry, rz, tx, ty, tz, vs_out, u_out,
-    );
+/// Declares the slot loop `slots` with the parameter list given once, and its AVX2 copy
+/// `slots_avx2` with the same list.
+macro_rules! slot_loop {
+    ($($arg:ident: $ty:ty),* $(,)?; $body:block) => {
+        /// [`slots`] compiled for AVX2.
+        ///
+        /// # Safety
+        /// Only call on a CPU that supports AVX2.
+        #[allow(clippy::too_many_arguments)]
+        #[cfg(target_arch = "x86_64")]
+        #[target_feature(enable = "avx2")]
+        unsafe fn slots_avx2<const INNER: bool>($($arg: $ty),*) {
+            slots::<INNER>($($arg),*);
+        }
+
+        /// The loop over the slots. Per slot (SPEC §2.1–2.2): slice centre `p = c + x a`, distance from
+        /// the ring axis `ρ`, approach `δ = R_i + R_w − ρ − z_s − z_race` (inner) or
+        /// `ρ + R_w − R_o − z_s − z_race` (outer), `Q = max(0, k_s δⁿ + STEP(δ, 0, 0, δ*, C_max) δ̇)` for
+        /// `δ > 0` (seed 000 (2.5)–(2.8)), contact point `p − R_w n`, relative velocity of roller and
+        /// ring there, its tangential part and the orbital-frame entrainment speed (SPEC §3.5).
+        #[allow(clippy::too_many_arguments)]
+        #[inline(always)]
+        fn slots<const INNER: bool>($($arg: $ty),*) $body
+    };
 }
 
-/// The loop over the slots. Per slot (SPEC §2.1–2.2): slice centre `p = c + x a`, distance from
-/// the ring axis `ρ`, approach `δ = R_i + R_w − ρ − z_s − z_race` (inner) or
-/// `ρ + R_w − R_o − z_s − z_race` (outer), `Q = max(0, k_s δⁿ + STEP(δ, 0, 0, δ*, C_max) δ̇)` for
-/// `δ > 0` (seed 000 (2.5)–(2.8)), contact point `p − R_w n`, relative velocity of roller and
-/// ring there, its tangential part and the orbital-frame entrainment speed (SPEC §3.5).
-#[allow(clippy::too_many_arguments)]
-#[inline(always)]
-fn slots<const INNER: bool>(
+slot_loop! {
     k: &PairKinematics,
     x: &[f64],
     drop: &[f64],
@@ -278,8 +259,8 @@ fn slots<const INNER: bool>(
     ty: &mut [f64],
     tz: &mut [f64],
     vs_out: &mut [f64],
-    u_out: &mut [f64],
-) {
+    u_out: &mut [f64];
+{
     // equal lengths, known to the compiler: no bounds checks in the loop
     let n_slots = x.len();
     let (drop, stiff, c_max, delta_star, race_drop) = (
@@ -361,6 +342,7 @@ fn slots<const INNER: bool>(
         vs_out[s] = dot(vt, vt).sqrt();
         u_out[s] = u;
     }
+}
 }
 
 #[cfg(test)]
