@@ -157,11 +157,11 @@ struct LoadedContacts {
 }
 
 impl LoadedContacts {
-    fn new(slots: usize) -> Self {
+    fn new(rollers: usize, slots: usize) -> Self {
         let v = || Vec::with_capacity(slots);
         Self {
             batch: SliceBatch::with_capacity(slots),
-            blocks: Vec::with_capacity(slots),
+            blocks: Vec::with_capacity(rollers),
             r_cp: [v(), v(), v()],
             vt: [v(), v(), v()],
         }
@@ -182,8 +182,8 @@ impl RacewayScratch {
         Self {
             kernel: SliceOutputs::new(slots),
             race_drop: vec![0.0; slots],
-            inner: LoadedContacts::new(z * slots),
-            outer: LoadedContacts::new(z * slots),
+            inner: LoadedContacts::new(z, z * slots),
+            outer: LoadedContacts::new(z, z * slots),
             force: vec![[0.0; 3]; z],
             moment: vec![[0.0; 3]; z],
             frame: vec![(0.0, 1.0, [0.0, 0.0, 1.0], [0.0; 3]); z],

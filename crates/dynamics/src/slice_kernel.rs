@@ -166,6 +166,22 @@ pub(crate) fn evaluate<const INNER: bool>(
     race_drop: &[f64],
     out: &mut SliceOutputs,
 ) {
+    #[cfg(target_arch = "x86_64")]
+    let vector = std::arch::is_x86_feature_detected!("avx2");
+    #[cfg(not(target_arch = "x86_64"))]
+    let vector = false;
+    evaluate_with::<INNER>(sc, k, race_drop, out, vector);
+}
+
+/// [`evaluate`] with the loop chosen by the caller: the AVX2 copy when `vector` (only on CPUs
+/// that support AVX2), else the portable loop.
+fn evaluate_with<const INNER: bool>(
+    sc: &SliceConstants,
+    k: &PairKinematics,
+    race_drop: &[f64],
+    out: &mut SliceOutputs,
+    vector: bool,
+) {
     let [fx, fy, fz] = &mut out.force;
     let [mx, my, mz] = &mut out.moment;
     let [rx, ry, rz] = &mut out.r_cp;
@@ -202,11 +218,13 @@ pub(crate) fn evaluate<const INNER: bool>(
         };
     }
     #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx2") {
-        // SAFETY: the CPU supports AVX2 (checked just above).
+    if vector {
+        // SAFETY: `vector` is set only on CPUs with AVX2 ([`evaluate`], the test below).
         unsafe { call!(slots_avx2) };
         return;
     }
+    #[cfg(not(target_arch = "x86_64"))]
+    let _ = vector;
     call!(slots);
 }
 
@@ -468,36 +486,7 @@ mod tests {
         let mut vector = SliceOutputs::new(sc.x.len());
         evaluate::<true>(&sc, &k, &sc.zero, &mut vector);
         let mut portable = SliceOutputs::new(sc.x.len());
-        let o = &mut portable;
-        let [fx, fy, fz] = &mut o.force;
-        let [mx, my, mz] = &mut o.moment;
-        let [rx, ry, rz] = &mut o.r_cp;
-        let [tx, ty, tz] = &mut o.vt;
-        slots::<true>(
-            &k,
-            &sc.x,
-            &sc.drop,
-            &sc.k,
-            &sc.c_max,
-            &sc.delta_star,
-            &sc.zero,
-            &mut o.delta,
-            &mut o.q,
-            fx,
-            fy,
-            fz,
-            mx,
-            my,
-            mz,
-            rx,
-            ry,
-            rz,
-            tx,
-            ty,
-            tz,
-            &mut o.vs,
-            &mut o.u,
-        );
+        evaluate_with::<true>(&sc, &k, &sc.zero, &mut portable, false);
         let bits = |o: &SliceOutputs| {
             let mut all = vec![&o.delta, &o.q, &o.vs, &o.u];
             all.extend(o.force.iter().chain(&o.moment).chain(&o.r_cp).chain(&o.vt));

@@ -50,8 +50,8 @@ pub(crate) fn perp(a: V3, u: V3) -> V3 {
 
 /// `x^n` for `x > 0` as `exp(n ln x)`: ≈ 40 % cheaper than `powf` in the contact loops (11 vs
 /// 19 ns measured), relative error ≲ |n ln x|·ε ≈ 2·10⁻¹⁵ at contact approaches. (The branch-free
-/// `rolldyn_numerics::fastmath` versions were measured too: slower for single values, and no
-/// faster vectorised over a roller's ten slices.)
+/// `rolldyn_numerics::fastmath` versions are slower for single values; the raceway slices use
+/// them inside the vectorised slice kernel, `crate::slice_kernel`.)
 #[inline]
 pub(crate) fn power(x: f64, n: f64) -> f64 {
     (n * x.ln()).exp()
