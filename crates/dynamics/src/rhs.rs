@@ -43,9 +43,13 @@ impl ContactTable {
             worst_q: vec![0.0; z],
         }
     }
+    /// Zeroes roller `j`'s normal force and, with [`Tables::Fill`], the rest of its row.
     #[inline]
-    fn reset(&mut self, j: usize) {
+    fn reset(&mut self, j: usize, tables: Tables) {
         self.force[j] = 0.0;
+        if tables == Tables::Skip {
+            return;
+        }
         self.sliding[j] = 0.0;
         self.rolling[j] = 0.0;
         self.film[j] = 0.0;
@@ -293,9 +297,10 @@ fn raceway_slices<const INNER: bool>(
     scratch: &mut RacewayScratch,
     limit: f64,
     violation: &mut Option<Violation>,
+    tables: Tables,
 ) -> V3 {
     let mut f_ring = [0.0; 3];
-    table.reset(j);
+    table.reset(j, tables);
     // Slice centres p = c + x a: their offset from the ring axis is dp(x) = dp_c + x a⊥, so
     // ρ(x)² = A + 2Bx + Cx². The distance from the axis is 1-Lipschitz, which bounds every
     // slice's approach from the centre's: no slice can touch when the bound is ≤ 0.
@@ -430,24 +435,32 @@ fn apply_traction(model: &Model, diag: &mut Diagnostics, f_inner: &mut V3, table
         batch.evaluate(tmodel);
         for (j, contact, slots) in &loaded.blocks {
             let j = *j;
+            // the block's friction force and moment are summed in registers, then applied once
+            let (mut force, mut moment) = ([0.0; 3], [0.0; 3]);
+            for i in slots.clone() {
+                let vs = batch.sliding_speed(i);
+                if vs > 0.0 {
+                    let k = -batch.coefficient(i) * batch.normal_force(i) / vs;
+                    let vt = [loaded.vt[0][i], loaded.vt[1][i], loaded.vt[2][i]];
+                    let r_cp = [loaded.r_cp[0][i], loaded.r_cp[1][i], loaded.r_cp[2][i]];
+                    let friction = scale(vt, k);
+                    force = add(force, friction);
+                    moment = add(moment, cross(r_cp, friction));
+                }
+            }
+            sc.force[j] = add(sc.force[j], force);
+            sc.moment[j] = add(sc.moment[j], moment);
+            if inner {
+                *f_inner = sub(*f_inner, force);
+            }
+            if tables == Tables::Skip {
+                continue;
+            }
             let (_, film_minimum, lambda) = batch.film(*contact);
             for i in slots.clone() {
                 let q = batch.normal_force(i);
                 let mu = batch.coefficient(i);
                 let vs = batch.sliding_speed(i);
-                if vs > 0.0 {
-                    let vt = [loaded.vt[0][i], loaded.vt[1][i], loaded.vt[2][i]];
-                    let r_cp = [loaded.r_cp[0][i], loaded.r_cp[1][i], loaded.r_cp[2][i]];
-                    let friction = scale(vt, -mu * q / vs);
-                    sc.force[j] = add(sc.force[j], friction);
-                    sc.moment[j] = add(sc.moment[j], cross(r_cp, friction));
-                    if inner {
-                        *f_inner = sub(*f_inner, friction);
-                    }
-                }
-                if tables == Tables::Skip {
-                    continue;
-                }
                 table.sliding[j] += q * vs;
                 table.rolling[j] += q * batch.rolling_speed(i).abs();
                 table.film[j] += q * film_minimum;
@@ -553,6 +566,7 @@ pub(crate) fn rhs(
             &mut diag.slices,
             div_limit,
             &mut diag.violation,
+            tables,
         );
         f_inner = add(f_inner, fr);
         raceway_slices::<false>(
@@ -567,6 +581,7 @@ pub(crate) fn rhs(
             &mut diag.slices,
             div_limit,
             &mut diag.violation,
+            tables,
         );
 
         // roller ↔ cage bars: edge lines of pocket j at the bar contact radius, both pocket
@@ -753,8 +768,10 @@ pub(crate) fn rhs(
     apply_traction(model, diag, &mut f_inner, tables);
     let mr = model.m_r;
     for j in 0..model.z {
-        diag.inner.finish(j);
-        diag.outer.finish(j);
+        if tables == Tables::Fill {
+            diag.inner.finish(j);
+            diag.outer.finish(j);
+        }
         let b = lay.roller(j);
         let r = y[b + 1];
         let (thd, rdot, zd) = (y[b + 6], y[b + 7], y[b + 8]);

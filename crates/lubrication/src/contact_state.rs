@@ -32,6 +32,21 @@ pub enum ContactGeometry {
     },
 }
 
+impl ContactGeometry {
+    /// Line contact ([`ContactGeometry::Line`] or [`ContactGeometry::Prescribed`])?
+    pub fn is_line(&self) -> bool {
+        matches!(self, Self::Line { .. } | Self::Prescribed { .. })
+    }
+
+    /// Working length of a line contact, m (NaN for point contacts).
+    pub fn length_m(&self) -> f64 {
+        match *self {
+            Self::Line { length_m } | Self::Prescribed { length_m, .. } => length_m,
+            Self::Circular | Self::Elliptical { .. } => f64::NAN,
+        }
+    }
+}
+
 /// Operating state of one contact. All SI. Plain `Copy` data: the dynamics builds one per slice.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ContactState {

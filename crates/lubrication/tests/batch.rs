@@ -85,12 +85,15 @@ fn batch_equals_single_slice_evaluation() {
     for (name, model) in models() {
         let mut batch = SliceBatch::default();
         let mut expected = Vec::new();
-        // contacts over loads, speeds (incl. below the rolling-speed floor) and temperatures
+        let mut films = Vec::new();
+        // contacts over loads, speeds (incl. below the rolling-speed floor) and temperatures;
+        // the last two share their temperature (the batch reuses the oil preparation)
         for (c, &(q, u, t_c)) in [
             (400.0, 30.0, 100.0),
             (20.0, 5.0, 60.0),
             (150.0, 1e-4, 100.0),
             (1e-3, 30.0, 120.0),
+            (250.0, 12.0, 120.0),
         ]
         .iter()
         .enumerate()
@@ -98,6 +101,7 @@ fn batch_equals_single_slice_evaluation() {
             let w = whole(q, u, t_c);
             let contact = batch.add_contact(&model, &w);
             let prepared = model.prepare_contact(&w, None);
+            films.push((contact, prepared.map(|p| p.film())));
             for s in 0..10 {
                 let share = q * (0.02 + 0.03 * s as f64);
                 let q_s = if s == 9 { 0.0 } else { share };
@@ -113,6 +117,20 @@ fn batch_equals_single_slice_evaluation() {
             }
         }
         batch.evaluate(&model);
+        for (contact, film) in films {
+            let (central, minimum, _) = batch.film(contact);
+            if let Some((hc, hm)) = film {
+                assert_eq!(
+                    (central.to_bits(), minimum.to_bits()),
+                    (hc.to_bits(), hm.to_bits())
+                );
+            } else {
+                assert!(
+                    central.is_nan() && minimum.is_nan(),
+                    "{name}: film without a law"
+                );
+            }
+        }
         for (i, e) in expected.iter().enumerate() {
             let got = batch.coefficient(i);
             assert!(

@@ -180,3 +180,47 @@ fn elliptical_hertz_reduces_to_circular() {
     assert!((e.half_width_m / c.half_width_m - 1.0).abs() < 0.03);
     assert!((e.ellipticity - 1.0339).abs() < 1e-4);
 }
+
+/// The branch-free (2.17) against its closed form with `expm1` and `cbrt` over A from 0 to 600,
+/// across the switch from the series to the closed form at A = 0.1 (tolerance 1e-14: a few ulp);
+/// the many-contact loop gives the same bits as the scalar function.
+#[test]
+fn rigid_piezoviscous_line_branch_free_matches_closed_form() {
+    let (eta0, u, q, l, e, r) = (0.01, 10.0, 1000.0, 0.01, 2.2e11, 0.006);
+    let u_dim = eta0 * u / (e * r);
+    let w = q / (e * r * l);
+    let a_per_alpha = houpert_a(u_dim, e, w);
+    let targets = [
+        0.0, 1e-9, 1e-4, 0.01, 0.0999, 0.1, 0.1001, 0.5, 1.0, 3.0, 10.0, 39.9, 40.1, 58.0, 600.0,
+    ];
+    let alpha: Vec<f64> = targets.iter().map(|a| a / a_per_alpha).collect();
+    for &al in &alpha {
+        let a = houpert_a(u_dim, al * e, w);
+        let f = if a > 1e-12 { a / -(-a).exp_m1() } else { 1.0 };
+        let closed = 4.9 * (f * f).cbrt() * u_dim / w * r;
+        let h = rigid_piezoviscous_line(eta0, al, u, q, l, e, r);
+        assert_relative_eq!(h, closed, max_relative = 1e-14);
+    }
+    let n = alpha.len();
+    let mut speeds = vec![u; n];
+    speeds[1] = 0.0;
+    speeds[2] = -1.0;
+    let column = |v: f64| vec![v; n];
+    let mut h = vec![f64::NAN; n];
+    rigid_piezoviscous_line_many(
+        &column(eta0),
+        &alpha,
+        &speeds,
+        &column(q),
+        &column(l),
+        &column(e),
+        &column(r),
+        &mut h,
+    );
+    for i in 0..n {
+        let scalar = rigid_piezoviscous_line(eta0, alpha[i], speeds[i], q, l, e, r);
+        assert_eq!(h[i].to_bits(), scalar.to_bits(), "contact {i}");
+    }
+    assert_eq!(h[1], 0.0);
+    assert_eq!(h[2], 0.0);
+}

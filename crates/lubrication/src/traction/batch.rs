@@ -9,7 +9,7 @@
 //! compiler vectorises (with the branch-free [`rolldyn_numerics::fastmath`] functions).
 //!
 //! The physics is exactly that of [`TractionModel::traction_prepared`]: both call
-//! [`TractionModel::lubricated_coefficient`]. Laws without a film (two-level, seed 001) fall
+//! `lubricated_coefficient`. Laws without a film (two-level, seed 001) fall
 //! back to [`traction()`] per slice.
 //!
 //! [`Traction`]: super::Traction
@@ -21,6 +21,7 @@ use super::{
     lubricated_coefficient, traction,
 };
 use crate::contact_state::{ContactGeometry, ContactState, line_half_width, line_mean_pressure};
+use crate::film::{FilmFormula, rigid_piezoviscous_line_many};
 use crate::lubricant::{Lubricant, SolidThermal};
 use crate::viscosity::PiezoViscosity;
 
@@ -52,6 +53,7 @@ pub struct SliceBatch {
     sliding_speed_m_s: Vec<f64>,
     coefficient: Vec<f64>,
     lanes: ContactLanes,
+    films: PendingFilms,
 }
 
 impl SliceBatch {
@@ -66,6 +68,7 @@ impl SliceBatch {
             sliding_speed_m_s: Vec::with_capacity(slices),
             coefficient: Vec::with_capacity(slices),
             lanes: ContactLanes::default(),
+            films: PendingFilms::default(),
         }
     }
 
@@ -78,20 +81,56 @@ impl SliceBatch {
         self.rolling_speed_m_s.clear();
         self.sliding_speed_m_s.clear();
         self.coefficient.clear();
+        self.films.clear();
     }
 
     /// Adds a contact. `whole` describes the whole contact (total load over the loaded length,
-    /// mean entrainment speed, temperature, R', E', roughness); its film and Λ are computed
-    /// here once for all its slices ([`TractionModel::prepare_contact`]).
+    /// mean entrainment speed, temperature, R', E', roughness); its film and Λ are computed once
+    /// for all its slices ([`TractionModel::prepare_contact`]). Rigid–piezoviscous line films
+    /// are computed for all contacts together in [`SliceBatch::evaluate`].
     pub fn add_contact(&mut self, model: &TractionModel, whole: &ContactState) -> BatchContact {
+        let index = self.contacts.len();
+        let prepared = match self.same_oil_as_last(whole) {
+            Some(oil) => Some((oil, true)),
+            None => model.prepare_contact_deferred(whole),
+        };
+        let prepared = match prepared {
+            Some((prepared, true)) => {
+                self.films.push(index, &prepared.props, whole);
+                Some(prepared)
+            }
+            other => other.map(|(prepared, _)| prepared),
+        };
         self.contacts.push(Contact {
-            prepared: model.prepare_contact(whole, None),
+            prepared,
             reduced_radius_m: whole.reduced_radius_m,
             reduced_modulus_pa: whole.reduced_modulus_pa,
             temperature_k: whole.temperature_k,
             roughness_ra_m: whole.roughness_ra_m,
         });
-        BatchContact(self.contacts.len() - 1)
+        BatchContact(index)
+    }
+
+    /// The last contact's preparation with its film cleared, when `whole` is a loaded line
+    /// contact at the same temperature as that contact and that film was deferred: the oil
+    /// properties, the resolved formula and the warnings depend on nothing else, so the table
+    /// look-up is done once per raceway instead of once per contact.
+    fn same_oil_as_last(&self, whole: &ContactState) -> Option<PreparedContact> {
+        let last = self.contacts.last()?;
+        let prepared = last.prepared.as_ref()?;
+        let deferred = matches!(
+            prepared.formula,
+            Some(FilmFormula::RigidPiezoviscousLine | FilmFormula::Auto)
+        );
+        let same = last.temperature_k == whole.temperature_k
+            && whole.normal_force_n > 0.0
+            && whole.geometry.is_line();
+        (deferred && same).then_some(PreparedContact {
+            film_central_m: f64::NAN,
+            film_minimum_m: f64::NAN,
+            lambda: f64::NAN,
+            ..*prepared
+        })
     }
 
     /// Adds a slice of `contact`: normal force (N), slice length (m), rolling and sliding speed
@@ -161,7 +200,8 @@ impl SliceBatch {
         self.contact_of.is_empty()
     }
 
-    /// Central and minimum film and Λ of `contact` (NaN for laws without a film).
+    /// Central and minimum film and Λ of `contact` after [`SliceBatch::evaluate`] (NaN for laws
+    /// without a film).
     pub fn film(&self, contact: BatchContact) -> (f64, f64, f64) {
         match &self.contacts[contact.0].prepared {
             Some(p) => (p.film_central_m, p.film_minimum_m, p.lambda),
@@ -197,6 +237,7 @@ impl SliceBatch {
     /// `traction_prepared(prepared, state(i)).coefficient` for the lubricated laws and to
     /// `traction(state(i), model).coefficient` otherwise.
     pub fn evaluate(&mut self, model: &TractionModel) {
+        self.films.compute(model, &mut self.contacts);
         let n = self.len();
         self.coefficient.clear();
         self.coefficient.resize(n, 0.0);
@@ -250,6 +291,85 @@ struct Slices<'a> {
     length_m: &'a [f64],
     rolling_speed_m_s: &'a [f64],
     sliding_speed_m_s: &'a [f64],
+}
+
+/// Inputs of the rigid–piezoviscous line films left to the batch
+/// ([`TractionModel::prepare_contact_deferred`]), one row per contact, as separate columns for
+/// [`rigid_piezoviscous_line_many`].
+#[derive(Debug, Clone, Default)]
+struct PendingFilms {
+    contact: Vec<usize>,
+    eta0: Vec<f64>,
+    alpha: Vec<f64>,
+    rolling_speed: Vec<f64>,
+    load: Vec<f64>,
+    length: Vec<f64>,
+    modulus: Vec<f64>,
+    radius: Vec<f64>,
+    film: Vec<f64>,
+}
+
+impl PendingFilms {
+    fn clear(&mut self) {
+        self.contact.clear();
+        for column in self.columns() {
+            column.clear();
+        }
+    }
+
+    fn columns(&mut self) -> [&mut Vec<f64>; 8] {
+        [
+            &mut self.eta0,
+            &mut self.alpha,
+            &mut self.rolling_speed,
+            &mut self.load,
+            &mut self.length,
+            &mut self.modulus,
+            &mut self.radius,
+            &mut self.film,
+        ]
+    }
+
+    fn push(&mut self, contact: usize, props: &HotProps, whole: &ContactState) {
+        self.contact.push(contact);
+        let row = [
+            props.eta0,
+            props.alpha,
+            whole.rolling_speed_m_s.abs(),
+            whole.normal_force_n,
+            whole.geometry.length_m(),
+            whole.reduced_modulus_pa,
+            whole.reduced_radius_m,
+            f64::NAN,
+        ];
+        for (column, value) in self.columns().into_iter().zip(row) {
+            column.push(value);
+        }
+    }
+
+    /// Computes every pending film and completes its contact (starvation factor and Λ of the
+    /// model), as [`TractionModel::prepare_contact`] would have; then empties the list.
+    fn compute(&mut self, model: &TractionModel, contacts: &mut [Contact]) {
+        rigid_piezoviscous_line_many(
+            &self.eta0,
+            &self.alpha,
+            &self.rolling_speed,
+            &self.load,
+            &self.length,
+            &self.modulus,
+            &self.radius,
+            &mut self.film,
+        );
+        let starvation = model.cfg.film.starvation_factor;
+        for (&k, &h) in self.contact.iter().zip(&self.film) {
+            let c = &mut contacts[k];
+            if let Some(p) = c.prepared.as_mut() {
+                let h = h * starvation;
+                model.set_film(p, h, h, c.roughness_ra_m);
+            }
+        }
+        self.clear();
+    }
 }
 
 /// Per-slice copies of their contact's data, so that the main loop reads contiguous arrays.

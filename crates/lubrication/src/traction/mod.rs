@@ -476,6 +476,17 @@ fn traction_with_film(
     model.traction_prepared(&prep, state)
 }
 
+/// Where [`TractionModel::prepare_contact`] takes the film from.
+#[derive(Debug, Clone, Copy)]
+enum FilmSource {
+    /// imposed by the caller as (h_c, h_min)
+    Given((f64, f64)),
+    /// the model's formula
+    Formula,
+    /// the model's formula, left to the batch when it is the rigid–piezoviscous line film
+    DeferLineFormula,
+}
+
 /// The per-contact part of a lubricated traction evaluation: oil properties at the contact
 /// temperature, the film and Λ (SPEC §4.3–4.4). One prepared contact serves every slice of a
 /// roller–raceway line contact ([`TractionModel::traction_prepared`]); [`traction`] prepares
@@ -521,13 +532,71 @@ impl TractionModel {
         whole: &ContactState,
         film: Option<(f64, f64)>,
     ) -> Option<PreparedContact> {
+        let source = match film {
+            Some(given) => FilmSource::Given(given),
+            None => FilmSource::Formula,
+        };
+        self.prepare(whole, source).map(|(prepared, _)| prepared)
+    }
+
+    /// [`TractionModel::prepare_contact`] with the model's formula, for [`SliceBatch`]: when
+    /// the formula is the rigid–piezoviscous line film, the film and Λ are left NaN and `true`
+    /// is returned, so that the batch computes the films of all its contacts in one vectorised
+    /// loop ([`crate::film::rigid_piezoviscous_line_many`]) and completes them with
+    /// [`TractionModel::set_film`].
+    pub(crate) fn prepare_contact_deferred(
+        &self,
+        whole: &ContactState,
+    ) -> Option<(PreparedContact, bool)> {
+        self.prepare(whole, FilmSource::DeferLineFormula)
+    }
+
+    /// See [`TractionModel::prepare_contact`]; returns whether the film was deferred.
+    fn prepare(&self, whole: &ContactState, source: FilmSource) -> Option<(PreparedContact, bool)> {
+        let (props, formula, mut w) = self.prepare_oil(whole)?;
+        let film = match source {
+            FilmSource::Given(given) => Some(given),
+            FilmSource::DeferLineFormula
+                if matches!(
+                    formula,
+                    FilmFormula::RigidPiezoviscousLine | FilmFormula::Auto
+                ) =>
+            {
+                None
+            }
+            _ => {
+                let (film, pve) = self.formula_film(formula, &props, whole);
+                if pve == Some(false) {
+                    w |= Warnings::PVE_CONDITION_FAILED;
+                }
+                Some(film)
+            }
+        };
+        let mut prepared = PreparedContact {
+            temperature_k: whole.temperature_k,
+            props,
+            film_central_m: f64::NAN,
+            film_minimum_m: f64::NAN,
+            lambda: f64::NAN,
+            formula: (!matches!(source, FilmSource::Given(_))).then_some(formula),
+            warnings: w,
+        };
+        if let Some((hc, hm)) = film {
+            self.set_film(&mut prepared, hc, hm, whole.roughness_ra_m);
+        }
+        Some((prepared, film.is_none()))
+    }
+
+    /// Oil properties at the (clamped) contact temperature, the film formula resolved for the
+    /// contact's geometry, and the warnings so far. `None` for laws without a film or an
+    /// unloaded contact.
+    fn prepare_oil(&self, whole: &ContactState) -> Option<(HotProps, FilmFormula, u16)> {
         let cfg = &self.cfg;
         let FrictionLaw::Lubricated(_) = &cfg.law else {
             return None;
         };
         let oil = cfg.oil.as_ref()?;
-        let q = whole.normal_force_n;
-        if q <= 0.0 {
+        if whole.normal_force_n <= 0.0 {
             return None;
         }
         let mut w = 0u16;
@@ -540,41 +609,42 @@ impl TractionModel {
             .as_ref()
             .and_then(|tb| tb.get(t))
             .unwrap_or_else(|| HotProps::closed_form(oil, t));
-        let hz = whole.hertz();
-        let (formula, mismatch) = resolve_formula(cfg.film.formula, &hz);
+        let (formula, mismatch) = resolve_formula(self.cfg.film.formula, whole.geometry.is_line());
         if mismatch {
             w |= Warnings::FILM_FORMULA_MISMATCH;
         }
-        let (hc, hm) = match film {
-            Some(given) => given,
-            None => {
-                let inp = FilmInputs {
-                    eta0: props.eta0,
-                    alpha: props.alpha,
-                    beta0: props.beta0,
-                    k_f: props.k_f,
-                    u: whole.rolling_speed_m_s.abs(),
-                    q,
-                    e: whole.reduced_modulus_pa,
-                    r: whole.reduced_radius_m,
-                };
-                let (hc, hm, pve, _) = film_core(formula, &inp, &hz, cfg.film.seed001);
-                if pve == Some(false) {
-                    w |= Warnings::PVE_CONDITION_FAILED;
-                }
-                let f = cfg.film.starvation_factor;
-                (hc * f, hm * f)
-            }
+        Some((props, formula, w))
+    }
+
+    /// Central and minimum film of `whole` by `formula` with the starvation factor, m, and the
+    /// piezoviscous–elastic condition (point contacts).
+    fn formula_film(
+        &self,
+        formula: FilmFormula,
+        props: &HotProps,
+        whole: &ContactState,
+    ) -> ((f64, f64), Option<bool>) {
+        let inp = FilmInputs {
+            eta0: props.eta0,
+            alpha: props.alpha,
+            beta0: props.beta0,
+            k_f: props.k_f,
+            u: whole.rolling_speed_m_s.abs(),
+            q: whole.normal_force_n,
+            e: whole.reduced_modulus_pa,
+            r: whole.reduced_radius_m,
         };
-        Some(PreparedContact {
-            temperature_k: whole.temperature_k,
-            props,
-            film_central_m: hc,
-            film_minimum_m: hm,
-            lambda: self.lambda_def.eval(hm, whole.roughness_ra_m),
-            formula: film.is_none().then_some(formula),
-            warnings: w,
-        })
+        let (hc, hm, pve, _) = film_core(formula, &inp, &whole.hertz(), self.cfg.film.seed001);
+        let f = self.cfg.film.starvation_factor;
+        ((hc * f, hm * f), pve)
+    }
+
+    /// Sets the film of `prepared`: `hc`, `hm` (m, starvation included) and Λ from `hm` and the
+    /// roughness.
+    pub(crate) fn set_film(&self, prepared: &mut PreparedContact, hc: f64, hm: f64, ra: [f64; 2]) {
+        prepared.film_central_m = hc;
+        prepared.film_minimum_m = hm;
+        prepared.lambda = self.lambda_def.eval(hm, ra);
     }
 
     /// Traction of `state` (a slice of the prepared contact, or the whole of it) with the
