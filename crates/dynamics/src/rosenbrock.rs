@@ -143,7 +143,7 @@ pub struct JacobianBlock {
 }
 
 /// The integrator state of the Rosenbrock-W method (everything needed to continue a run
-/// bit-for-bit is listed in [`RosenbrockW::save_parts`]).
+/// bit-for-bit is listed in `Stepper::save` (`src/stepper.rs`)).
 #[derive(Debug, Clone)]
 pub struct RosenbrockW {
     /// current time, s

@@ -228,139 +228,119 @@ fn evaluate_with<const INNER: bool>(
     call!(slots);
 }
 
-/// Declares the slot loop `slots` with the parameter list given once, and its AVX2 copy
-/// `slots_avx2` with the same list.
-macro_rules! slot_loop {
-    ($($arg:ident: $ty:ty),* $(,)?; $body:block) => {
-        /// [`slots`] compiled for AVX2.
-        ///
-        /// # Safety
-        /// Only call on a CPU that supports AVX2.
-        #[allow(clippy::too_many_arguments)]
-        #[cfg(target_arch = "x86_64")]
-        #[target_feature(enable = "avx2")]
-        unsafe fn slots_avx2<const INNER: bool>($($arg: $ty),*) {
-            slots::<INNER>($($arg),*);
+rolldyn_numerics::avx2_twin! {
+    /// The loop over the slots. Per slot (SPEC §2.1–2.2): slice centre `p = c + x a`, distance
+    /// from the ring axis `ρ`, approach `δ = R_i + R_w − ρ − z_s − z_race` (inner) or
+    /// `ρ + R_w − R_o − z_s − z_race` (outer), `Q = max(0, k_s δⁿ + STEP(δ, 0, 0, δ*, C_max) δ̇)`
+    /// for `δ > 0` (seed 000 (2.5)–(2.8)), contact point `p − R_w n`, relative velocity of roller
+    /// and ring there, its tangential part and the orbital-frame entrainment speed (SPEC §3.5).
+    fn slots<const INNER: bool>(
+        k: &PairKinematics,
+        x: &[f64],
+        drop: &[f64],
+        stiff: &[f64],
+        c_max: &[f64],
+        delta_star: &[f64],
+        race_drop: &[f64],
+        delta_out: &mut [f64],
+        q_out: &mut [f64],
+        fx: &mut [f64],
+        fy: &mut [f64],
+        fz: &mut [f64],
+        mx: &mut [f64],
+        my: &mut [f64],
+        mz: &mut [f64],
+        rx: &mut [f64],
+        ry: &mut [f64],
+        rz: &mut [f64],
+        tx: &mut [f64],
+        ty: &mut [f64],
+        tz: &mut [f64],
+        vs_out: &mut [f64],
+        u_out: &mut [f64],
+    ) / slots_avx2 {
+        // equal lengths, known to the compiler: no bounds checks in the loop
+        let n_slots = x.len();
+        let (drop, stiff, c_max, delta_star, race_drop) = (
+            &drop[..n_slots],
+            &stiff[..n_slots],
+            &c_max[..n_slots],
+            &delta_star[..n_slots],
+            &race_drop[..n_slots],
+        );
+        let (delta_out, q_out, vs_out, u_out) = (
+            &mut delta_out[..n_slots],
+            &mut q_out[..n_slots],
+            &mut vs_out[..n_slots],
+            &mut u_out[..n_slots],
+        );
+        let (fx, fy, fz) = (&mut fx[..n_slots], &mut fy[..n_slots], &mut fz[..n_slots]);
+        let (mx, my, mz) = (&mut mx[..n_slots], &mut my[..n_slots], &mut mz[..n_slots]);
+        let (rx, ry, rz) = (&mut rx[..n_slots], &mut ry[..n_slots], &mut rz[..n_slots]);
+        let (tx, ty, tz) = (&mut tx[..n_slots], &mut ty[..n_slots], &mut tz[..n_slots]);
+        let ring_spin_axis = scale(k.ring_axis, k.ring_spin);
+        for s in 0..n_slots {
+            let xs = x[s];
+            let rho = (k.qa + xs * (2.0 * k.qb + xs * k.qc)).max(0.0).sqrt();
+            let delta = if INNER {
+                k.raceway_radius + k.rw - rho
+            } else {
+                rho + k.rw - k.raceway_radius
+            } - drop[s]
+                - race_drop[s];
+            let inv_rho = if rho > 0.0 { 1.0 / rho } else { 0.0 };
+            let touching = delta > 0.0 && rho > 0.0;
+            // outward unit normal of the ring axis through the slice centre; n points from the
+            // ring into the roller
+            let n_out = scale(axpy(k.dp_c, xs, k.a_perp), inv_rho);
+            let n = if INNER { n_out } else { scale(n_out, -1.0) };
+            let r_cp = axpy(scale(k.a, xs), -k.rw, n);
+            let cp = add(k.c, r_cp);
+            let v_roll = add(k.v, cross(k.w, r_cp));
+            let v_ring = add(k.ring_v, cross(ring_spin_axis, sub(cp, k.ring_o)));
+            let vrel = sub(v_roll, v_ring);
+            let v_normal = dot(vrel, n);
+            let delta_dot = -v_normal;
+            // slice law k_s δⁿ (exp(n ln δ)); the damping ramp STEP(δ, 0, 0, δ*, C_max) of
+            // rolldyn_contact::damping with Δ = δ/δ* clamped to [0, 1]
+            let elastic = if touching {
+                stiff[s] * fastmath::exp(k.exponent * fastmath::ln(delta))
+            } else {
+                0.0
+            };
+            let ramp = (delta / delta_star[s]).clamp(0.0, 1.0);
+            let damping = c_max[s] * ramp * ramp * (3.0 - 2.0 * ramp);
+            let pressing = elastic + damping * delta_dot;
+            let q = if touching && pressing > 0.0 {
+                pressing
+            } else {
+                0.0
+            };
+            let normal = scale(n, q);
+            let moment = cross(r_cp, normal);
+            let vt = axpy(vrel, -v_normal, n);
+            // rolling direction and entrainment speed in the roller's orbital frame (SPEC §3.5)
+            let t_dir = cross(k.ring_axis, n_out);
+            let w_frame = [-k.orbit * cp[1], k.orbit * cp[0], 0.0];
+            let u = 0.5 * (dot(v_roll, t_dir) + dot(v_ring, t_dir)) - dot(w_frame, t_dir);
+            delta_out[s] = delta;
+            q_out[s] = q;
+            fx[s] = normal[0];
+            fy[s] = normal[1];
+            fz[s] = normal[2];
+            mx[s] = moment[0];
+            my[s] = moment[1];
+            mz[s] = moment[2];
+            rx[s] = r_cp[0];
+            ry[s] = r_cp[1];
+            rz[s] = r_cp[2];
+            tx[s] = vt[0];
+            ty[s] = vt[1];
+            tz[s] = vt[2];
+            vs_out[s] = dot(vt, vt).sqrt();
+            u_out[s] = u;
         }
-
-        /// The loop over the slots. Per slot (SPEC §2.1–2.2): slice centre `p = c + x a`, distance from
-        /// the ring axis `ρ`, approach `δ = R_i + R_w − ρ − z_s − z_race` (inner) or
-        /// `ρ + R_w − R_o − z_s − z_race` (outer), `Q = max(0, k_s δⁿ + STEP(δ, 0, 0, δ*, C_max) δ̇)` for
-        /// `δ > 0` (seed 000 (2.5)–(2.8)), contact point `p − R_w n`, relative velocity of roller and
-        /// ring there, its tangential part and the orbital-frame entrainment speed (SPEC §3.5).
-        #[allow(clippy::too_many_arguments)]
-        #[inline(always)]
-        fn slots<const INNER: bool>($($arg: $ty),*) $body
-    };
-}
-
-slot_loop! {
-    k: &PairKinematics,
-    x: &[f64],
-    drop: &[f64],
-    stiff: &[f64],
-    c_max: &[f64],
-    delta_star: &[f64],
-    race_drop: &[f64],
-    delta_out: &mut [f64],
-    q_out: &mut [f64],
-    fx: &mut [f64],
-    fy: &mut [f64],
-    fz: &mut [f64],
-    mx: &mut [f64],
-    my: &mut [f64],
-    mz: &mut [f64],
-    rx: &mut [f64],
-    ry: &mut [f64],
-    rz: &mut [f64],
-    tx: &mut [f64],
-    ty: &mut [f64],
-    tz: &mut [f64],
-    vs_out: &mut [f64],
-    u_out: &mut [f64];
-{
-    // equal lengths, known to the compiler: no bounds checks in the loop
-    let n_slots = x.len();
-    let (drop, stiff, c_max, delta_star, race_drop) = (
-        &drop[..n_slots],
-        &stiff[..n_slots],
-        &c_max[..n_slots],
-        &delta_star[..n_slots],
-        &race_drop[..n_slots],
-    );
-    let (delta_out, q_out, vs_out, u_out) = (
-        &mut delta_out[..n_slots],
-        &mut q_out[..n_slots],
-        &mut vs_out[..n_slots],
-        &mut u_out[..n_slots],
-    );
-    let (fx, fy, fz) = (&mut fx[..n_slots], &mut fy[..n_slots], &mut fz[..n_slots]);
-    let (mx, my, mz) = (&mut mx[..n_slots], &mut my[..n_slots], &mut mz[..n_slots]);
-    let (rx, ry, rz) = (&mut rx[..n_slots], &mut ry[..n_slots], &mut rz[..n_slots]);
-    let (tx, ty, tz) = (&mut tx[..n_slots], &mut ty[..n_slots], &mut tz[..n_slots]);
-    let ring_spin_axis = scale(k.ring_axis, k.ring_spin);
-    for s in 0..n_slots {
-        let xs = x[s];
-        let rho = (k.qa + xs * (2.0 * k.qb + xs * k.qc)).max(0.0).sqrt();
-        let delta = if INNER {
-            k.raceway_radius + k.rw - rho
-        } else {
-            rho + k.rw - k.raceway_radius
-        } - drop[s]
-            - race_drop[s];
-        let inv_rho = if rho > 0.0 { 1.0 / rho } else { 0.0 };
-        let touching = delta > 0.0 && rho > 0.0;
-        // outward unit normal of the ring axis through the slice centre; n points from the
-        // ring into the roller
-        let n_out = scale(axpy(k.dp_c, xs, k.a_perp), inv_rho);
-        let n = if INNER { n_out } else { scale(n_out, -1.0) };
-        let r_cp = axpy(scale(k.a, xs), -k.rw, n);
-        let cp = add(k.c, r_cp);
-        let v_roll = add(k.v, cross(k.w, r_cp));
-        let v_ring = add(k.ring_v, cross(ring_spin_axis, sub(cp, k.ring_o)));
-        let vrel = sub(v_roll, v_ring);
-        let v_normal = dot(vrel, n);
-        let delta_dot = -v_normal;
-        // slice law k_s δⁿ (exp(n ln δ)); the damping ramp STEP(δ, 0, 0, δ*, C_max) of
-        // rolldyn_contact::damping with Δ = δ/δ* clamped to [0, 1]
-        let elastic = if touching {
-            stiff[s] * fastmath::exp(k.exponent * fastmath::ln(delta))
-        } else {
-            0.0
-        };
-        let ramp = (delta / delta_star[s]).clamp(0.0, 1.0);
-        let damping = c_max[s] * ramp * ramp * (3.0 - 2.0 * ramp);
-        let pressing = elastic + damping * delta_dot;
-        let q = if touching && pressing > 0.0 {
-            pressing
-        } else {
-            0.0
-        };
-        let normal = scale(n, q);
-        let moment = cross(r_cp, normal);
-        let vt = axpy(vrel, -v_normal, n);
-        // rolling direction and entrainment speed in the roller's orbital frame (SPEC §3.5)
-        let t_dir = cross(k.ring_axis, n_out);
-        let w_frame = [-k.orbit * cp[1], k.orbit * cp[0], 0.0];
-        let u = 0.5 * (dot(v_roll, t_dir) + dot(v_ring, t_dir)) - dot(w_frame, t_dir);
-        delta_out[s] = delta;
-        q_out[s] = q;
-        fx[s] = normal[0];
-        fy[s] = normal[1];
-        fz[s] = normal[2];
-        mx[s] = moment[0];
-        my[s] = moment[1];
-        mz[s] = moment[2];
-        rx[s] = r_cp[0];
-        ry[s] = r_cp[1];
-        rz[s] = r_cp[2];
-        tx[s] = vt[0];
-        ty[s] = vt[1];
-        tz[s] = vt[2];
-        vs_out[s] = dot(vt, vt).sqrt();
-        u_out[s] = u;
     }
-}
 }
 
 #[cfg(test)]

@@ -183,50 +183,28 @@ fn piezoviscous_factor(a: f64) -> f64 {
     if a < 0.1 { series } else { closed }
 }
 
-/// Declares [`rigid_piezoviscous_line_many`], its AVX2 copy and their loop from the argument
-/// list of [`rigid_piezoviscous_line`], given once.
-macro_rules! many_films {
-    ($($arg:ident),+) => {
-        /// [`rigid_piezoviscous_line`] of many contacts: `h[i]` from the `i`-th element of each
-        /// input array (all at least as long as `h`). Compiled a second time for AVX2 and chosen
-        /// at run time; both give the same bits as the scalar function.
-        #[allow(clippy::too_many_arguments)]
-        pub fn rigid_piezoviscous_line_many($($arg: &[f64],)+ h: &mut [f64]) {
-            #[cfg(target_arch = "x86_64")]
-            if std::arch::is_x86_feature_detected!("avx2") {
-                // SAFETY: the CPU supports AVX2 (checked just above).
-                unsafe { films_avx2($($arg,)+ h) };
-                return;
-            }
-            films($($arg,)+ h);
+rolldyn_numerics::avx2_twin! {
+    /// [`rigid_piezoviscous_line`] of many contacts: `h[i]` from the `i`-th element of each
+    /// input array (all at least as long as `h`). Compiled a second time for AVX2 and chosen at
+    /// run time; both give the same bits as the scalar function.
+    pub fn rigid_piezoviscous_line_many(
+        eta0: &[f64],
+        alpha: &[f64],
+        u: &[f64],
+        q: &[f64],
+        l: &[f64],
+        e: &[f64],
+        r: &[f64],
+        h: &mut [f64],
+    ) = films / films_avx2 {
+        let n = h.len();
+        let (eta0, alpha, u, q) = (&eta0[..n], &alpha[..n], &u[..n], &q[..n]);
+        let (l, e, r) = (&l[..n], &e[..n], &r[..n]);
+        for i in 0..n {
+            h[i] = rigid_piezoviscous_line(eta0[i], alpha[i], u[i], q[i], l[i], e[i], r[i]);
         }
-
-        /// [`films`] compiled for AVX2.
-        ///
-        /// # Safety
-        /// Only call on a CPU that supports AVX2.
-        #[allow(clippy::too_many_arguments)]
-        #[cfg(target_arch = "x86_64")]
-        #[target_feature(enable = "avx2")]
-        unsafe fn films_avx2($($arg: &[f64],)+ h: &mut [f64]) {
-            films($($arg,)+ h);
-        }
-
-        /// The loop of [`rigid_piezoviscous_line_many`]. Every array is a separate reference
-        /// argument, so the compiler knows that `h` overlaps none of the inputs.
-        #[allow(clippy::too_many_arguments)]
-        #[inline(always)]
-        fn films($($arg: &[f64],)+ h: &mut [f64]) {
-            let n = h.len();
-            $(let $arg = &$arg[..n];)+
-            for i in 0..n {
-                h[i] = rigid_piezoviscous_line($($arg[i]),+);
-            }
-        }
-    };
+    }
 }
-
-many_films!(eta0, alpha, u, q, l, e, r);
 
 /// Piezoviscous–elastic point-contact minimum film, seed 000 (2.19) with the Hamrock–Dowson
 /// definitions (F-30): h = 3.42 R_x (U/W)² g_V^0.49 g_E^0.17 (1 − e^{−0.68k}), g_V = G W³/U²,

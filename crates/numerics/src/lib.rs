@@ -6,7 +6,9 @@
 //! * [`root1d`]: safeguarded Newton (bracket search, Newton/secant steps, bisection) for one
 //!   equation in one unknown.
 //! * [`fastmath`]: branch-free, vectorisable `exp`, `ln`, `ln_1p` for hot loops.
+//! * [`avx2_twin!`]: a hot loop and its AVX2 copy from one parameter list.
 
+pub mod avx2;
 pub mod fastmath;
 pub mod newton2d;
 pub mod root1d;

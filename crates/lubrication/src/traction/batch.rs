@@ -427,75 +427,41 @@ impl ContactLanes {
     }
 }
 
-/// [`evaluate_lubricated`] for Muraki (visco-elastic when `THERMAL`, else isothermal) with
-/// L = sinh⁻¹σ, Barus viscosity and Kragelsky boundary friction: the law is rebuilt here from
-/// constant variants, so every `match` on it folds away and the loop body is branch-free.
-///
-/// On x86-64 CPUs with AVX2 the loop is compiled a second time for AVX2 (four lanes) and
-/// chosen at run time. Both versions give the same bits: Rust never fuses a multiply and an
-/// add on its own, and `+ − × ÷ √`, `min`/`max` and comparisons are exact in every width.
-fn evaluate_muraki<const THERMAL: bool>(
-    slices: &Slices,
-    oil: &Lubricant,
-    cfg: &TractionConfig,
-    solid: SolidThermal,
-    mixed: Option<MixedLimits>,
-    out: &mut [f64],
-) {
-    #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx2") {
-        // SAFETY: the CPU supports AVX2 (checked just above).
-        unsafe { evaluate_muraki_avx2::<THERMAL>(slices, oil, cfg, solid, mixed, out) };
-        return;
-    }
-    evaluate_muraki_portable::<THERMAL>(slices, oil, cfg, solid, mixed, out);
-}
-
-/// [`evaluate_muraki_portable`] compiled for AVX2.
-///
-/// # Safety
-/// Only call on a CPU that supports AVX2.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-unsafe fn evaluate_muraki_avx2<const THERMAL: bool>(
-    slices: &Slices,
-    oil: &Lubricant,
-    cfg: &TractionConfig,
-    solid: SolidThermal,
-    mixed: Option<MixedLimits>,
-    out: &mut [f64],
-) {
-    evaluate_muraki_portable::<THERMAL>(slices, oil, cfg, solid, mixed, out);
-}
-
-/// See [`evaluate_muraki`].
-#[inline(always)]
-fn evaluate_muraki_portable<const THERMAL: bool>(
-    slices: &Slices,
-    oil: &Lubricant,
-    cfg: &TractionConfig,
-    solid: SolidThermal,
-    mixed: Option<MixedLimits>,
-    out: &mut [f64],
-) {
-    let rheology = if THERMAL {
-        Rheology::ViscoElastic
-    } else {
-        Rheology::Isothermal
-    };
-    let law = |mixed| LubricatedFriction {
-        hydrodynamic: Hydrodynamic::Muraki(MurakiSettings {
-            rheology,
-            small_shear_rate: SmallShearRate::Asinh,
-            solid,
-            piezo: PiezoViscosity::Barus,
-        }),
-        boundary: BoundaryFriction::Kragelsky,
-        mixed,
-    };
-    match mixed {
-        Some(lim) => evaluate_lubricated(&law(Some(lim)), oil, cfg, slices, out),
-        None => evaluate_lubricated(&law(None), oil, cfg, slices, out),
+rolldyn_numerics::avx2_twin! {
+    /// [`evaluate_lubricated`] for Muraki (visco-elastic when `THERMAL`, else isothermal) with
+    /// L = sinh⁻¹σ, Barus viscosity and Kragelsky boundary friction: the law is rebuilt here from
+    /// constant variants, so every `match` on it folds away and the loop body is branch-free.
+    ///
+    /// On x86-64 CPUs with AVX2 the loop is compiled a second time for AVX2 (four lanes) and
+    /// chosen at run time. Both versions give the same bits: Rust never fuses a multiply and an
+    /// add on its own, and `+ − × ÷ √`, `min`/`max` and comparisons are exact in every width.
+    fn evaluate_muraki<const THERMAL: bool>(
+        slices: &Slices,
+        oil: &Lubricant,
+        cfg: &TractionConfig,
+        solid: SolidThermal,
+        mixed: Option<MixedLimits>,
+        out: &mut [f64],
+    ) = evaluate_muraki_portable / evaluate_muraki_avx2 {
+        let rheology = if THERMAL {
+            Rheology::ViscoElastic
+        } else {
+            Rheology::Isothermal
+        };
+        let law = |mixed| LubricatedFriction {
+            hydrodynamic: Hydrodynamic::Muraki(MurakiSettings {
+                rheology,
+                small_shear_rate: SmallShearRate::Asinh,
+                solid,
+                piezo: PiezoViscosity::Barus,
+            }),
+            boundary: BoundaryFriction::Kragelsky,
+            mixed,
+        };
+        match mixed {
+            Some(lim) => evaluate_lubricated(&law(Some(lim)), oil, cfg, slices, out),
+            None => evaluate_lubricated(&law(None), oil, cfg, slices, out),
+        }
     }
 }
 
