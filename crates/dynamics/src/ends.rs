@@ -133,8 +133,46 @@ pub(crate) struct Deepest {
 
 const GOLDEN_ITERATIONS: usize = 40;
 
+/// Axial position and tilt of a roller relative to the axis of a body that carries end faces.
+/// It is the same for every face of that body, so the right-hand side computes it once per
+/// roller and body and skips the faces that [`AxialReach::bound`] clears (most faces, most of
+/// the time).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct AxialReach {
+    /// axial position of the roller centre `(c − O)·A`, m
+    zeta_c: f64,
+    /// `a·A`
+    cos_a: f64,
+    /// how far the end disc reaches axially by its tilt, `r_e sin∠(a, A)`, m
+    tilt: f64,
+}
+
+impl AxialReach {
+    pub(crate) fn new(body: &BodyKin, end: &EndGeometry, c: V3, a: V3) -> Self {
+        let cos_a = dot(a, body.axis);
+        Self {
+            zeta_c: dot(sub(c, body.o), body.axis),
+            cos_a,
+            tilt: end.radius * (1.0 - cos_a * cos_a).max(0.0).sqrt(),
+        }
+    }
+
+    /// Upper bound of the approach of the roller end facing `face`; ≤ 0: no contact. The end
+    /// centre `P = c + s (L/2) a` stands at `s(ζ_P − ζ_f) = s(ζ_c − ζ_f) + (L/2) a·A` from the
+    /// face, and the disc tilts by at most `r_e sin∠(a, A)` towards it (in the (e1, e2) basis
+    /// of [`deepest_within`] this is `r_e √(p² + q²)`, since `p² + q² = 1 − (a·A)²`).
+    #[inline]
+    pub(crate) fn bound(&self, face: &FaceGeometry, end: &EndGeometry) -> f64 {
+        face.side * (self.zeta_c - face.zeta)
+            + end.half_length * self.cos_a
+            + self.tilt
+            + face.max_protrusion()
+    }
+}
+
 /// Deepest point of the roller end facing `face` inside the face band, or `None` when the band
 /// and the end disc do not overlap radially.
+#[cfg(test)]
 pub(crate) fn deepest(
     face: &FaceGeometry,
     end: &EndGeometry,
@@ -142,20 +180,30 @@ pub(crate) fn deepest(
     c: V3,
     a: V3,
 ) -> Option<Deepest> {
+    deepest_within(face, end, body, &AxialReach::new(body, end, c, a), c, a)
+}
+
+/// [`deepest`] with the roller's [`AxialReach`] on `body` computed by the caller.
+pub(crate) fn deepest_within(
+    face: &FaceGeometry,
+    end: &EndGeometry,
+    body: &BodyKin,
+    reach: &AxialReach,
+    c: V3,
+    a: V3,
+) -> Option<Deepest> {
+    // cheap upper bound first
+    if reach.bound(face, end) <= 0.0 {
+        return None;
+    }
     let s = face.side;
     let big_a = body.axis;
     let p = axpy(c, s * end.half_length, a);
     let dp = sub(p, body.o);
     let zeta_p = dot(dp, big_a);
     let delta0 = s * (zeta_p - face.zeta);
-    let cos_a = dot(a, big_a);
+    let cos_a = reach.cos_a;
     let r = end.radius;
-    // cheap upper bound first: most ends are clear of most faces most of the time. The end
-    // disc tilts by at most r·sin∠(a, A) towards the face (in the (e1, e2) basis below this is
-    // r·√(p² + q²), since p² + q² = 1 − (a·A)²).
-    if delta0 + r * (1.0 - cos_a * cos_a).max(0.0).sqrt() + face.max_protrusion() <= 0.0 {
-        return None;
-    }
     let radial = axpy(dp, -zeta_p, big_a);
     let rho_p = norm(radial);
     if rho_p <= 0.0 {
@@ -330,17 +378,20 @@ pub(crate) struct EndLubrication<'a> {
     pub temperature_k: f64,
 }
 
-/// Force of one roller end on one face (`None` without contact).
+/// Force of one roller end on one face (`None` without contact). `reach` is the roller's
+/// [`AxialReach`] on `body`, computed once for all faces of that body.
+#[allow(clippy::too_many_arguments)]
 pub(crate) fn end_force(
     face: &FaceGeometry,
     end: &EndGeometry,
     body: &BodyKin,
+    reach: &AxialReach,
     roller: &RollerState,
     params: &RollerEndParameters,
     damping: &SliceDamping,
     lub: Option<&EndLubrication>,
 ) -> Option<EndForce> {
-    let dp = deepest(face, end, body, roller.c, roller.a)?;
+    let dp = deepest_within(face, end, body, reach, roller.c, roller.a)?;
     let n = dp.normal;
     let r_cp = sub(dp.point, roller.c);
     let v_roll = add(roller.v, cross(roller.w, r_cp));

@@ -4,7 +4,9 @@
 //!
 //! Allocation-free: all scratch lives in [`Diagnostics`], allocated once.
 
-use crate::ends::{BodyKin, EndContactRegime, EndForce, EndLubrication, RollerState, end_force};
+use crate::ends::{
+    AxialReach, BodyKin, EndContactRegime, EndForce, EndLubrication, RollerState, end_force,
+};
 use crate::land::LandKinematics;
 use crate::layout::{CAGE_DOF, INNER_DOF, ROLLER_DOF};
 use crate::model::{Model, RacewaySlices};
@@ -299,7 +301,6 @@ fn raceway_slices<const INNER: bool>(
     violation: &mut Option<Violation>,
     tables: Tables,
 ) -> V3 {
-    let mut f_ring = [0.0; 3];
     table.reset(j, tables);
     // Slice centres p = c + x a: their offset from the ring axis is dp(x) = dp_c + x a⊥, so
     // ρ(x)² = A + 2Bx + Cx². The distance from the axis is 1-Lipschitz, which bounds every
@@ -319,7 +320,7 @@ fn raceway_slices<const INNER: bool>(
     } - model.min_slice_drop
         - rs.min_drop;
     if bound <= 0.0 {
-        return f_ring;
+        return [0.0; 3];
     }
     let race_drop = match &rs.profile {
         Some(pr) => {
@@ -351,41 +352,24 @@ fn raceway_slices<const INNER: bool>(
     };
     let out = &mut scratch.kernel;
     slice_kernel::evaluate::<INNER>(&rs.lanes, &pair, race_drop, out);
-    let mut load = 0.0;
-    let mut length = 0.0;
-    let mut entrainment = 0.0;
-    // the loaded slices are moved to the front of the kernel's arrays (slot order kept)
-    let mut loaded_slices = 0;
-    for s in 0..model.slice_x.len() {
-        let delta = out.delta[s];
-        if delta > limit && violation.is_none() {
-            *violation = Some(Violation {
-                what: if INNER {
-                    "roller ↔ inner raceway"
-                } else {
-                    "roller ↔ outer raceway"
-                },
-                index: j,
-                penetration: delta,
-            });
-        }
-        let q = out.q[s];
-        if q <= 0.0 {
-            continue;
-        }
-        let normal = out.force(s);
-        *f = add(*f, normal);
-        *m = add(*m, out.moment(s));
-        f_ring = sub(f_ring, normal);
-        load += q;
-        length += rs.lanes.len[s];
-        entrainment += q * out.u[s];
-        out.compact(s, loaded_slices, rs.lanes.len[s]);
-        loaded_slices += 1;
+    let sums = out.collect_loaded(model.slice_x.len(), &rs.lanes.len, limit);
+    if let (Some(penetration), None) = (sums.violation, &violation) {
+        *violation = Some(Violation {
+            what: if INNER {
+                "roller ↔ inner raceway"
+            } else {
+                "roller ↔ outer raceway"
+            },
+            index: j,
+            penetration,
+        });
     }
-    if load <= 0.0 {
-        return f_ring;
+    if sums.count == 0 {
+        return [0.0; 3];
     }
+    *f = add(*f, sums.force);
+    *m = add(*m, sums.moment);
+    let load = sums.load;
     table.force[j] = load;
     let (tmodel, loaded) = if INNER {
         (&model.traction.inner, &mut scratch.inner)
@@ -394,17 +378,19 @@ fn raceway_slices<const INNER: bool>(
     };
     let whole = ContactState {
         normal_force_n: load,
-        geometry: ContactGeometry::Line { length_m: length },
+        geometry: ContactGeometry::Line {
+            length_m: sums.length,
+        },
         reduced_radius_m: rs.reduced_radius,
         reduced_modulus_pa: rs.reduced_modulus,
-        rolling_speed_m_s: entrainment / load,
+        rolling_speed_m_s: sums.entrainment / load,
         sliding_speed_m_s: 0.0,
         temperature_k: rs.temperature_k,
         roughness_ra_m: rs.roughness,
         film_thickness_m: None,
     };
     let contact = loaded.batch.add_contact(tmodel, &whole);
-    let n = loaded_slices;
+    let n = sums.count;
     let first = loaded.batch.push_block(
         contact,
         &out.q[..n],
@@ -419,7 +405,7 @@ fn raceway_slices<const INNER: bool>(
     for (to, from) in loaded.vt.iter_mut().zip(&out.vt) {
         to.extend_from_slice(&from[..n]);
     }
-    f_ring
+    scale(sums.force, -1.0)
 }
 
 /// Pass 2 of the raceway contacts: evaluates the traction of every loaded slice (one batch per
@@ -433,19 +419,28 @@ fn apply_traction(model: &Model, diag: &mut Diagnostics, f_inner: &mut V3, table
     ] {
         let batch = &mut loaded.batch;
         batch.evaluate(tmodel);
+        let (q_all, vs_all, mu_all) = batch.forces_speeds_coefficients();
         for (j, contact, slots) in &loaded.blocks {
             let j = *j;
+            // the block's columns, cut to one length (no bounds checks in the loop)
+            let n = slots.len();
+            fn cut<'a>(column: &'a [f64], slots: &std::ops::Range<usize>, n: usize) -> &'a [f64] {
+                &column[slots.clone()][..n]
+            }
+            let (q, vs, mu) = (
+                cut(q_all, slots, n),
+                cut(vs_all, slots, n),
+                cut(mu_all, slots, n),
+            );
+            let [vtx, vty, vtz] = loaded.vt.each_ref().map(|c| cut(c, slots, n));
+            let [rx, ry, rz] = loaded.r_cp.each_ref().map(|c| cut(c, slots, n));
             // the block's friction force and moment are summed in registers, then applied once
             let (mut force, mut moment) = ([0.0; 3], [0.0; 3]);
-            for i in slots.clone() {
-                let vs = batch.sliding_speed(i);
-                if vs > 0.0 {
-                    let k = -batch.coefficient(i) * batch.normal_force(i) / vs;
-                    let vt = [loaded.vt[0][i], loaded.vt[1][i], loaded.vt[2][i]];
-                    let r_cp = [loaded.r_cp[0][i], loaded.r_cp[1][i], loaded.r_cp[2][i]];
-                    let friction = scale(vt, k);
+            for i in 0..n {
+                if vs[i] > 0.0 {
+                    let friction = scale([vtx[i], vty[i], vtz[i]], -mu[i] * q[i] / vs[i]);
                     force = add(force, friction);
-                    moment = add(moment, cross(r_cp, friction));
+                    moment = add(moment, cross([rx[i], ry[i], rz[i]], friction));
                 }
             }
             sc.force[j] = add(sc.force[j], force);
@@ -680,11 +675,16 @@ pub(crate) fn rhs(
                         cond.temperatures.outer_raceway_k
                     },
                 };
+                let reach = AxialReach::new(&body, &ends.end, centre, a);
                 for face in faces {
+                    if reach.bound(face, &ends.end) <= 0.0 {
+                        continue;
+                    }
                     let Some(ef) = end_force(
                         face,
                         &ends.end,
                         &body,
+                        &reach,
                         &rs,
                         &model.params.roller_end_rib,
                         &ends.rib_damping,
@@ -729,11 +729,16 @@ pub(crate) fn rhs(
                 axis: ac,
                 omega: wc,
             };
+            let reach = AxialReach::new(&body, &ends.end, centre, a);
             for face in &ends.pocket {
+                if reach.bound(face, &ends.end) <= 0.0 {
+                    continue;
+                }
                 let Some(ef) = end_force(
                     face,
                     &ends.end,
                     &body,
+                    &reach,
                     &rs,
                     &model.params.roller_end_cage,
                     &ends.pocket_damping,

@@ -131,31 +131,75 @@ impl SliceOutputs {
         }
     }
 
-    /// Moves the traction inputs of slot `from` (q, u, vs, r_cp, vt) to slot `to ≤ from` and
-    /// records the slice length `len` there: collects the loaded slices at the front.
-    #[inline(always)]
-    pub fn compact(&mut self, from: usize, to: usize, len: f64) {
-        self.q[to] = self.q[from];
-        self.u[to] = self.u[from];
-        self.vs[to] = self.vs[from];
-        self.len[to] = len;
-        for k in 0..3 {
-            self.r_cp[k][to] = self.r_cp[k][from];
-            self.vt[k][to] = self.vt[k][from];
+    /// Pass 1 over the first `n` slots (the slices, in slot order): sums the normal forces and
+    /// moments of the loaded slots and moves their traction inputs (q, u, vs, r_cp, vt, and
+    /// the slice length from `lens`) to the front, in slot order; notes the first approach
+    /// above `limit` (divergence check).
+    pub fn collect_loaded(&mut self, n: usize, lens: &[f64], limit: f64) -> LoadedSlots {
+        // every column cut to n: the loop has no bounds checks but the one on the
+        // destination slot, which is the same for all columns
+        let Self {
+            delta,
+            q,
+            force: [fx, fy, fz],
+            moment: [mx, my, mz],
+            r_cp: [rx, ry, rz],
+            vt: [tx, ty, tz],
+            vs,
+            u,
+            len,
+        } = self;
+        let (delta, lens) = (&delta[..n], &lens[..n]);
+        let (q, vs, u, len) = (&mut q[..n], &mut vs[..n], &mut u[..n], &mut len[..n]);
+        let (fx, fy, fz) = (&fx[..n], &fy[..n], &fz[..n]);
+        let (mx, my, mz) = (&mx[..n], &my[..n], &mz[..n]);
+        let (rx, ry, rz) = (&mut rx[..n], &mut ry[..n], &mut rz[..n]);
+        let (tx, ty, tz) = (&mut tx[..n], &mut ty[..n], &mut tz[..n]);
+        let mut sums = LoadedSlots::default();
+        for s in 0..n {
+            if delta[s] > limit && sums.violation.is_none() {
+                sums.violation = Some(delta[s]);
+            }
+            let qs = q[s];
+            if qs <= 0.0 {
+                continue;
+            }
+            sums.force = add(sums.force, [fx[s], fy[s], fz[s]]);
+            sums.moment = add(sums.moment, [mx[s], my[s], mz[s]]);
+            sums.load += qs;
+            sums.length += lens[s];
+            sums.entrainment += qs * u[s];
+            let to = sums.count;
+            q[to] = qs;
+            u[to] = u[s];
+            vs[to] = vs[s];
+            len[to] = lens[s];
+            rx[to] = rx[s];
+            ry[to] = ry[s];
+            rz[to] = rz[s];
+            tx[to] = tx[s];
+            ty[to] = ty[s];
+            tz[to] = tz[s];
+            sums.count += 1;
         }
+        sums
     }
+}
 
-    /// Normal force on the roller of slot `s`.
-    #[inline]
-    pub fn force(&self, s: usize) -> V3 {
-        [self.force[0][s], self.force[1][s], self.force[2][s]]
-    }
-
-    /// Moment of the normal force of slot `s`.
-    #[inline]
-    pub fn moment(&self, s: usize) -> V3 {
-        [self.moment[0][s], self.moment[1][s], self.moment[2][s]]
-    }
+/// Result of [`SliceOutputs::collect_loaded`].
+#[derive(Debug, Clone, Copy, Default)]
+pub(crate) struct LoadedSlots {
+    /// sum of the normal forces on the roller and of their moments about its centre
+    pub force: V3,
+    pub moment: V3,
+    /// total normal force, N; loaded length, m; Σ Q u (load-weighted entrainment × load)
+    pub load: f64,
+    pub length: f64,
+    pub entrainment: f64,
+    /// number of loaded slots (now at the front of the arrays)
+    pub count: usize,
+    /// first approach above the divergence limit, m
+    pub violation: Option<f64>,
 }
 
 /// Evaluates every slot of `sc` for the pair `k` (inner raceway when `INNER`); `race_drop` is
@@ -175,6 +219,11 @@ pub(crate) fn evaluate<const INNER: bool>(
 
 /// [`evaluate`] with the loop chosen by the caller: the AVX2 copy when `vector` (only on CPUs
 /// that support AVX2), else the portable loop.
+///
+/// First the approach of every slot ([`approaches`], cheap); the full slot loop then runs only
+/// over the whole vectors (groups of [`LANES`] slots) from the first to the last touching
+/// slot: a roller that is lightly loaded or tilted touches with a few slices only. The other
+/// slots get `q = 0`; their remaining outputs are not written.
 fn evaluate_with<const INNER: bool>(
     sc: &SliceConstants,
     k: &PairKinematics,
@@ -182,6 +231,28 @@ fn evaluate_with<const INNER: bool>(
     out: &mut SliceOutputs,
     vector: bool,
 ) {
+    #[cfg(not(target_arch = "x86_64"))]
+    let _ = vector;
+    let n = sc.x.len();
+    #[cfg(target_arch = "x86_64")]
+    if vector {
+        // SAFETY: `vector` is set only on CPUs with AVX2 ([`evaluate`], the test below).
+        unsafe { approaches_avx2::<INNER>(k, &sc.x, &sc.drop, race_drop, &mut out.delta) };
+    } else {
+        approaches::<INNER>(k, &sc.x, &sc.drop, race_drop, &mut out.delta);
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    approaches::<INNER>(k, &sc.x, &sc.drop, race_drop, &mut out.delta);
+    let delta = &out.delta[..n];
+    let Some(first) = delta.iter().position(|&d| d > 0.0) else {
+        out.q[..n].fill(0.0);
+        return;
+    };
+    let last = delta.iter().rposition(|&d| d > 0.0).unwrap_or(first);
+    let range = first / LANES * LANES..(last + 1).div_ceil(LANES) * LANES;
+    out.q[..range.start].fill(0.0);
+    out.q[range.end..n].fill(0.0);
+    let r = range;
     let [fx, fy, fz] = &mut out.force;
     let [mx, my, mz] = &mut out.moment;
     let [rx, ry, rz] = &mut out.r_cp;
@@ -192,40 +263,75 @@ fn evaluate_with<const INNER: bool>(
         ($kernel:ident) => {
             $kernel::<INNER>(
                 k,
-                &sc.x,
-                &sc.drop,
-                &sc.k,
-                &sc.c_max,
-                &sc.delta_star,
-                race_drop,
-                &mut out.delta,
-                &mut out.q,
-                fx,
-                fy,
-                fz,
-                mx,
-                my,
-                mz,
-                rx,
-                ry,
-                rz,
-                tx,
-                ty,
-                tz,
-                &mut out.vs,
-                &mut out.u,
+                &sc.x[r.clone()],
+                &sc.drop[r.clone()],
+                &sc.k[r.clone()],
+                &sc.c_max[r.clone()],
+                &sc.delta_star[r.clone()],
+                &race_drop[r.clone()],
+                &mut out.delta[r.clone()],
+                &mut out.q[r.clone()],
+                &mut fx[r.clone()],
+                &mut fy[r.clone()],
+                &mut fz[r.clone()],
+                &mut mx[r.clone()],
+                &mut my[r.clone()],
+                &mut mz[r.clone()],
+                &mut rx[r.clone()],
+                &mut ry[r.clone()],
+                &mut rz[r.clone()],
+                &mut tx[r.clone()],
+                &mut ty[r.clone()],
+                &mut tz[r.clone()],
+                &mut out.vs[r.clone()],
+                &mut out.u[r.clone()],
             )
         };
     }
     #[cfg(target_arch = "x86_64")]
     if vector {
-        // SAFETY: `vector` is set only on CPUs with AVX2 ([`evaluate`], the test below).
+        // SAFETY: as above.
         unsafe { call!(slots_avx2) };
         return;
     }
-    #[cfg(not(target_arch = "x86_64"))]
-    let _ = vector;
     call!(slots);
+}
+
+/// Distance `ρ` of the slice centre at `xs` from the ring axis and the approach `δ` of the
+/// slice (seed 000 (2.5): `R_i + R_w − ρ − z_s − z_race` inner, `ρ + R_w − R_o − z_s − z_race`
+/// outer), from `ρ(x)² = A + 2Bx + Cx²`.
+#[inline(always)]
+fn slot_approach<const INNER: bool>(
+    k: &PairKinematics,
+    xs: f64,
+    drop: f64,
+    race_drop: f64,
+) -> (f64, f64) {
+    let rho = (k.qa + xs * (2.0 * k.qb + xs * k.qc)).max(0.0).sqrt();
+    let delta = if INNER {
+        k.raceway_radius + k.rw - rho
+    } else {
+        rho + k.rw - k.raceway_radius
+    } - drop
+        - race_drop;
+    (rho, delta)
+}
+
+rolldyn_numerics::avx2_twin! {
+    /// The approach of every slot ([`slot_approach`]) into `delta_out`.
+    fn approaches<const INNER: bool>(
+        k: &PairKinematics,
+        x: &[f64],
+        drop: &[f64],
+        race_drop: &[f64],
+        delta_out: &mut [f64],
+    ) / approaches_avx2 {
+        let n = x.len();
+        let (drop, race_drop, delta_out) = (&drop[..n], &race_drop[..n], &mut delta_out[..n]);
+        for s in 0..n {
+            delta_out[s] = slot_approach::<INNER>(k, x[s], drop[s], race_drop[s]).1;
+        }
+    }
 }
 
 rolldyn_numerics::avx2_twin! {
@@ -281,13 +387,7 @@ rolldyn_numerics::avx2_twin! {
         let ring_spin_axis = scale(k.ring_axis, k.ring_spin);
         for s in 0..n_slots {
             let xs = x[s];
-            let rho = (k.qa + xs * (2.0 * k.qb + xs * k.qc)).max(0.0).sqrt();
-            let delta = if INNER {
-                k.raceway_radius + k.rw - rho
-            } else {
-                rho + k.rw - k.raceway_radius
-            } - drop[s]
-                - race_drop[s];
+            let (rho, delta) = slot_approach::<INNER>(k, xs, drop[s], race_drop[s]);
             let inv_rho = if rho > 0.0 { 1.0 / rho } else { 0.0 };
             let touching = delta > 0.0 && rho > 0.0;
             // outward unit normal of the ring axis through the slice centre; n points from the

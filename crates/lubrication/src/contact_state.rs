@@ -118,6 +118,16 @@ pub fn line_half_width(q: f64, l: f64, e: f64, r: f64) -> f64 {
     2.0 * (2.0 * q * r / (PI * l * e)).sqrt()
 }
 
+/// Mean Hertz pressure and half-width of a line contact, seed 000 (2.15)–(2.16), with one
+/// square root: p̄ by (2.15) and b from the load balance `Q = 2 b l p̄`, which is (2.16)
+/// (p̄ · b = Q/(2l) exactly). Both 0 without load.
+#[inline(always)]
+pub fn line_pressure_and_half_width(q: f64, l: f64, e: f64, r: f64) -> (f64, f64) {
+    let p = line_mean_pressure(q, l, e, r);
+    let b = if p > 0.0 { q / (2.0 * l * p) } else { 0.0 };
+    (p, b)
+}
+
 /// Load of a line contact giving the maximum pressure `p_max` (inverse of p_max = √(QE'/(2πlR'))).
 pub fn line_load_for_max_pressure(p_max: f64, l: f64, e: f64, r: f64) -> f64 {
     2.0 * PI * l * r * p_max * p_max / e
@@ -135,11 +145,11 @@ pub fn circular_load_for_max_pressure(p_max: f64, r: f64, e: f64) -> f64 {
 pub fn hertz(q: f64, geometry: &ContactGeometry, r: f64, e: f64) -> HertzContact {
     match *geometry {
         ContactGeometry::Line { length_m } => {
-            let pm = line_mean_pressure(q, length_m, e, r);
+            let (pm, b) = line_pressure_and_half_width(q, length_m, e, r);
             HertzContact {
                 mean_pressure_pa: pm,
                 max_pressure_pa: pm * 4.0 / PI,
-                half_width_m: line_half_width(q, length_m, e, r),
+                half_width_m: b,
                 ellipticity: f64::INFINITY,
                 is_line: true,
                 length_m,

@@ -20,7 +20,7 @@ use super::{
     PreparedContact, Rheology, SmallShearRate, TractionConfig, TractionModel,
     lubricated_coefficient, traction,
 };
-use crate::contact_state::{ContactGeometry, ContactState, line_half_width, line_mean_pressure};
+use crate::contact_state::{ContactGeometry, ContactState, line_pressure_and_half_width};
 use crate::film::{FilmFormula, rigid_piezoviscous_line_many};
 use crate::lubricant::{Lubricant, SolidThermal};
 use crate::viscosity::PiezoViscosity;
@@ -175,6 +175,16 @@ impl SliceBatch {
         first
     }
 
+    /// Normal forces (N), sliding speeds (m/s) and, after [`SliceBatch::evaluate`], traction
+    /// coefficients of all slices, in slice order (for loops over many slices).
+    pub fn forces_speeds_coefficients(&self) -> (&[f64], &[f64], &[f64]) {
+        (
+            &self.normal_force_n,
+            &self.sliding_speed_m_s,
+            &self.coefficient,
+        )
+    }
+
     /// Normal force of slice `i`, N.
     pub fn normal_force(&self, i: usize) -> f64 {
         self.normal_force_n[i]
@@ -258,6 +268,15 @@ impl SliceBatch {
         };
         let out = &mut self.coefficient;
         let cfg = &model.cfg;
+        // contacts whose film parameter is at or above Λ_hd take μ_hd unchanged; when that holds
+        // for every contact of the batch, the loop without the mixed blend (and its boundary
+        // law's `exp`) gives the same bits
+        let mixed = lf.mixed.filter(|lim| {
+            self.contacts
+                .iter()
+                .filter_map(|c| c.prepared.as_ref())
+                .any(|p| p.lambda < lim.lambda_hd)
+        });
         // The common laws get a loop in which the law's variants are compile-time constants, so
         // that the compiler sees a branch-free body and vectorises it.
         match (&lf.hydrodynamic, lf.boundary) {
@@ -266,7 +285,7 @@ impl SliceBatch {
                     && ms.piezo == PiezoViscosity::Barus =>
             {
                 let solid = ms.solid;
-                match (ms.rheology, lf.mixed) {
+                match (ms.rheology, mixed) {
                     (Rheology::ViscoElastic, Some(lim)) => {
                         evaluate_muraki::<true>(&slices, oil, cfg, solid, Some(lim), out)
                     }
@@ -407,21 +426,38 @@ impl ContactLanes {
         ] {
             column.resize(n, 0.0);
         }
+        // every column cut to n: no bounds checks in the loop
+        let prepared = &mut self.prepared[..n];
+        let (film, lambda) = (&mut self.film_central_m[..n], &mut self.lambda[..n]);
+        let (radius, modulus) = (
+            &mut self.reduced_radius_m[..n],
+            &mut self.reduced_modulus_pa[..n],
+        );
+        let (eta0, alpha, gamma) = (
+            &mut self.eta0[..n],
+            &mut self.alpha[..n],
+            &mut self.gamma[..n],
+        );
+        let (tau0, beta0, k_f) = (
+            &mut self.tau0[..n],
+            &mut self.beta0[..n],
+            &mut self.k_f[..n],
+        );
         for (i, &k) in contact_of.iter().enumerate() {
             let c = &contacts[k];
-            self.reduced_radius_m[i] = c.reduced_radius_m;
-            self.reduced_modulus_pa[i] = c.reduced_modulus_pa;
-            self.prepared[i] = c.prepared.is_some();
+            radius[i] = c.reduced_radius_m;
+            modulus[i] = c.reduced_modulus_pa;
+            prepared[i] = c.prepared.is_some();
             if let Some(p) = &c.prepared {
-                self.film_central_m[i] = p.film_central_m;
-                self.lambda[i] = p.lambda;
+                film[i] = p.film_central_m;
+                lambda[i] = p.lambda;
                 let pr = &p.props;
-                self.eta0[i] = pr.eta0;
-                self.alpha[i] = pr.alpha;
-                self.gamma[i] = pr.gamma;
-                self.tau0[i] = pr.tau0;
-                self.beta0[i] = pr.beta0;
-                self.k_f[i] = pr.k_f;
+                eta0[i] = pr.eta0;
+                alpha[i] = pr.alpha;
+                gamma[i] = pr.gamma;
+                tau0[i] = pr.tau0;
+                beta0[i] = pr.beta0;
+                k_f[i] = pr.k_f;
             }
         }
     }
@@ -500,14 +536,15 @@ fn evaluate_lubricated(
         let (q, l, e, r) = (normal_force_n[i], length_m[i], modulus[i], radius[i]);
         let v = sliding[i];
         let u_eff = rolling[i].abs().max(cfg.min_rolling_speed_m_s);
+        let (mean_pressure, half_width) = line_pressure_and_half_width(q, l, e, r);
         let parts = lubricated_coefficient(
             lf,
             oil,
             &props,
             film[i],
             lambda[i],
-            line_mean_pressure(q, l, e, r),
-            line_half_width(q, l, e, r),
+            mean_pressure,
+            half_width,
             u_eff,
             v,
         );

@@ -132,12 +132,19 @@ pub struct MurakiOutput {
 fn s_thermal(sigma: f64, d: f64, phi: f64, l: f64) -> (f64, bool) {
     let a = 1.0 + phi * sigma;
     let arg = a * a - d * phi * l;
-    let neg = arg < 0.0;
-    let r = arg.max(0.0).sqrt();
-    // (l/σ)·(σ + (2σ + Φσ² − D l)/(r + 1))/(a + r) over one common denominator
-    let s = l * (sigma * (r + 1.0) + 2.0 * sigma + phi * sigma * sigma - d * l)
-        / (sigma * (r + 1.0) * (a + r));
-    (s, neg)
+    let (num, den) = s_thermal_parts(sigma, d, phi, l, a, arg.max(0.0).sqrt());
+    (num / den, arg < 0.0)
+}
+
+/// Numerator and denominator of the cancellation-free (1.8):
+/// (l/σ)·(σ + (2σ + Φσ² − D l)/(r + 1))/(a + r) over one common denominator, with
+/// `a = 1 + Φσ` and `r = √(a² − DΦl)` given.
+#[inline(always)]
+fn s_thermal_parts(sigma: f64, d: f64, phi: f64, l: f64, a: f64, r: f64) -> (f64, f64) {
+    (
+        l * (sigma * (r + 1.0) + 2.0 * sigma + phi * sigma * sigma - d * l),
+        sigma * (r + 1.0) * (a + r),
+    )
 }
 
 /// Dimensionless mean shear stress S(σ, D, Φ) with the selected small-σ continuation.
@@ -157,18 +164,25 @@ pub fn dimensionless_stress(
             // sinh⁻¹σ = ln(1 + σ + σ²/(1 + √(1 + σ²))) (cheaper than std's hypot-based asinh,
             // no cancellation for small σ)
             let l = fastmath::ln_1p(sigma + sigma * sigma / (1.0 + (1.0 + sigma * sigma).sqrt()));
-            if d * l >= 2.0 * sigma {
-                let x = phi * sigma;
-                (
-                    2.0 * sigma / (d * (1.0 + (1.0 + x * x).sqrt())),
-                    true,
-                    false,
-                    false,
-                )
+            let elastic = d * l >= 2.0 * sigma;
+            // both branches share one square root and one division (a vectorised caller
+            // evaluates both): the elastic branch 2σ/(D(1 + √(1 + Φ²σ²))), the thermal one
+            // `s_thermal`
+            let x = phi * sigma;
+            let a = 1.0 + x;
+            let thermal_arg = a * a - d * phi * l;
+            let root = if elastic {
+                1.0 + x * x
             } else {
-                let (s, neg) = s_thermal(sigma, d, phi, l);
-                (s, false, neg, false)
+                thermal_arg.max(0.0)
             }
+            .sqrt();
+            let (num, den) = if elastic {
+                (2.0 * sigma, d * (1.0 + root))
+            } else {
+                s_thermal_parts(sigma, d, phi, l, a, root)
+            };
+            (num / den, elastic, !elastic && thermal_arg < 0.0, false)
         }
         SmallShearRate::SpecLinearBranch { sigma_min } => {
             let lin = sigma / d;
