@@ -236,7 +236,7 @@ fn evaluate_with<const INNER: bool>(
     let n = sc.x.len();
     #[cfg(target_arch = "x86_64")]
     if vector {
-        // SAFETY: `vector` is set only on CPUs with AVX2 ([`evaluate`], the test below).
+        // SAFETY: `vector` is set only on CPUs with AVX2 ([`evaluate`], the tests below).
         unsafe { approaches_avx2::<INNER>(k, &sc.x, &sc.drop, race_drop, &mut out.delta) };
     } else {
         approaches::<INNER>(k, &sc.x, &sc.drop, race_drop, &mut out.delta);
@@ -249,10 +249,10 @@ fn evaluate_with<const INNER: bool>(
         return;
     };
     let last = delta.iter().rposition(|&d| d > 0.0).unwrap_or(first);
-    let range = first / LANES * LANES..(last + 1).div_ceil(LANES) * LANES;
-    out.q[..range.start].fill(0.0);
-    out.q[range.end..n].fill(0.0);
-    let r = range;
+    // the whole vectors from the first to the last touching slot
+    let r = first / LANES * LANES..(last + 1).div_ceil(LANES) * LANES;
+    out.q[..r.start].fill(0.0);
+    out.q[r.end..n].fill(0.0);
     let [fx, fy, fz] = &mut out.force;
     let [mx, my, mz] = &mut out.moment;
     let [rx, ry, rz] = &mut out.r_cp;
