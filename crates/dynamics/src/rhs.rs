@@ -408,6 +408,13 @@ fn raceway_slices<const INNER: bool>(
     scale(sums.force, -1.0)
 }
 
+/// The `n` entries of `column` in the traction block `slots` (a slice of length `n`, so that a
+/// loop over `0..n` indexing several such slices has no bounds checks).
+#[inline]
+fn cut<'a>(column: &'a [f64], slots: &std::ops::Range<usize>, n: usize) -> &'a [f64] {
+    &column[slots.clone()][..n]
+}
+
 /// Pass 2 of the raceway contacts: evaluates the traction of every loaded slice (one batch per
 /// raceway, [`SliceBatch::evaluate`]) and adds the friction forces to the rollers, the inner
 /// ring (`f_inner`) and, with [`Tables::Fill`], the per-roller contact tables.
@@ -424,9 +431,6 @@ fn apply_traction(model: &Model, diag: &mut Diagnostics, f_inner: &mut V3, table
             let j = *j;
             // the block's columns, cut to one length (no bounds checks in the loop)
             let n = slots.len();
-            fn cut<'a>(column: &'a [f64], slots: &std::ops::Range<usize>, n: usize) -> &'a [f64] {
-                &column[slots.clone()][..n]
-            }
             let (q, vs, mu) = (
                 cut(q_all, slots, n),
                 cut(vs_all, slots, n),

@@ -112,15 +112,9 @@ pub fn line_mean_pressure(q: f64, l: f64, e: f64, r: f64) -> f64 {
     0.25 * (PI * q * e / (2.0 * l * r)).sqrt()
 }
 
-/// Half-width of a line contact, seed 000 (2.16): b = 2 √(2 Q R' / (π l E')).
-#[inline]
-pub fn line_half_width(q: f64, l: f64, e: f64, r: f64) -> f64 {
-    2.0 * (2.0 * q * r / (PI * l * e)).sqrt()
-}
-
 /// Mean Hertz pressure and half-width of a line contact, seed 000 (2.15)–(2.16), with one
-/// square root: p̄ by (2.15) and b from the load balance `Q = 2 b l p̄`, which is (2.16)
-/// (p̄ · b = Q/(2l) exactly). Both 0 without load.
+/// square root: p̄ by (2.15) and b from the load balance `Q = 2 b l p̄`, which is
+/// (2.16) b = 2 √(2 Q R' / (π l E')) (p̄ · b = Q/(2l) exactly). Both 0 without load.
 #[inline(always)]
 pub fn line_pressure_and_half_width(q: f64, l: f64, e: f64, r: f64) -> (f64, f64) {
     let p = line_mean_pressure(q, l, e, r);

@@ -268,15 +268,6 @@ impl SliceBatch {
         };
         let out = &mut self.coefficient;
         let cfg = &model.cfg;
-        // contacts whose film parameter is at or above Λ_hd take μ_hd unchanged; when that holds
-        // for every contact of the batch, the loop without the mixed blend (and its boundary
-        // law's `exp`) gives the same bits
-        let mixed = lf.mixed.filter(|lim| {
-            self.contacts
-                .iter()
-                .filter_map(|c| c.prepared.as_ref())
-                .any(|p| p.lambda < lim.lambda_hd)
-        });
         // The common laws get a loop in which the law's variants are compile-time constants, so
         // that the compiler sees a branch-free body and vectorises it.
         match (&lf.hydrodynamic, lf.boundary) {
@@ -285,7 +276,7 @@ impl SliceBatch {
                     && ms.piezo == PiezoViscosity::Barus =>
             {
                 let solid = ms.solid;
-                match (ms.rheology, mixed) {
+                match (ms.rheology, lf.mixed) {
                     (Rheology::ViscoElastic, Some(lim)) => {
                         evaluate_muraki::<true>(&slices, oil, cfg, solid, Some(lim), out)
                     }
