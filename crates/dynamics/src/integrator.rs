@@ -160,15 +160,19 @@ impl Dopri5 {
         self.y.len()
     }
 
-    #[inline]
-    fn stage(&mut self, h: f64, coeffs: &[(usize, f64)]) {
+    /// `ytmp = y + h Σ a_s k_s` over the stages `coeffs` (a compile-time count, and every
+    /// column cut to the dimension, so that the loop is vectorised).
+    #[inline(always)]
+    fn stage<const S: usize>(&mut self, h: f64, coeffs: [(usize, f64); S]) {
         let n = self.y.len();
+        let (k, y, ytmp) = (&self.k, &self.y[..n], &mut self.ytmp[..n]);
+        let columns = coeffs.map(|(s, _)| &k[s][..n]);
         for i in 0..n {
             let mut acc = 0.0;
-            for &(s, a) in coeffs {
-                acc += a * self.k[s][i];
+            for (column, &(_, a)) in columns.iter().zip(&coeffs) {
+                acc += a * column[i];
             }
-            self.ytmp[i] = self.y[i] + h * acc;
+            ytmp[i] = y[i] + h * acc;
         }
     }
 
@@ -198,38 +202,35 @@ impl Dopri5 {
                     sys.rhs(t + $c * h, ytmp, &mut k[$dst]);
                 }};
             }
-            self.stage(h, &[(0, A21)]);
+            self.stage(h, [(0, A21)]);
             eval!(1, C2);
-            self.stage(h, &[(0, A31), (1, A32)]);
+            self.stage(h, [(0, A31), (1, A32)]);
             eval!(2, C3);
-            self.stage(h, &[(0, A41), (1, A42), (2, A43)]);
+            self.stage(h, [(0, A41), (1, A42), (2, A43)]);
             eval!(3, C4);
-            self.stage(h, &[(0, A51), (1, A52), (2, A53), (3, A54)]);
+            self.stage(h, [(0, A51), (1, A52), (2, A53), (3, A54)]);
             eval!(4, C5);
-            self.stage(h, &[(0, A61), (1, A62), (2, A63), (3, A64), (4, A65)]);
+            self.stage(h, [(0, A61), (1, A62), (2, A63), (3, A64), (4, A65)]);
             eval!(5, 1.0);
-            self.stage(h, &[(0, A71), (2, A73), (3, A74), (4, A75), (5, A76)]);
+            self.stage(h, [(0, A71), (2, A73), (3, A74), (4, A75), (5, A76)]);
             std::mem::swap(&mut self.ytmp, &mut self.ynew);
             {
                 let (ynew, k) = (&self.ynew, &mut self.k);
                 sys.rhs_reported(t + h, ynew, &mut k[6]);
             }
             self.stats.rhs_evaluations += 6;
-            // error estimate
+            // error estimate (every column cut to the dimension: no bounds checks)
+            let [k0, _, k2, k3, k4, k5, k6] = self.k.each_ref().map(|c| &c[..n]);
+            let (y, ynew) = (&self.y[..n], &self.ynew[..n]);
+            let (scale, relative) = (&self.scale[..n], &self.relative[..n]);
             let mut err = 0.0_f64;
             let mut arg = 0usize;
             for i in 0..n {
                 let e = h
-                    * (E1 * self.k[0][i]
-                        + E3 * self.k[2][i]
-                        + E4 * self.k[3][i]
-                        + E5 * self.k[4][i]
-                        + E6 * self.k[5][i]
-                        + E7 * self.k[6][i]);
-                let sc = set.tolerance
-                    * (self.scale[i] + self.relative[i] * self.y[i].abs().max(self.ynew[i].abs()));
+                    * (E1 * k0[i] + E3 * k2[i] + E4 * k3[i] + E5 * k4[i] + E6 * k5[i] + E7 * k6[i]);
+                let sc = set.tolerance * (scale[i] + relative[i] * y[i].abs().max(ynew[i].abs()));
                 let r = (e / sc).abs();
-                if !r.is_finite() || !self.ynew[i].is_finite() || !self.k[6][i].is_finite() {
+                if !r.is_finite() || !ynew[i].is_finite() || !k6[i].is_finite() {
                     if nonfinite_at.is_none() {
                         nonfinite_at = Some(i);
                     }
@@ -250,22 +251,25 @@ impl Dopri5 {
             self.stats.limiting[arg] += 1;
             if err <= 1.0 {
                 // dense output coefficients (Hairer's contd5)
+                let [k0, _, k2, k3, k4, k5, k6] = self.k.each_ref().map(|c| &c[..n]);
+                let (y, ynew) = (&self.y[..n], &self.ynew[..n]);
+                let [d0, d1, d2, d3, d4] = self.dense.each_mut().map(|c| &mut c[..n]);
                 for i in 0..n {
-                    let y0 = self.y[i];
-                    let y1 = self.ynew[i];
+                    let y0 = y[i];
+                    let y1 = ynew[i];
                     let dy = y1 - y0;
-                    let bspl = h * self.k[0][i] - dy;
-                    self.dense[0][i] = y0;
-                    self.dense[1][i] = dy;
-                    self.dense[2][i] = bspl;
-                    self.dense[3][i] = dy - h * self.k[6][i] - bspl;
-                    self.dense[4][i] = h
-                        * (D1 * self.k[0][i]
-                            + D3 * self.k[2][i]
-                            + D4 * self.k[3][i]
-                            + D5 * self.k[4][i]
-                            + D6 * self.k[5][i]
-                            + D7 * self.k[6][i]);
+                    let bspl = h * k0[i] - dy;
+                    d0[i] = y0;
+                    d1[i] = dy;
+                    d2[i] = bspl;
+                    d3[i] = dy - h * k6[i] - bspl;
+                    d4[i] = h
+                        * (D1 * k0[i]
+                            + D3 * k2[i]
+                            + D4 * k3[i]
+                            + D5 * k4[i]
+                            + D6 * k5[i]
+                            + D7 * k6[i]);
                 }
                 self.dense_t = t;
                 self.dense_h = h;

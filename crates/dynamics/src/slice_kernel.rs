@@ -11,10 +11,11 @@
 
 use crate::vec3::{V3, add, axpy, cross, dot, scale, sub};
 use rolldyn_contact::damping::SliceDamping;
+use rolldyn_numerics::avx2::LoopCopy;
 use rolldyn_numerics::fastmath;
 
-/// Vector width the slice arrays are padded to (AVX2: four `f64`).
-pub(crate) const LANES: usize = 4;
+/// Vector width the slice arrays are padded to: the widest loop copy's (AVX-512F: eight `f64`).
+pub(crate) const LANES: usize = LoopCopy::MAX_LANES;
 
 /// Per-slice constants of one raceway, padded to a multiple of [`LANES`]. Padding slots never
 /// touch (their drop is +∞) and carry no stiffness, damping or length.
@@ -210,18 +211,14 @@ pub(crate) fn evaluate<const INNER: bool>(
     race_drop: &[f64],
     out: &mut SliceOutputs,
 ) {
-    #[cfg(target_arch = "x86_64")]
-    let vector = std::arch::is_x86_feature_detected!("avx2");
-    #[cfg(not(target_arch = "x86_64"))]
-    let vector = false;
-    evaluate_with::<INNER>(sc, k, race_drop, out, vector);
+    evaluate_with::<INNER>(sc, k, race_drop, out, LoopCopy::detect());
 }
 
-/// [`evaluate`] with the loop chosen by the caller: the AVX2 copy when `vector` (only on CPUs
-/// that support AVX2), else the portable loop.
+/// [`evaluate`] with the compiled copy of the loops chosen by the caller (only one that the CPU
+/// supports: [`LoopCopy::detect`] or narrower).
 ///
 /// First the approach of every slot ([`approaches`], cheap); the full slot loop then runs only
-/// over the whole vectors (groups of [`LANES`] slots) from the first to the last touching
+/// over the whole vectors (groups of [`LoopCopy::lanes`] slots) from the first to the last touching
 /// slot: a roller that is lightly loaded or tilted touches with a few slices only. The other
 /// slots get `q = 0`; their remaining outputs are not written.
 fn evaluate_with<const INNER: bool>(
@@ -229,20 +226,22 @@ fn evaluate_with<const INNER: bool>(
     k: &PairKinematics,
     race_drop: &[f64],
     out: &mut SliceOutputs,
-    vector: bool,
+    copy: LoopCopy,
 ) {
-    #[cfg(not(target_arch = "x86_64"))]
-    let _ = vector;
     let n = sc.x.len();
-    #[cfg(target_arch = "x86_64")]
-    if vector {
-        // SAFETY: `vector` is set only on CPUs with AVX2 ([`evaluate`], the tests below).
-        unsafe { approaches_avx2::<INNER>(k, &sc.x, &sc.drop, race_drop, &mut out.delta) };
-    } else {
-        approaches::<INNER>(k, &sc.x, &sc.drop, race_drop, &mut out.delta);
+    macro_rules! approach {
+        ($loop:ident) => {
+            $loop::<INNER>(k, &sc.x, &sc.drop, race_drop, &mut out.delta)
+        };
     }
-    #[cfg(not(target_arch = "x86_64"))]
-    approaches::<INNER>(k, &sc.x, &sc.drop, race_drop, &mut out.delta);
+    match copy {
+        // SAFETY: `copy` names only copies the CPU supports ([`evaluate`], the tests below).
+        #[cfg(target_arch = "x86_64")]
+        LoopCopy::Avx512 => unsafe { approach!(approaches_avx512) },
+        #[cfg(target_arch = "x86_64")]
+        LoopCopy::Avx2 => unsafe { approach!(approaches_avx2) },
+        _ => approach!(approaches),
+    }
     let delta = &out.delta[..n];
     let Some(first) = delta.iter().position(|&d| d > 0.0) else {
         out.q[..n].fill(0.0);
@@ -250,7 +249,8 @@ fn evaluate_with<const INNER: bool>(
     };
     let last = delta.iter().rposition(|&d| d > 0.0).unwrap_or(first);
     // the whole vectors from the first to the last touching slot
-    let r = first / LANES * LANES..(last + 1).div_ceil(LANES) * LANES;
+    let lanes = copy.lanes();
+    let r = first / lanes * lanes..(last + 1).div_ceil(lanes) * lanes;
     out.q[..r.start].fill(0.0);
     out.q[r.end..n].fill(0.0);
     let [fx, fy, fz] = &mut out.force;
@@ -288,13 +288,14 @@ fn evaluate_with<const INNER: bool>(
             )
         };
     }
-    #[cfg(target_arch = "x86_64")]
-    if vector {
+    match copy {
         // SAFETY: as above.
-        unsafe { call!(slots_avx2) };
-        return;
+        #[cfg(target_arch = "x86_64")]
+        LoopCopy::Avx512 => unsafe { call!(slots_avx512) },
+        #[cfg(target_arch = "x86_64")]
+        LoopCopy::Avx2 => unsafe { call!(slots_avx2) },
+        _ => call!(slots),
     }
-    call!(slots);
 }
 
 /// Distance `ρ` of the slice centre at `xs` from the ring axis and the approach `δ` of the
@@ -325,7 +326,7 @@ rolldyn_numerics::avx2_twin! {
         drop: &[f64],
         race_drop: &[f64],
         delta_out: &mut [f64],
-    ) / approaches_avx2 {
+    ) / approaches_avx2 / approaches_avx512 {
         let n = x.len();
         let (drop, race_drop, delta_out) = (&drop[..n], &race_drop[..n], &mut delta_out[..n]);
         for s in 0..n {
@@ -364,7 +365,7 @@ rolldyn_numerics::avx2_twin! {
         tz: &mut [f64],
         vs_out: &mut [f64],
         u_out: &mut [f64],
-    ) / slots_avx2 {
+    ) / slots_avx2 / slots_avx512 {
         // equal lengths, known to the compiler: no bounds checks in the loop
         let n_slots = x.len();
         let (drop, stiff, c_max, delta_star, race_drop) = (
@@ -558,22 +559,43 @@ mod tests {
         }
     }
 
-    /// The AVX2 copy and the portable loop give the same bits.
+    /// The AVX2 and AVX-512F copies (those this CPU supports) and the portable loop give the
+    /// same bits.
     #[test]
     fn vector_and_portable_loops_agree() {
         let sc = constants();
-        let k = pair(true);
-        let mut vector = SliceOutputs::new(sc.x.len());
-        evaluate::<true>(&sc, &k, &sc.zero, &mut vector);
-        let mut portable = SliceOutputs::new(sc.x.len());
-        evaluate_with::<true>(&sc, &k, &sc.zero, &mut portable, false);
+        // every approach and force; the other outputs of the loaded slots (the loop leaves
+        // those of slots outside its vectors unwritten, and the copies' vectors differ in width)
         let bits = |o: &SliceOutputs| {
-            let mut all = vec![&o.delta, &o.q, &o.vs, &o.u];
+            let mut all = vec![&o.vs, &o.u];
             all.extend(o.force.iter().chain(&o.moment).chain(&o.r_cp).chain(&o.vt));
-            all.iter()
-                .flat_map(|v| v.iter().map(|x| x.to_bits()))
-                .collect::<Vec<_>>()
+            let loaded = (0..o.q.len()).filter(|&s| o.q[s] > 0.0);
+            let mut bits: Vec<u64> = o.delta.iter().chain(&o.q).map(|x| x.to_bits()).collect();
+            bits.extend(loaded.flat_map(|s| all.iter().map(move |v| v[s].to_bits())));
+            bits
         };
-        assert_eq!(bits(&vector), bits(&portable));
+        let best = LoopCopy::detect();
+        for copy in [LoopCopy::Avx2, LoopCopy::Avx512] {
+            if best.lanes() < copy.lanes() || best == LoopCopy::Portable {
+                continue;
+            }
+            for inner in [true, false] {
+                let k = pair(inner);
+                let run = |copy| {
+                    let mut out = SliceOutputs::new(sc.x.len());
+                    if inner {
+                        evaluate_with::<true>(&sc, &k, &sc.zero, &mut out, copy);
+                    } else {
+                        evaluate_with::<false>(&sc, &k, &sc.zero, &mut out, copy);
+                    }
+                    bits(&out)
+                };
+                assert_eq!(
+                    run(copy),
+                    run(LoopCopy::Portable),
+                    "{copy:?}, inner {inner}"
+                );
+            }
+        }
     }
 }

@@ -106,20 +106,75 @@ pub struct HertzContact {
     pub length_m: f64,
 }
 
-/// Mean Hertz pressure of a line contact, seed 000 (2.15): p̄ = ¼ √(π Q E' / (2 l R')).
-#[inline]
-pub fn line_mean_pressure(q: f64, l: f64, e: f64, r: f64) -> f64 {
-    0.25 * (PI * q * e / (2.0 * l * r)).sqrt()
+/// Mean Hertz pressure p̄ and half-width b of a loaded contact with their reciprocals: the
+/// traction law (seed 000 (1.6)–(1.9)) divides by both, so a slice pays for the reciprocals once.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SlicePressure {
+    /// p̄, Pa
+    pub mean_pa: f64,
+    /// b, m
+    pub half_width_m: f64,
+    /// 1/p̄, 1/Pa
+    pub inv_mean: f64,
+    /// 1/b, 1/m
+    pub inv_half_width: f64,
 }
 
-/// Mean Hertz pressure and half-width of a line contact, seed 000 (2.15)–(2.16), with one
-/// square root: p̄ by (2.15) and b from the load balance `Q = 2 b l p̄`, which is
-/// (2.16) b = 2 √(2 Q R' / (π l E')) (p̄ · b = Q/(2l) exactly). Both 0 without load.
+impl SlicePressure {
+    /// Line contact of load `q` (N) over the length `l` (m) with R' = `r`, E' = `e`:
+    /// [`SlicePressure::line_with`] and [`line_stiffness`].
+    #[inline(always)]
+    pub fn line(q: f64, l: f64, e: f64, r: f64) -> Self {
+        Self::line_with(q, l, line_stiffness(e, r))
+    }
+
+    /// Line contact with `k` = [`line_stiffness`] (a per-contact constant): with the load per
+    /// length w = Q/l and s = √(k w), p̄ = s/4 is (2.15) and b = 2w/s the load balance
+    /// `Q = 2 b l p̄`, which is (2.16) b = 2 √(2 Q R' / (π l E')). One square root and two
+    /// divisions give all four values (1/s and 1/w from one reciprocal of w s). Without load
+    /// all four are 0.
+    #[inline(always)]
+    pub fn line_with(q: f64, l: f64, k: f64) -> Self {
+        let w = q / l;
+        let s = (k * w).sqrt();
+        let t = 1.0 / (w * s);
+        let (inv_s, inv_w) = (w * t, s * t);
+        if w > 0.0 {
+            Self {
+                mean_pa: 0.25 * s,
+                half_width_m: 2.0 * w * inv_s,
+                inv_mean: 4.0 * inv_s,
+                inv_half_width: 0.5 * s * inv_w,
+            }
+        } else {
+            Self::UNLOADED
+        }
+    }
+
+    /// Any contact from its p̄ and b (one division each).
+    #[inline]
+    pub fn of(mean_pa: f64, half_width_m: f64) -> Self {
+        Self {
+            mean_pa,
+            half_width_m,
+            inv_mean: 1.0 / mean_pa,
+            inv_half_width: 1.0 / half_width_m,
+        }
+    }
+
+    /// No load.
+    pub const UNLOADED: Self = Self {
+        mean_pa: 0.0,
+        half_width_m: 0.0,
+        inv_mean: 0.0,
+        inv_half_width: 0.0,
+    };
+}
+
+/// k = π E'/(2 R') of a line contact, Pa/m: p̄ = ¼ √(k Q/l), seed 000 (2.15).
 #[inline(always)]
-pub fn line_pressure_and_half_width(q: f64, l: f64, e: f64, r: f64) -> (f64, f64) {
-    let p = line_mean_pressure(q, l, e, r);
-    let b = if p > 0.0 { q / (2.0 * l * p) } else { 0.0 };
-    (p, b)
+pub fn line_stiffness(e: f64, r: f64) -> f64 {
+    PI * e / (2.0 * r)
 }
 
 /// Load of a line contact giving the maximum pressure `p_max` (inverse of p_max = √(QE'/(2πlR'))).
@@ -139,11 +194,11 @@ pub fn circular_load_for_max_pressure(p_max: f64, r: f64, e: f64) -> f64 {
 pub fn hertz(q: f64, geometry: &ContactGeometry, r: f64, e: f64) -> HertzContact {
     match *geometry {
         ContactGeometry::Line { length_m } => {
-            let (pm, b) = line_pressure_and_half_width(q, length_m, e, r);
+            let sp = SlicePressure::line(q, length_m, e, r);
             HertzContact {
-                mean_pressure_pa: pm,
-                max_pressure_pa: pm * 4.0 / PI,
-                half_width_m: b,
+                mean_pressure_pa: sp.mean_pa,
+                max_pressure_pa: sp.mean_pa * 4.0 / PI,
+                half_width_m: sp.half_width_m,
                 ellipticity: f64::INFINITY,
                 is_line: true,
                 length_m,

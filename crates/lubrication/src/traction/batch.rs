@@ -16,11 +16,11 @@
 
 use super::table::HotProps;
 use super::{
-    BoundaryFriction, FrictionLaw, Hydrodynamic, LubricatedFriction, MixedLimits, MurakiSettings,
-    PreparedContact, Rheology, SmallShearRate, TractionConfig, TractionModel,
-    lubricated_coefficient, traction,
+    BoundaryFriction, ContactTraction, FrictionLaw, Hydrodynamic, LubricatedFriction, MixedLimits,
+    MurakiContact, MurakiSettings, MurakiSlice, PreparedContact, Rheology, SmallShearRate,
+    TractionConfig, TractionModel, lubricated_coefficient, traction,
 };
-use crate::contact_state::{ContactGeometry, ContactState, line_pressure_and_half_width};
+use crate::contact_state::{ContactGeometry, ContactState, SlicePressure, line_stiffness};
 use crate::film::{FilmFormula, rigid_piezoviscous_line_many};
 use crate::lubricant::{Lubricant, SolidThermal};
 use crate::viscosity::PiezoViscosity;
@@ -258,7 +258,7 @@ impl SliceBatch {
             }
             return;
         };
-        self.lanes.gather(&self.contacts, &self.contact_of);
+        self.lanes.gather(lf, &self.contacts, &self.contact_of);
         let slices = Slices {
             lanes: &self.lanes,
             normal_force_n: &self.normal_force_n,
@@ -382,74 +382,122 @@ impl PendingFilms {
     }
 }
 
-/// Per-slice copies of their contact's data, so that the main loop reads contiguous arrays.
+/// Per-slice copies of their contact's data ([`ContactTraction`] and the line stiffness
+/// π E'/(2 R')), so that the main loop reads contiguous arrays. Each contact's row is computed
+/// once (its divisions included) and then copied to its slices.
 #[derive(Debug, Clone, Default)]
 struct ContactLanes {
-    /// 1 when the contact is prepared (lubricated and loaded), else 0
+    rows: Vec<(bool, f64, ContactTraction)>,
+    /// the contact is prepared (lubricated and loaded)
     prepared: Vec<bool>,
-    film_central_m: Vec<f64>,
+    line_stiffness: Vec<f64>,
     lambda: Vec<f64>,
-    reduced_radius_m: Vec<f64>,
-    reduced_modulus_pa: Vec<f64>,
+    mixed_weight: Vec<f64>,
     eta0: Vec<f64>,
     alpha: Vec<f64>,
-    gamma: Vec<f64>,
+    shear_modulus: Vec<f64>,
+    inv_shear_modulus: Vec<f64>,
     tau0: Vec<f64>,
     beta0: Vec<f64>,
-    k_f: Vec<f64>,
+    film: Vec<f64>,
+    inv_tau0_film: Vec<f64>,
+    tau0_sq_film: Vec<f64>,
+    film_conduction: Vec<f64>,
 }
 
+/// The number of f64 columns of [`ContactLanes`].
+const LANE_COLUMNS: usize = 13;
+
 impl ContactLanes {
-    fn gather(&mut self, contacts: &[Contact], contact_of: &[usize]) {
-        let n = contact_of.len();
-        self.prepared.resize(n, false);
-        self.film_central_m.resize(n, 0.0);
-        self.lambda.resize(n, 0.0);
-        self.reduced_radius_m.resize(n, 0.0);
-        self.reduced_modulus_pa.resize(n, 0.0);
-        for column in [
+    fn columns(&mut self) -> [&mut Vec<f64>; LANE_COLUMNS] {
+        [
+            &mut self.line_stiffness,
+            &mut self.lambda,
+            &mut self.mixed_weight,
             &mut self.eta0,
             &mut self.alpha,
-            &mut self.gamma,
+            &mut self.shear_modulus,
+            &mut self.inv_shear_modulus,
             &mut self.tau0,
             &mut self.beta0,
-            &mut self.k_f,
-        ] {
+            &mut self.film,
+            &mut self.inv_tau0_film,
+            &mut self.tau0_sq_film,
+            &mut self.film_conduction,
+        ]
+    }
+
+    fn gather(&mut self, lf: &LubricatedFriction, contacts: &[Contact], contact_of: &[usize]) {
+        self.rows.clear();
+        self.rows.extend(contacts.iter().map(|c| {
+            let stiffness = line_stiffness(c.reduced_modulus_pa, c.reduced_radius_m);
+            match &c.prepared {
+                Some(p) => (
+                    true,
+                    stiffness,
+                    ContactTraction::new(lf, &p.props, p.film_central_m, p.lambda),
+                ),
+                None => (false, stiffness, ContactTraction::default()),
+            }
+        }));
+        let n = contact_of.len();
+        for column in self.columns() {
             column.resize(n, 0.0);
         }
+        self.prepared.clear();
+        self.prepared
+            .extend(contact_of.iter().map(|&k| self.rows[k].0));
+        let Self {
+            rows,
+            prepared: _,
+            line_stiffness,
+            lambda,
+            mixed_weight,
+            eta0,
+            alpha,
+            shear_modulus,
+            inv_shear_modulus,
+            tau0,
+            beta0,
+            film,
+            inv_tau0_film,
+            tau0_sq_film,
+            film_conduction,
+        } = self;
         // every column cut to n: no bounds checks in the loop
-        let prepared = &mut self.prepared[..n];
-        let (film, lambda) = (&mut self.film_central_m[..n], &mut self.lambda[..n]);
-        let (radius, modulus) = (
-            &mut self.reduced_radius_m[..n],
-            &mut self.reduced_modulus_pa[..n],
+        let (stiffness, lambda, weight) = (
+            &mut line_stiffness[..n],
+            &mut lambda[..n],
+            &mut mixed_weight[..n],
         );
-        let (eta0, alpha, gamma) = (
-            &mut self.eta0[..n],
-            &mut self.alpha[..n],
-            &mut self.gamma[..n],
+        let (eta0, alpha, gamma, inv_gamma) = (
+            &mut eta0[..n],
+            &mut alpha[..n],
+            &mut shear_modulus[..n],
+            &mut inv_shear_modulus[..n],
         );
-        let (tau0, beta0, k_f) = (
-            &mut self.tau0[..n],
-            &mut self.beta0[..n],
-            &mut self.k_f[..n],
+        let (tau0, beta0, film) = (&mut tau0[..n], &mut beta0[..n], &mut film[..n]);
+        let (inv_tau0_film, tau0_sq_film, conduction) = (
+            &mut inv_tau0_film[..n],
+            &mut tau0_sq_film[..n],
+            &mut film_conduction[..n],
         );
         for (i, &k) in contact_of.iter().enumerate() {
-            let c = &contacts[k];
-            radius[i] = c.reduced_radius_m;
-            modulus[i] = c.reduced_modulus_pa;
-            prepared[i] = c.prepared.is_some();
-            if let Some(p) = &c.prepared {
-                film[i] = p.film_central_m;
-                lambda[i] = p.lambda;
-                let pr = &p.props;
-                eta0[i] = pr.eta0;
-                alpha[i] = pr.alpha;
-                gamma[i] = pr.gamma;
-                tau0[i] = pr.tau0;
-                beta0[i] = pr.beta0;
-                k_f[i] = pr.k_f;
-            }
+            let (_, k_line, ct) = &rows[k];
+            let m = &ct.muraki;
+            stiffness[i] = *k_line;
+            lambda[i] = ct.lambda;
+            weight[i] = ct.mixed_weight;
+            eta0[i] = m.eta0;
+            alpha[i] = m.alpha;
+            gamma[i] = m.shear_modulus;
+            inv_gamma[i] = m.inv_shear_modulus;
+            tau0[i] = m.tau0;
+            beta0[i] = m.beta0;
+            film[i] = m.film;
+            inv_tau0_film[i] = m.inv_tau0_film;
+            tau0_sq_film[i] = m.tau0_sq_film;
+            conduction[i] = m.film_conduction;
         }
     }
 }
@@ -469,7 +517,7 @@ rolldyn_numerics::avx2_twin! {
         solid: SolidThermal,
         mixed: Option<MixedLimits>,
         out: &mut [f64],
-    ) = evaluate_muraki_portable / evaluate_muraki_avx2 {
+    ) = evaluate_muraki_portable / evaluate_muraki_avx2 / evaluate_muraki_avx512 {
         let rheology = if THERMAL {
             Rheology::ViscoElastic
         } else {
@@ -507,38 +555,43 @@ fn evaluate_lubricated(
     let (normal_force_n, length_m) = (&slices.normal_force_n[..n], &slices.length_m[..n]);
     let rolling = &slices.rolling_speed_m_s[..n];
     let sliding = &slices.sliding_speed_m_s[..n];
-    let (prepared, film, lambda) = (
-        &lanes.prepared[..n],
-        &lanes.film_central_m[..n],
-        &lanes.lambda[..n],
+    let (prepared, stiffness) = (&lanes.prepared[..n], &lanes.line_stiffness[..n]);
+    let (lambda, weight) = (&lanes.lambda[..n], &lanes.mixed_weight[..n]);
+    let (eta0, alpha) = (&lanes.eta0[..n], &lanes.alpha[..n]);
+    let (gamma, inv_gamma) = (&lanes.shear_modulus[..n], &lanes.inv_shear_modulus[..n]);
+    let (tau0, beta0, film) = (&lanes.tau0[..n], &lanes.beta0[..n], &lanes.film[..n]);
+    let (inv_tau0_film, tau0_sq_film, conduction) = (
+        &lanes.inv_tau0_film[..n],
+        &lanes.tau0_sq_film[..n],
+        &lanes.film_conduction[..n],
     );
-    let (radius, modulus) = (&lanes.reduced_radius_m[..n], &lanes.reduced_modulus_pa[..n]);
-    let (eta0, alpha, gamma) = (&lanes.eta0[..n], &lanes.alpha[..n], &lanes.gamma[..n]);
-    let (tau0, beta0, k_f) = (&lanes.tau0[..n], &lanes.beta0[..n], &lanes.k_f[..n]);
     for i in 0..n {
-        let props = HotProps {
-            eta0: eta0[i],
-            alpha: alpha[i],
-            gamma: gamma[i],
-            tau0: tau0[i],
-            beta0: beta0[i],
-            k_f: k_f[i],
+        let contact = ContactTraction {
+            muraki: MurakiContact {
+                eta0: eta0[i],
+                alpha: alpha[i],
+                shear_modulus: gamma[i],
+                inv_shear_modulus: inv_gamma[i],
+                tau0: tau0[i],
+                beta0: beta0[i],
+                film: film[i],
+                inv_tau0_film: inv_tau0_film[i],
+                tau0_sq_film: tau0_sq_film[i],
+                film_conduction: conduction[i],
+            },
+            lambda: lambda[i],
+            mixed_weight: weight[i],
         };
-        let (q, l, e, r) = (normal_force_n[i], length_m[i], modulus[i], radius[i]);
+        let q = normal_force_n[i];
         let v = sliding[i];
         let u_eff = rolling[i].abs().max(cfg.min_rolling_speed_m_s);
-        let (mean_pressure, half_width) = line_pressure_and_half_width(q, l, e, r);
-        let parts = lubricated_coefficient(
-            lf,
-            oil,
-            &props,
-            film[i],
-            lambda[i],
-            mean_pressure,
-            half_width,
-            u_eff,
-            v,
-        );
+        let slice = MurakiSlice {
+            pressure: SlicePressure::line_with(q, length_m[i], stiffness[i]),
+            rolling_speed: u_eff,
+            inv_rolling_speed: 1.0 / u_eff,
+            sliding_speed: v.abs(),
+        };
+        let parts = lubricated_coefficient(lf, oil, &contact, &slice);
         let mu = parts.mu * cfg.sliding_sign(v);
         coefficient[i] = if prepared[i] && q > 0.0 { mu } else { 0.0 };
     }

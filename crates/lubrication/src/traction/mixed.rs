@@ -29,6 +29,16 @@ impl MixedLimits {
     };
 }
 
+impl MixedLimits {
+    /// The blend weight ((Λ − Λ_hd)/(Λ_bd − Λ_hd))⁶ of (1.3) in the mixed regime. It depends on
+    /// the contact's Λ only, so a batch computes it once per contact.
+    #[inline(always)]
+    pub fn weight(&self, lambda: f64) -> f64 {
+        let x = (lambda - self.lambda_hd) / (self.lambda_bd - self.lambda_hd);
+        x.powi(6)
+    }
+}
+
 /// (1.3): μ_bd for Λ < Λ_bd; (μ_bd − μ_hd)(Λ − Λ_hd)⁶/(Λ_bd − Λ_hd)⁶ + μ_hd for Λ_bd ≤ Λ < Λ_hd;
 /// μ_hd for Λ ≥ Λ_hd. Continuous at both limits. Returns (μ_r, regime).
 #[inline]
@@ -38,11 +48,22 @@ pub fn mixed_friction(
     lambda: f64,
     lim: &MixedLimits,
 ) -> (f64, FrictionRegime) {
+    mixed_friction_weighted(mu_bd, mu_hd, lambda, lim.weight(lambda), lim)
+}
+
+/// [`mixed_friction`] with the weight [`MixedLimits::weight`]`(lambda)` given.
+#[inline(always)]
+pub fn mixed_friction_weighted(
+    mu_bd: f64,
+    mu_hd: f64,
+    lambda: f64,
+    weight: f64,
+    lim: &MixedLimits,
+) -> (f64, FrictionRegime) {
     if lambda < lim.lambda_bd {
         (mu_bd, FrictionRegime::Boundary)
     } else if lambda < lim.lambda_hd {
-        let x = (lambda - lim.lambda_hd) / (lim.lambda_bd - lim.lambda_hd);
-        ((mu_bd - mu_hd) * x.powi(6) + mu_hd, FrictionRegime::Mixed)
+        ((mu_bd - mu_hd) * weight + mu_hd, FrictionRegime::Mixed)
     } else {
         (mu_hd, FrictionRegime::Hydrodynamic)
     }

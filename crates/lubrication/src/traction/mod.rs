@@ -28,11 +28,15 @@ pub mod two_level;
 pub use batch::{BatchContact, SliceBatch};
 pub use boundary::{BoundaryFriction, kragelsky};
 pub use flash::{Seed001Inputs, Seed001Result, Seed001Settings, seed001_friction};
-pub use mixed::{MixedLimits, mixed_friction};
-pub use muraki::{MurakiInputs, MurakiOutput, MurakiSettings, Rheology, SmallShearRate, muraki};
+pub use mixed::{MixedLimits, mixed_friction, mixed_friction_weighted};
+use muraki::muraki_slice;
+pub use muraki::{
+    MurakiContact, MurakiInputs, MurakiOutput, MurakiSettings, MurakiSlice, Rheology,
+    SmallShearRate, muraki,
+};
 pub use two_level::{TwoLevelLaw, regularisation};
 
-use crate::contact_state::ContactState;
+use crate::contact_state::{ContactGeometry, ContactState, SlicePressure};
 use crate::error::LubError;
 use crate::film::{FilmFormula, FilmInputs, FilmSettings, film_core, resolve_formula};
 use crate::lubricant::{Lubricant, Property};
@@ -672,6 +676,15 @@ impl TractionModel {
         };
         let sign = cfg.sliding_sign(v);
         let hz = state.hertz();
+        let pressure = match state.geometry {
+            ContactGeometry::Line { length_m } => SlicePressure::line(
+                q,
+                length_m,
+                state.reduced_modulus_pa,
+                state.reduced_radius_m,
+            ),
+            _ => SlicePressure::of(hz.mean_pressure_pa, hz.half_width_m),
+        };
         let (hc, hm, lambda) = (prep.film_central_m, prep.film_minimum_m, prep.lambda);
         let LubricatedParts {
             mu_hd,
@@ -682,13 +695,13 @@ impl TractionModel {
         } = lubricated_coefficient(
             lf,
             oil,
-            &prep.props,
-            prep.film_central_m,
-            prep.lambda,
-            hz.mean_pressure_pa,
-            hz.half_width_m,
-            u_eff,
-            v,
+            &ContactTraction::new(lf, &prep.props, hc, lambda),
+            &MurakiSlice {
+                pressure,
+                rolling_speed: u_eff,
+                inv_rolling_speed: 1.0 / u_eff,
+                sliding_speed: v.abs(),
+            },
         );
         w |= warnings;
         let coefficient = mu * sign;
@@ -712,45 +725,56 @@ impl TractionModel {
     }
 }
 
-/// μ_hd (Muraki or constant), μ_bd and the Λ blend (1.3) of a lubricated slice with the oil
-/// properties `pr`, central film `film_central` and film parameter `lambda` of its contact,
-/// mean pressure p̄ and half-width b (SPEC §4.5–4.7), rolling speed `u_eff` (already floored)
-/// and sliding speed `v`. The one implementation behind
-/// [`TractionModel::traction_prepared`] and [`SliceBatch::evaluate`]; call-free so that a loop
-/// over slices is vectorised.
-#[allow(clippy::too_many_arguments)]
+/// The per-contact inputs of [`lubricated_coefficient`]: the contact's part of Muraki's law,
+/// its Λ and the blend weight of (1.3) at that Λ (0 without a blend).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub(crate) struct ContactTraction {
+    pub muraki: MurakiContact,
+    pub lambda: f64,
+    pub mixed_weight: f64,
+}
+
+impl ContactTraction {
+    /// With the oil properties `pr` at the contact temperature, the central film `film_central`
+    /// and the film parameter `lambda` of the contact.
+    #[inline(always)]
+    pub fn new(lf: &LubricatedFriction, pr: &HotProps, film_central: f64, lambda: f64) -> Self {
+        Self {
+            muraki: MurakiContact::new(
+                pr.eta0,
+                pr.alpha,
+                pr.gamma,
+                pr.tau0,
+                pr.beta0,
+                pr.k_f,
+                film_central,
+            ),
+            lambda,
+            mixed_weight: lf.mixed.map_or(0.0, |lim| lim.weight(lambda)),
+        }
+    }
+}
+
+/// μ_hd (Muraki or constant), μ_bd and the Λ blend (1.3) of a lubricated slice of `contact`
+/// with its own mean pressure, half-width, rolling speed (already floored) and sliding speed
+/// (SPEC §4.5–4.7). The one implementation behind [`TractionModel::traction_prepared`] and
+/// [`SliceBatch::evaluate`]; call-free so that a loop over slices is vectorised.
 #[inline(always)]
 pub(crate) fn lubricated_coefficient(
     lf: &LubricatedFriction,
     oil: &Lubricant,
-    pr: &HotProps,
-    film_central: f64,
-    lambda: f64,
-    mean_pressure: f64,
-    half_width: f64,
-    u_eff: f64,
-    v: f64,
+    contact: &ContactTraction,
+    slice: &MurakiSlice,
 ) -> LubricatedParts {
     let mut warnings = 0u16;
     let mu_hd = match &lf.hydrodynamic {
         Hydrodynamic::Constant(m) => *m,
         Hydrodynamic::Muraki(ms) => {
-            let out = muraki(
-                &MurakiInputs {
-                    mean_pressure,
-                    half_width,
-                    film: film_central.max(1e-9),
-                    rolling_speed: u_eff,
-                    sliding_speed: v.abs(),
-                    eta0: pr.eta0,
-                    alpha: pr.alpha,
-                    roelands_z: oil.roelands_z,
-                    shear_modulus: pr.gamma,
-                    tau0: pr.tau0,
-                    beta0: pr.beta0,
-                    kappa: oil.kappa_per_k_pa.unwrap_or(0.0),
-                    k_f: pr.k_f,
-                },
+            let out = muraki_slice(
+                &contact.muraki,
+                slice,
+                oil.kappa_per_k_pa.unwrap_or(0.0),
+                oil.roelands_z,
                 ms,
             );
             if out.sqrt_negative {
@@ -762,12 +786,15 @@ pub(crate) fn lubricated_coefficient(
             out.mu
         }
     };
+    let lambda = contact.lambda;
     let (mu, mu_bd, regime) = match &lf.mixed {
         None => (mu_hd, f64::NAN, FrictionRegime::Hydrodynamic),
         // μ_bd only matters below Λ_hd (mixed and boundary regimes)
         Some(lim) if lambda < lim.lambda_hd => {
-            let mu_bd = lf.boundary.eval(v / u_eff);
-            let (m, r) = mixed_friction(mu_bd, mu_hd, lambda, lim);
+            let mu_bd = lf
+                .boundary
+                .eval(slice.sliding_speed * slice.inv_rolling_speed);
+            let (m, r) = mixed_friction_weighted(mu_bd, mu_hd, lambda, contact.mixed_weight, lim);
             (m, mu_bd, r)
         }
         Some(_) => (mu_hd, f64::NAN, FrictionRegime::Hydrodynamic),

@@ -24,6 +24,7 @@
 //! D ≪ 1 (the usual case, e.g. PAO1: D ≈ 5×10⁻³) it produces a large spurious spike μ ≈ Γ s b/(h p̄)
 //! just below σ_min (see the test `spec_f34_literal_branch_spikes`), which is why it is not the default.
 
+use crate::contact_state::SlicePressure;
 use crate::lubricant::SolidThermal;
 use crate::step::step;
 use crate::viscosity::{PiezoViscosity, viscosity_at_pressure};
@@ -127,33 +128,48 @@ pub struct MurakiOutput {
     pub sigma_invalid: bool,
 }
 
-/// Cancellation-free (1.8) with a given L. Returns (S, sqrt_negative).
+/// Cancellation-free (1.8) with a given L, from σ, D, x = Φσ and DΦ. Returns
+/// (S, sqrt_negative).
 #[inline]
-fn s_thermal(sigma: f64, d: f64, phi: f64, l: f64) -> (f64, bool) {
-    let a = 1.0 + phi * sigma;
-    let arg = a * a - d * phi * l;
-    let (num, den) = s_thermal_parts(sigma, d, phi, l, a, arg.max(0.0).sqrt());
+fn s_thermal(sigma: f64, d: f64, x: f64, d_phi: f64, l: f64) -> (f64, bool) {
+    let a = 1.0 + x;
+    let arg = a * a - d_phi * l;
+    let (num, den) = s_thermal_parts(sigma, d, x, l, a, arg.max(0.0).sqrt());
     (num / den, arg < 0.0)
 }
 
 /// Numerator and denominator of the cancellation-free (1.8):
 /// (l/σ)·(σ + (2σ + Φσ² − D l)/(r + 1))/(a + r) over one common denominator, with
-/// `a = 1 + Φσ` and `r = √(a² − DΦl)` given.
+/// `x = Φσ`, `a = 1 + Φσ` and `r = √(a² − DΦl)` given.
 #[inline(always)]
-fn s_thermal_parts(sigma: f64, d: f64, phi: f64, l: f64, a: f64, r: f64) -> (f64, f64) {
+fn s_thermal_parts(sigma: f64, d: f64, x: f64, l: f64, a: f64, r: f64) -> (f64, f64) {
     (
-        l * (sigma * (r + 1.0) + 2.0 * sigma + phi * sigma * sigma - d * l),
+        l * (sigma * (r + 1.0) + 2.0 * sigma + x * sigma - d * l),
         sigma * (r + 1.0) * (a + r),
     )
 }
 
 /// Dimensionless mean shear stress S(σ, D, Φ) with the selected small-σ continuation.
 /// Returns (S, elastic_limited, sqrt_negative, sigma_invalid).
-#[inline(always)]
+#[inline]
 pub fn dimensionless_stress(
     sigma: f64,
     d: f64,
     phi: f64,
+    mode: SmallShearRate,
+) -> (f64, bool, bool, bool) {
+    stress_of_products(sigma, d, phi * sigma, d * phi, mode)
+}
+
+/// [`dimensionless_stress`] from σ, D and the products x = Φσ and DΦ, which are all that (1.8)
+/// needs: both are free of η_Ni (Φσ = (β0 + κp̄) ζ τ0 v, DΦ = (β0 + κp̄) ζ τ0² h u/(Γ b)), so
+/// Φ itself is never divided out.
+#[inline(always)]
+fn stress_of_products(
+    sigma: f64,
+    d: f64,
+    x: f64,
+    d_phi: f64,
     mode: SmallShearRate,
 ) -> (f64, bool, bool, bool) {
     if sigma <= 0.0 {
@@ -168,9 +184,8 @@ pub fn dimensionless_stress(
             // both branches share one square root and one division (a vectorised caller
             // evaluates both): the elastic branch 2σ/(D(1 + √(1 + Φ²σ²))), the thermal one
             // `s_thermal`
-            let x = phi * sigma;
             let a = 1.0 + x;
-            let thermal_arg = a * a - d * phi * l;
+            let thermal_arg = a * a - d_phi * l;
             let root = if elastic {
                 1.0 + x * x
             } else {
@@ -180,7 +195,7 @@ pub fn dimensionless_stress(
             let (num, den) = if elastic {
                 (2.0 * sigma, d * (1.0 + root))
             } else {
-                s_thermal_parts(sigma, d, phi, l, a, root)
+                s_thermal_parts(sigma, d, x, l, a, root)
             };
             (num / den, elastic, !elastic && thermal_arg < 0.0, false)
         }
@@ -190,7 +205,7 @@ pub fn dimensionless_stress(
             if sigma < sigma_min {
                 return (lin, true, false, invalid);
             }
-            let (sm, neg) = s_thermal(sigma, d, phi, (2.0 * sigma).ln());
+            let (sm, neg) = s_thermal(sigma, d, x, d_phi, (2.0 * sigma).ln());
             let m = lin.min(sm);
             let s = if sigma < 2.0 * sigma_min {
                 step(sigma, sigma_min, lin, 2.0 * sigma_min, m)
@@ -202,40 +217,144 @@ pub fn dimensionless_stress(
     }
 }
 
+/// The quantities of (1.4)–(1.9) that depend on the contact (oil properties at its
+/// temperature and its central film) but not on the slice. The batch computes them once per
+/// roller–raceway contact, the single-contact path once per call, with the same expressions,
+/// so both give the same bits; every division of the traction law that does not involve the
+/// slice is here.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct MurakiContact {
+    /// η_N0, Pa·s
+    pub eta0: f64,
+    /// ᾱ, 1/Pa
+    pub alpha: f64,
+    /// Γ, Pa
+    pub shear_modulus: f64,
+    /// 1/Γ, 1/Pa
+    pub inv_shear_modulus: f64,
+    /// τ0, Pa
+    pub tau0: f64,
+    /// β0, 1/K
+    pub beta0: f64,
+    /// film thickness h, m
+    pub film: f64,
+    /// 1/(τ0 h) of σ_i (1.8)
+    pub inv_tau0_film: f64,
+    /// τ0² h of Φ (1.8)
+    pub tau0_sq_film: f64,
+    /// h/(12 K_f), the oil-conduction term of ζ (1.9), m²·K/W
+    pub film_conduction: f64,
+}
+
+impl MurakiContact {
+    /// From the oil properties and the film `film` (m, floored at 1 nm as the single-contact
+    /// path always did).
+    #[inline(always)]
+    pub fn new(
+        eta0: f64,
+        alpha: f64,
+        shear_modulus: f64,
+        tau0: f64,
+        beta0: f64,
+        k_f: f64,
+        film: f64,
+    ) -> Self {
+        let h = film.max(1e-9);
+        Self {
+            eta0,
+            alpha,
+            shear_modulus,
+            inv_shear_modulus: 1.0 / shear_modulus,
+            tau0,
+            beta0,
+            film: h,
+            inv_tau0_film: 1.0 / (tau0 * h),
+            tau0_sq_film: tau0 * tau0 * h,
+            film_conduction: h / (12.0 * k_f),
+        }
+    }
+}
+
+/// The slice's side of (1.4)–(1.9): pressure and half-width with their reciprocals, rolling
+/// speed u > 0 with its reciprocal, sliding speed |v| ≥ 0.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MurakiSlice {
+    /// p̄, b and their reciprocals
+    pub pressure: SlicePressure,
+    /// u, m/s (> 0)
+    pub rolling_speed: f64,
+    /// 1/u, s/m
+    pub inv_rolling_speed: f64,
+    /// |v|, m/s
+    pub sliding_speed: f64,
+}
+
 /// Muraki hydrodynamic traction coefficient μ_hd ≥ 0 (magnitude; the caller applies the sign).
-#[inline(always)]
+#[inline]
 pub fn muraki(inp: &MurakiInputs, settings: &MurakiSettings) -> MurakiOutput {
-    let p = inp.mean_pressure;
-    let (h, u, v, b) = (
+    let contact = MurakiContact::new(
+        inp.eta0,
+        inp.alpha,
+        inp.shear_modulus,
+        inp.tau0,
+        inp.beta0,
+        inp.k_f,
         inp.film,
-        inp.rolling_speed,
-        inp.sliding_speed,
-        inp.half_width,
     );
+    let slice = MurakiSlice {
+        pressure: SlicePressure::of(inp.mean_pressure, inp.half_width),
+        rolling_speed: inp.rolling_speed,
+        inv_rolling_speed: 1.0 / inp.rolling_speed,
+        sliding_speed: inp.sliding_speed,
+    };
+    muraki_slice(&contact, &slice, inp.kappa, inp.roelands_z, settings)
+}
+
+/// [`muraki`] from the per-contact and per-slice parts: the one implementation behind the
+/// single-contact path and the batch. κ (1/(K·Pa)) and the Roelands Z belong to the oil.
+#[inline(always)]
+pub(crate) fn muraki_slice(
+    c: &MurakiContact,
+    sl: &MurakiSlice,
+    kappa: f64,
+    roelands_z: Option<f64>,
+    settings: &MurakiSettings,
+) -> MurakiOutput {
+    let pr = &sl.pressure;
+    let p = pr.mean_pa;
+    let (u, v, b) = (sl.rolling_speed, sl.sliding_speed, pr.half_width_m);
     if let Rheology::LinearElastic { cap } = settings.rheology {
         // first term of (1.4) only: τ̄ = Γ v b/(h u)  ⇒  μ = Γ s b/(h p̄)
-        let mu = (inp.shear_modulus * v * b / (h * u * p)).min(cap);
+        let mu = (c.shear_modulus * v * b * sl.inv_rolling_speed * pr.inv_mean / c.film).min(cap);
         return MurakiOutput {
             mu,
             elastic_limited: true,
             ..Default::default()
         };
     }
-    let eta_ni = viscosity_at_pressure(settings.piezo, inp.eta0, inp.alpha, inp.roelands_z, p);
-    let tau0 = inp.tau0;
-    let sigma = eta_ni * v / (tau0 * h);
-    let d = eta_ni * u / (inp.shear_modulus * b);
-    let phi = match settings.rheology {
-        Rheology::Isothermal => 0.0,
+    let eta_ni = viscosity_at_pressure(settings.piezo, c.eta0, c.alpha, roelands_z, p);
+    let tau0 = c.tau0;
+    let sigma = eta_ni * v * c.inv_tau0_film;
+    // u/(Γ b): D = η_Ni u/(Γ b), and DΦ without η_Ni
+    let u_per_gb = u * pr.inv_half_width * c.inv_shear_modulus;
+    let d = eta_ni * u_per_gb;
+    let (x, d_phi, phi) = match settings.rheology {
+        Rheology::Isothermal => (0.0, 0.0, 0.0),
         _ => {
-            let zeta = 0.97 * (b / (std::f64::consts::PI * settings.solid.krc() * u)).sqrt()
-                + h / (12.0 * inp.k_f);
-            (inp.beta0 + inp.kappa * p) * zeta * tau0 * tau0 * h / eta_ni
+            let inv_pi_krc = 1.0 / (std::f64::consts::PI * settings.solid.krc());
+            let zeta = 0.97 * (b * sl.inv_rolling_speed * inv_pi_krc).sqrt() + c.film_conduction;
+            // Φ = g τ0² h/η_Ni with g = (β0 + κ p̄) ζ
+            let g = (c.beta0 + kappa * p) * zeta;
+            (
+                g * tau0 * v,
+                g * c.tau0_sq_film * u_per_gb,
+                g * c.tau0_sq_film / eta_ni,
+            )
         }
     };
-    let (s, el, neg, inv) = dimensionless_stress(sigma, d, phi, settings.small_shear_rate);
+    let (s, el, neg, inv) = stress_of_products(sigma, d, x, d_phi, settings.small_shear_rate);
     MurakiOutput {
-        mu: (tau0 * s / p).max(0.0),
+        mu: (tau0 * s * pr.inv_mean).max(0.0),
         s,
         sigma,
         deborah: d,
