@@ -14,6 +14,7 @@ use crate::slice_kernel::{self, LANES, PairKinematics, SliceOutputs};
 use crate::vec3::{V3, add, axpy, cross, dot, norm, perp, power, scale, sub, unit_or};
 use rolldyn_contact::damping::SliceDamping;
 use rolldyn_lubrication::{BatchContact, ContactGeometry, ContactState, SliceBatch};
+use rolldyn_numerics::fastmath;
 
 /// Per-roller contact quantities of one raceway (struct of arrays). Speeds, film, Λ and μ are
 /// load-weighted means over the loaded slices; force and power are sums.
@@ -148,6 +149,8 @@ struct RacewayScratch {
     moment: Vec<V3>,
     /// per roller: sin θ, cos θ, axis and angular velocity (pass 1, reused by Newton–Euler)
     frame: Vec<(f64, f64, V3, V3)>,
+    /// per roller: azimuth θ, sin θ, cos θ (one vectorised `sin_cos` for all rollers)
+    theta: [Vec<f64>; 3],
 }
 
 /// The loaded roller–raceway contacts of one raceway: one block of slots (the loaded slices
@@ -193,6 +196,7 @@ impl RacewayScratch {
             force: vec![[0.0; 3]; z],
             moment: vec![[0.0; 3]; z],
             frame: vec![(0.0, 1.0, [0.0, 0.0, 1.0], [0.0; 3]); z],
+            theta: [vec![0.0; z], vec![0.0; z], vec![1.0; z]],
         }
     }
 
@@ -311,15 +315,20 @@ fn raceway_slices<const INNER: bool>(
     let a_ax = dot(rk.a, ring.axis);
     let a_perp = axpy(rk.a, -a_ax, ring.axis);
     let (qa, qb, qc) = (dot(dp_c, dp_c), dot(dp_c, a_perp), dot(a_perp, a_perp));
-    let rho_c = qa.sqrt();
-    let reach = model.slice_reach * qc.sqrt();
-    let bound = if INNER {
-        ring.raceway_radius + model.rw - (rho_c - reach)
+    // ρ_c = √A, reach = x_max √C; inner: ρ_c − reach < T, outer: ρ_c + reach > T, squared
+    // (no square root: a pair that cannot touch is dismissed for a few multiplications)
+    let drops = model.min_slice_drop + rs.min_drop;
+    let reach_sq = model.slice_reach * model.slice_reach * qc;
+    let may_touch = if INNER {
+        let t = ring.raceway_radius + model.rw - drops;
+        let excess = qa - t * t - reach_sq;
+        excess < 0.0 || excess * excess < 4.0 * t * t * reach_sq
     } else {
-        rho_c + reach + model.rw - ring.raceway_radius
-    } - model.min_slice_drop
-        - rs.min_drop;
-    if bound <= 0.0 {
+        let t = ring.raceway_radius - model.rw + drops;
+        let shortfall = t * t + reach_sq - qa;
+        reach_sq >= t * t || shortfall < 0.0 || shortfall * shortfall < 4.0 * t * t * reach_sq
+    };
+    if !may_touch {
         return [0.0; 3];
     }
     let race_drop = match &rs.profile {
@@ -533,14 +542,19 @@ pub(crate) fn rhs(
     let bar_damping = SliceDamping::new(bar_share * bar.c_h, bar.d);
     let (sin_phi, cos_phi) = phi_c.sin_cos();
     diag.slices.clear();
+    let [theta, sin_theta, cos_theta] = &mut diag.slices.theta;
+    for (j, th) in theta.iter_mut().enumerate() {
+        *th = y[lay.roller(j)];
+    }
+    fastmath::sin_cos_many(theta, sin_theta, cos_theta);
 
     for j in 0..model.z {
         let b = lay.roller(j);
-        let (th, r, zz) = (y[b], y[b + 1], y[b + 2]);
+        let (r, zz) = (y[b + 1], y[b + 2]);
         let a = unit_or(rd(y, b + 3), [0.0, 0.0, 1.0]);
         let (thd, rdot, zd) = (y[b + 6], y[b + 7], y[b + 8]);
         let w = axisymmetric_omega(rd(y, b + 9), a, model.ia_r, model.it_r);
-        let (s, c) = th.sin_cos();
+        let (s, c) = (diag.slices.theta[1][j], diag.slices.theta[2][j]);
         diag.slices.frame[j] = (s, c, a, w);
         let centre = [r * c, r * s, zz];
         let v = [rdot * c - r * thd * s, rdot * s + r * thd * c, zd];

@@ -158,6 +158,82 @@ pub fn cbrt(x: f64) -> f64 {
     t + t * r
 }
 
+/// Largest |x| for which [`sin_cos`] reduces its argument accurately (2²⁰ · π/2 ≈ 1.6·10⁶; the
+/// multiples k·π/2 of the three-part reduction stay exact up to there).
+pub const SIN_COS_MAX_ARG: f64 = 1_647_099.3;
+
+/// (sin x, cos x), ≤ 2 ulp in tests, for |x| ≤ [`SIN_COS_MAX_ARG`] (beyond it: NaN — callers
+/// fall back to `f64::sin_cos`). Branch-free, so that a loop over angles is vectorised: x is
+/// reduced by k·π/2 (k = round(2x/π), π/2 in three parts, fdlibm `__rem_pio2`'s medium case)
+/// to |r| ≤ π/4, and sin r, cos r are fdlibm's `__kernel_sin`/`__kernel_cos` polynomials
+/// (Sun Microsystems 1993, |error| < 2⁻⁵⁸), exchanged and signed by the quadrant k mod 4.
+#[inline(always)]
+pub fn sin_cos(x: f64) -> (f64, f64) {
+    const SHIFT: f64 = 6_755_399_441_055_744.0; // 1.5·2⁵²: adding it rounds to an integer
+    const INV_PIO2: f64 = 6.366_197_723_675_813_824_33e-1;
+    const PIO2_1: f64 = 1.570_796_326_734_125_614_17; // first 33 bits of π/2
+    const PIO2_2: f64 = 6.077_100_506_303_965_976_60e-11; // next 33 bits
+    const PIO2_2T: f64 = 2.022_266_248_795_950_631_54e-21; // π/2 − PIO2_1 − PIO2_2
+    const S: [f64; 6] = [
+        -1.666_666_666_666_663_243_48e-1,
+        8.333_333_333_322_489_461_24e-3,
+        -1.984_126_982_985_794_931_34e-4,
+        2.755_731_370_707_006_767_89e-6,
+        -2.505_076_025_340_686_341_95e-8,
+        1.589_690_995_211_550_102_21e-10,
+    ];
+    const C: [f64; 6] = [
+        4.166_666_666_666_660_190_37e-2,
+        -1.388_888_888_887_410_957_49e-3,
+        2.480_158_728_947_672_941_78e-5,
+        -2.755_731_435_139_066_330_35e-7,
+        2.087_572_321_298_174_827_90e-9,
+        -1.135_964_755_778_819_482_65e-11,
+    ];
+    let inside = x.abs() <= SIN_COS_MAX_ARG;
+    let xc = if inside { x } else { 0.0 };
+    let shifted = xc * INV_PIO2 + SHIFT;
+    let k = shifted - SHIFT;
+    let r = ((xc - k * PIO2_1) - k * PIO2_2) - k * PIO2_2T;
+    let z = r * r;
+    let sin_r = r + r * z * (S[0] + z * (S[1] + z * (S[2] + z * (S[3] + z * (S[4] + z * S[5])))));
+    let hz = 0.5 * z;
+    let w = 1.0 - hz;
+    let cos_r = w
+        + (((1.0 - w) - hz)
+            + z * z * (C[0] + z * (C[1] + z * (C[2] + z * (C[3] + z * (C[4] + z * C[5]))))));
+    // quadrant k mod 4 from the low bits of the shifted integer (two's complement for k < 0)
+    let quadrant = shifted.to_bits().wrapping_sub(SHIFT.to_bits()) & 3;
+    let odd = quadrant & 1 == 1;
+    let (s, c) = if odd { (cos_r, sin_r) } else { (sin_r, cos_r) };
+    let s = if quadrant >= 2 { -s } else { s };
+    let c = if quadrant == 1 || quadrant == 2 {
+        -c
+    } else {
+        c
+    };
+    if inside { (s, c) } else { (f64::NAN, f64::NAN) }
+}
+
+crate::avx2_twin! {
+    /// [`sin_cos`] of every element of `x` into `sin` and `cos` (at least as long as `x`), in a
+    /// vectorised loop; arguments beyond [`SIN_COS_MAX_ARG`] (and non-finite ones) by
+    /// `f64::sin_cos`.
+    pub fn sin_cos_many(x: &[f64], sin: &mut [f64], cos: &mut [f64]) =
+        sin_cos_many_portable / sin_cos_many_avx2 / sin_cos_many_avx512 {
+        let n = x.len();
+        let (sin, cos) = (&mut sin[..n], &mut cos[..n]);
+        for i in 0..n {
+            (sin[i], cos[i]) = sin_cos(x[i]);
+        }
+        for i in 0..n {
+            if !(x[i].abs() <= SIN_COS_MAX_ARG) {
+                (sin[i], cos[i]) = x[i].sin_cos();
+            }
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -226,6 +302,47 @@ mod tests {
         assert_eq!(ln(f64::INFINITY), f64::INFINITY);
         assert!(ln(-1.0).is_nan());
         assert!(ln(f64::NAN).is_nan());
+    }
+
+    #[test]
+    fn sin_cos_within_two_ulp() {
+        let mut worst = 0;
+        let mut check = |x: f64| {
+            let (s, c) = sin_cos(x);
+            let (es, ec) = x.sin_cos();
+            // ulps near a zero of sin or cos are meaningless: compare absolutely there
+            for (got, want) in [(s, es), (c, ec)] {
+                if want.abs() > 1e-3 {
+                    worst = worst.max(ulps(got, want));
+                } else {
+                    assert!((got - want).abs() < 2e-16 * x.abs().max(1.0), "{x}");
+                }
+            }
+        };
+        for u in uniform(300_000) {
+            check(-10.0 + 20.0 * u);
+            check(-SIN_COS_MAX_ARG + 2.0 * SIN_COS_MAX_ARG * u);
+        }
+        for x in [0.0, -0.0, 1e-300, 1e-8, 0.785, 1.5707963, 3.14159, 1e4, 1e6] {
+            check(x);
+        }
+        assert!(worst <= 2, "worst {worst} ulp");
+        assert_eq!(sin_cos(0.0), (0.0, 1.0));
+        assert!(sin_cos(2e6).0.is_nan() && sin_cos(f64::NAN).1.is_nan());
+        assert!(sin_cos(f64::INFINITY).0.is_nan());
+        // the many-argument version: same bits, std beyond the range
+        let x = [0.3, -7.0, 3e6, 1e3, f64::NAN, 2.0, 4.0, 5.0, 6.0, 7.0, 8.0];
+        let (mut s, mut c) = ([0.0; 11], [0.0; 11]);
+        sin_cos_many(&x, &mut s, &mut c);
+        for i in 0..x.len() {
+            let want = if x[i].abs() <= SIN_COS_MAX_ARG {
+                sin_cos(x[i])
+            } else {
+                x[i].sin_cos()
+            };
+            assert_eq!(s[i].to_bits(), want.0.to_bits());
+            assert_eq!(c[i].to_bits(), want.1.to_bits());
+        }
     }
 
     #[test]
