@@ -5,9 +5,10 @@
 //! [`evaluate`] writes one record per slice into [`SliceOutputs`] (struct of arrays); slices that
 //! do not touch carry `q = 0`. The caller sums the forces and collects the loaded slices in
 //! slice order ([`crate::rhs`]), so the sums are the same as those of a slice-by-slice loop.
-//! On x86-64 CPUs with AVX2 the loop is compiled a second time for AVX2 (four lanes) and chosen
-//! at run time; both versions give the same bits (no fused multiply–add: Rust never contracts
-//! on its own, and `rolldyn_numerics::fastmath` is written for that).
+//! On x86-64 the loop is also compiled for AVX2 (four lanes) and AVX-512F (eight lanes) and the
+//! widest copy the CPU supports is chosen at run time; all versions give the same bits (no
+//! fused multiply–add: Rust never contracts on its own, and `rolldyn_numerics::fastmath` is
+//! written for that).
 
 use crate::vec3::{V3, add, axpy, cross, dot, scale, sub};
 use rolldyn_contact::damping::SliceDamping;

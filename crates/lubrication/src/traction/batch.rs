@@ -507,8 +507,10 @@ rolldyn_numerics::avx2_twin! {
     /// L = sinh⁻¹σ, Barus viscosity and Kragelsky boundary friction: the law is rebuilt here from
     /// constant variants, so every `match` on it folds away and the loop body is branch-free.
     ///
-    /// On x86-64 CPUs with AVX2 the loop is compiled a second time for AVX2 (four lanes) and
-    /// chosen at run time. Both versions give the same bits: Rust never fuses a multiply and an
+    /// On x86-64 the loop is also compiled for AVX2 (four lanes) and AVX-512F (eight lanes; two
+    /// independent 256-bit chains per iteration on CPUs that split 512-bit operations, which
+    /// hides the latency of this long loop body), and the widest copy the CPU supports is
+    /// chosen at run time. All versions give the same bits: Rust never fuses a multiply and an
     /// add on its own, and `+ − × ÷ √`, `min`/`max` and comparisons are exact in every width.
     fn evaluate_muraki<const THERMAL: bool>(
         slices: &Slices,
