@@ -387,46 +387,39 @@ impl PendingFilms {
 /// once (its divisions included) and then copied to its slices.
 #[derive(Debug, Clone, Default)]
 struct ContactLanes {
-    rows: Vec<(bool, f64, ContactTraction)>,
+    rows: Vec<(bool, [f64; LANE_COLUMNS])>,
     /// the contact is prepared (lubricated and loaded)
     prepared: Vec<bool>,
-    line_stiffness: Vec<f64>,
-    lambda: Vec<f64>,
-    mixed_weight: Vec<f64>,
-    eta0: Vec<f64>,
-    alpha: Vec<f64>,
-    shear_modulus: Vec<f64>,
-    inv_shear_modulus: Vec<f64>,
-    tau0: Vec<f64>,
-    beta0: Vec<f64>,
-    film: Vec<f64>,
-    inv_tau0_film: Vec<f64>,
-    tau0_sq_film: Vec<f64>,
-    film_conduction: Vec<f64>,
+    /// one column per entry of [`lane_row`], in its order
+    columns: [Vec<f64>; LANE_COLUMNS],
 }
 
 /// The number of f64 columns of [`ContactLanes`].
 const LANE_COLUMNS: usize = 13;
 
-impl ContactLanes {
-    fn columns(&mut self) -> [&mut Vec<f64>; LANE_COLUMNS] {
-        [
-            &mut self.line_stiffness,
-            &mut self.lambda,
-            &mut self.mixed_weight,
-            &mut self.eta0,
-            &mut self.alpha,
-            &mut self.shear_modulus,
-            &mut self.inv_shear_modulus,
-            &mut self.tau0,
-            &mut self.beta0,
-            &mut self.film,
-            &mut self.inv_tau0_film,
-            &mut self.tau0_sq_film,
-            &mut self.film_conduction,
-        ]
-    }
+/// A contact's entries of the [`ContactLanes`] columns: the line stiffness, Λ, the blend weight
+/// and the fields of [`MurakiContact`] (η0, ᾱ, Γ, 1/Γ, τ0, β0, h, 1/(τ0 h), τ0² h,
+/// h/(12 K_f)); [`evaluate_lubricated`] reads them back in this order.
+fn lane_row(line_stiffness: f64, ct: &ContactTraction) -> [f64; LANE_COLUMNS] {
+    let m = &ct.muraki;
+    [
+        line_stiffness,
+        ct.lambda,
+        ct.mixed_weight,
+        m.eta0,
+        m.alpha,
+        m.shear_modulus,
+        m.inv_shear_modulus,
+        m.tau0,
+        m.beta0,
+        m.film,
+        m.inv_tau0_film,
+        m.tau0_sq_film,
+        m.film_conduction,
+    ]
+}
 
+impl ContactLanes {
     fn gather(&mut self, lf: &LubricatedFriction, contacts: &[Contact], contact_of: &[usize]) {
         self.rows.clear();
         self.rows.extend(contacts.iter().map(|c| {
@@ -434,70 +427,27 @@ impl ContactLanes {
             match &c.prepared {
                 Some(p) => (
                     true,
-                    stiffness,
-                    ContactTraction::new(lf, &p.props, p.film_central_m, p.lambda),
+                    lane_row(
+                        stiffness,
+                        &ContactTraction::new(lf, &p.props, p.film_central_m, p.lambda),
+                    ),
                 ),
-                None => (false, stiffness, ContactTraction::default()),
+                None => (false, lane_row(stiffness, &ContactTraction::default())),
             }
         }));
         let n = contact_of.len();
-        for column in self.columns() {
-            column.resize(n, 0.0);
-        }
         self.prepared.clear();
         self.prepared
             .extend(contact_of.iter().map(|&k| self.rows[k].0));
-        let Self {
-            rows,
-            prepared: _,
-            line_stiffness,
-            lambda,
-            mixed_weight,
-            eta0,
-            alpha,
-            shear_modulus,
-            inv_shear_modulus,
-            tau0,
-            beta0,
-            film,
-            inv_tau0_film,
-            tau0_sq_film,
-            film_conduction,
-        } = self;
-        // every column cut to n: no bounds checks in the loop
-        let (stiffness, lambda, weight) = (
-            &mut line_stiffness[..n],
-            &mut lambda[..n],
-            &mut mixed_weight[..n],
-        );
-        let (eta0, alpha, gamma, inv_gamma) = (
-            &mut eta0[..n],
-            &mut alpha[..n],
-            &mut shear_modulus[..n],
-            &mut inv_shear_modulus[..n],
-        );
-        let (tau0, beta0, film) = (&mut tau0[..n], &mut beta0[..n], &mut film[..n]);
-        let (inv_tau0_film, tau0_sq_film, conduction) = (
-            &mut inv_tau0_film[..n],
-            &mut tau0_sq_film[..n],
-            &mut film_conduction[..n],
-        );
+        let rows = &self.rows;
+        let mut columns = self.columns.each_mut().map(|c| {
+            c.resize(n, 0.0);
+            &mut c[..n]
+        });
         for (i, &k) in contact_of.iter().enumerate() {
-            let (_, k_line, ct) = &rows[k];
-            let m = &ct.muraki;
-            stiffness[i] = *k_line;
-            lambda[i] = ct.lambda;
-            weight[i] = ct.mixed_weight;
-            eta0[i] = m.eta0;
-            alpha[i] = m.alpha;
-            gamma[i] = m.shear_modulus;
-            inv_gamma[i] = m.inv_shear_modulus;
-            tau0[i] = m.tau0;
-            beta0[i] = m.beta0;
-            film[i] = m.film;
-            inv_tau0_film[i] = m.inv_tau0_film;
-            tau0_sq_film[i] = m.tau0_sq_film;
-            conduction[i] = m.film_conduction;
+            for (column, &value) in columns.iter_mut().zip(&rows[k].1) {
+                column[i] = value;
+            }
         }
     }
 }
@@ -557,16 +507,23 @@ fn evaluate_lubricated(
     let (normal_force_n, length_m) = (&slices.normal_force_n[..n], &slices.length_m[..n]);
     let rolling = &slices.rolling_speed_m_s[..n];
     let sliding = &slices.sliding_speed_m_s[..n];
-    let (prepared, stiffness) = (&lanes.prepared[..n], &lanes.line_stiffness[..n]);
-    let (lambda, weight) = (&lanes.lambda[..n], &lanes.mixed_weight[..n]);
-    let (eta0, alpha) = (&lanes.eta0[..n], &lanes.alpha[..n]);
-    let (gamma, inv_gamma) = (&lanes.shear_modulus[..n], &lanes.inv_shear_modulus[..n]);
-    let (tau0, beta0, film) = (&lanes.tau0[..n], &lanes.beta0[..n], &lanes.film[..n]);
-    let (inv_tau0_film, tau0_sq_film, conduction) = (
-        &lanes.inv_tau0_film[..n],
-        &lanes.tau0_sq_film[..n],
-        &lanes.film_conduction[..n],
-    );
+    let prepared = &lanes.prepared[..n];
+    // the columns in the order of `lane_row`
+    let [
+        stiffness,
+        lambda,
+        weight,
+        eta0,
+        alpha,
+        gamma,
+        inv_gamma,
+        tau0,
+        beta0,
+        film,
+        inv_tau0_film,
+        tau0_sq_film,
+        conduction,
+    ] = lanes.columns.each_ref().map(|c| &c[..n]);
     for i in 0..n {
         let contact = ContactTraction {
             muraki: MurakiContact {
