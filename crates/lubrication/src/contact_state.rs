@@ -77,6 +77,27 @@ impl ContactState {
         self.sliding_speed_m_s / self.rolling_speed_m_s.abs().max(u_min)
     }
 
+    /// Hertz quantities of this state and its [`SlicePressure`] (for a line contact both from
+    /// one evaluation of (2.15)–(2.16), the same as a traction batch's).
+    #[inline]
+    pub fn hertz_and_pressure(&self) -> (HertzContact, SlicePressure) {
+        match self.geometry {
+            ContactGeometry::Line { length_m } => {
+                let sp = SlicePressure::line(
+                    self.normal_force_n.max(0.0),
+                    length_m,
+                    self.reduced_modulus_pa,
+                    self.reduced_radius_m,
+                );
+                (HertzContact::line(&sp, length_m), sp)
+            }
+            _ => {
+                let hz = self.hertz();
+                (hz, SlicePressure::of(hz.mean_pressure_pa, hz.half_width_m))
+            }
+        }
+    }
+
     /// Hertz quantities of this state.
     #[inline]
     pub fn hertz(&self) -> HertzContact {
@@ -104,6 +125,21 @@ pub struct HertzContact {
     pub is_line: bool,
     /// working length (line contacts), m; NaN for point contacts
     pub length_m: f64,
+}
+
+impl HertzContact {
+    /// A line contact of length `length_m` with the pressure `sp` (2.15)–(2.16).
+    #[inline(always)]
+    fn line(sp: &SlicePressure, length_m: f64) -> Self {
+        Self {
+            mean_pressure_pa: sp.mean_pa,
+            max_pressure_pa: sp.mean_pa * 4.0 / PI,
+            half_width_m: sp.half_width_m,
+            ellipticity: f64::INFINITY,
+            is_line: true,
+            length_m,
+        }
+    }
 }
 
 /// Mean Hertz pressure p̄ and half-width b of a loaded contact with their reciprocals: the
@@ -194,15 +230,7 @@ pub fn circular_load_for_max_pressure(p_max: f64, r: f64, e: f64) -> f64 {
 pub fn hertz(q: f64, geometry: &ContactGeometry, r: f64, e: f64) -> HertzContact {
     match *geometry {
         ContactGeometry::Line { length_m } => {
-            let sp = SlicePressure::line(q, length_m, e, r);
-            HertzContact {
-                mean_pressure_pa: sp.mean_pa,
-                max_pressure_pa: sp.mean_pa * 4.0 / PI,
-                half_width_m: sp.half_width_m,
-                ellipticity: f64::INFINITY,
-                is_line: true,
-                length_m,
-            }
+            HertzContact::line(&SlicePressure::line(q, length_m, e, r), length_m)
         }
         ContactGeometry::Prescribed {
             half_width_m,

@@ -94,8 +94,8 @@ macro_rules! avx2_twin {
 }
 
 /// Which compiled copy of an [`avx2_twin!`](crate::avx2_twin) loop a caller that dispatches
-/// itself runs.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+/// itself runs, ordered by width: a CPU that runs one copy runs every narrower one.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
 pub enum LoopCopy {
     /// the portable loop (baseline instruction set)
     Portable,

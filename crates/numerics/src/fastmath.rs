@@ -1,4 +1,5 @@
-//! Branch-free `exp`, `ln` and `ln_1p` (and a fast `cbrt`) for the hot loops of the contact and traction kernels.
+//! Branch-free `exp`, `ln`, `ln_1p` and `sin_cos` (and a fast `cbrt`) for the hot loops of the
+//! contact and traction kernels and the roller frames.
 //!
 //! The platform `libm` functions are calls the compiler cannot inline or vectorise. These are
 //! written with selects instead of branches, so a loop over a slice of values that calls them
@@ -22,11 +23,12 @@
 
 const LN2_HI: f64 = 6.931_471_803_691_238_164_90e-1;
 const LN2_LO: f64 = 1.908_214_929_270_587_700_02e-10;
+/// 1.5·2⁵²: adding it to |x| < 2⁵¹ rounds x to an integer, held in the low mantissa bits.
+const SHIFT: f64 = 6_755_399_441_055_744.0;
 
 /// eˣ (see the module docs for accuracy and special values).
 #[inline(always)]
 pub fn exp(x: f64) -> f64 {
-    const SHIFT: f64 = 6_755_399_441_055_744.0; // 1.5·2⁵²: adding it rounds to an integer
     const MAX_ARG: f64 = 709.436_139_303_104; // 1023.5·ln 2: k ≤ 1023 keeps 2^k normal
     const MIN_ARG: f64 = -708.396_418_532_264_1; // ln(f64::MIN_POSITIVE): k ≥ −1022
     let xc = x.clamp(MIN_ARG, MAX_ARG);
@@ -169,7 +171,6 @@ pub const SIN_COS_MAX_ARG: f64 = 1_647_099.3;
 /// (Sun Microsystems 1993, |error| < 2⁻⁵⁸), exchanged and signed by the quadrant k mod 4.
 #[inline(always)]
 pub fn sin_cos(x: f64) -> (f64, f64) {
-    const SHIFT: f64 = 6_755_399_441_055_744.0; // 1.5·2⁵²: adding it rounds to an integer
     const PIO2_1: f64 = 1.570_796_326_734_125_614_17; // first 33 bits of π/2
     const PIO2_2: f64 = 6.077_100_506_303_965_976_60e-11; // next 33 bits
     const PIO2_2T: f64 = 2.022_266_248_795_950_631_54e-21; // π/2 − PIO2_1 − PIO2_2

@@ -27,9 +27,7 @@ impl MixedLimits {
         lambda_bd: 0.2,
         lambda_hd: 1.5,
     };
-}
 
-impl MixedLimits {
     /// The blend weight ((Λ − Λ_hd)/(Λ_bd − Λ_hd))⁶ of (1.3) in the mixed regime. It depends on
     /// the contact's Λ only, so a batch computes it once per contact.
     #[inline(always)]

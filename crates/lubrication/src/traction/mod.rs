@@ -29,14 +29,11 @@ pub use batch::{BatchContact, SliceBatch};
 pub use boundary::{BoundaryFriction, kragelsky};
 pub use flash::{Seed001Inputs, Seed001Result, Seed001Settings, seed001_friction};
 pub use mixed::{MixedLimits, mixed_friction, mixed_friction_weighted};
-use muraki::muraki_slice;
-pub use muraki::{
-    MurakiContact, MurakiInputs, MurakiOutput, MurakiSettings, MurakiSlice, Rheology,
-    SmallShearRate, muraki,
-};
+use muraki::{MurakiContact, MurakiSlice, muraki_slice};
+pub use muraki::{MurakiInputs, MurakiOutput, MurakiSettings, Rheology, SmallShearRate, muraki};
 pub use two_level::{TwoLevelLaw, regularisation};
 
-use crate::contact_state::{ContactGeometry, ContactState, SlicePressure};
+use crate::contact_state::ContactState;
 use crate::error::LubError;
 use crate::film::{FilmFormula, FilmInputs, FilmSettings, film_core, resolve_formula};
 use crate::lubricant::{Lubricant, Property};
@@ -675,16 +672,7 @@ impl TractionModel {
             return Traction::default();
         };
         let sign = cfg.sliding_sign(v);
-        let hz = state.hertz();
-        let pressure = match state.geometry {
-            ContactGeometry::Line { length_m } => SlicePressure::line(
-                q,
-                length_m,
-                state.reduced_modulus_pa,
-                state.reduced_radius_m,
-            ),
-            _ => SlicePressure::of(hz.mean_pressure_pa, hz.half_width_m),
-        };
+        let (hz, pressure) = state.hertz_and_pressure();
         let (hc, hm, lambda) = (prep.film_central_m, prep.film_minimum_m, prep.lambda);
         let LubricatedParts {
             mu_hd,

@@ -223,7 +223,7 @@ fn stress_of_products(
 /// so both give the same bits; every division of the traction law that does not involve the
 /// slice is here.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct MurakiContact {
+pub(crate) struct MurakiContact {
     /// η_N0, Pa·s
     pub eta0: f64,
     /// ᾱ, 1/Pa
@@ -250,7 +250,7 @@ impl MurakiContact {
     /// From the oil properties and the film `film` (m, floored at 1 nm as the single-contact
     /// path always did).
     #[inline(always)]
-    pub fn new(
+    pub(crate) fn new(
         eta0: f64,
         alpha: f64,
         shear_modulus: f64,
@@ -278,7 +278,7 @@ impl MurakiContact {
 /// The slice's side of (1.4)–(1.9): pressure and half-width with their reciprocals, rolling
 /// speed u > 0 with its reciprocal, sliding speed |v| ≥ 0.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct MurakiSlice {
+pub(crate) struct MurakiSlice {
     /// p̄, b and their reciprocals
     pub pressure: SlicePressure,
     /// u, m/s (> 0)
