@@ -37,7 +37,8 @@ impl RacewayTraction {
 /// Roller slices against one raceway (struct of arrays).
 #[derive(Debug, Clone)]
 pub(crate) struct RacewaySlices {
-    /// the per-slice constants below, padded for the vectorised slice kernel
+    /// the per-slice constants below, repeated for every roller (slot layout of the vectorised
+    /// slice kernel)
     pub lanes: SliceConstants,
     /// elastic coefficient k_s of `Q_s = k_s δⁿ` per slice, N/mⁿ
     pub k: Vec<f64>,
@@ -264,7 +265,7 @@ impl Model {
                     .fold(0.0, f64::min)
             });
             let lanes =
-                SliceConstants::new(&stack.position, &stack.drop, &stack.length, &k, &damping);
+                SliceConstants::new(z, &stack.position, &stack.drop, &stack.length, &k, &damping);
             Ok(RacewaySlices {
                 lanes,
                 k,

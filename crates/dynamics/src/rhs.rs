@@ -10,7 +10,7 @@ use crate::ends::{
 use crate::land::LandKinematics;
 use crate::layout::{CAGE_DOF, INNER_DOF, ROLLER_DOF};
 use crate::model::{Model, RacewaySlices};
-use crate::slice_kernel::{self, LANES, PairKinematics, SliceOutputs};
+use crate::slice_kernel::{self, LANES, PairKinematics, PairLanes, RingKinematics, SliceOutputs};
 use crate::vec3::{V3, add, axpy, cross, dot, norm, perp, power, scale, sub, unit_or};
 use rolldyn_contact::damping::SliceDamping;
 use rolldyn_lubrication::{BatchContact, ContactGeometry, ContactState, SliceBatch};
@@ -133,24 +133,43 @@ pub(crate) struct Diagnostics {
     slices: RacewayScratch,
 }
 
-/// Scratch of the raceway contacts of one evaluation: the slice kernel's results for the
-/// current roller–raceway pair and, per raceway, the loaded contacts (pass 1 of [`rhs`]) whose
-/// traction is evaluated in one batch, and the roller forces and moments collected before the
-/// traction is applied.
+/// Scratch of the raceway contacts of one evaluation: per raceway the slot loop's inputs and
+/// results and the loaded contacts whose traction is evaluated in one batch, and the roller
+/// forces and moments collected before the traction is applied.
 #[derive(Debug, Clone)]
 struct RacewayScratch {
-    /// per-slice results of the slice kernel for the current roller–raceway pair
-    kernel: SliceOutputs,
-    /// raceway drop under each slice (profiled raceways)
-    race_drop: Vec<f64>,
-    inner: LoadedContacts,
-    outer: LoadedContacts,
+    inner: RacewayPass,
+    outer: RacewayPass,
     force: Vec<V3>,
     moment: Vec<V3>,
     /// per roller: sin θ, cos θ, axis and angular velocity (pass 1, reused by Newton–Euler)
     frame: Vec<(f64, f64, V3, V3)>,
     /// per roller: azimuth θ, sin θ, cos θ (one vectorised `sin_cos` for all rollers)
     theta: [Vec<f64>; 3],
+}
+
+/// The contacts of one raceway in one evaluation (pass 1 of [`rhs`]): which rollers may touch
+/// it, their kinematics repeated over their slots, the slot loop's results, and the loaded
+/// contacts of the traction batch.
+#[derive(Debug, Clone)]
+struct RacewayPass {
+    /// per roller: the pair bound allows a contact, and the roller's slots are set
+    may_touch: Vec<bool>,
+    pairs: PairLanes,
+    out: SliceOutputs,
+    loaded: LoadedContacts,
+}
+
+impl RacewayPass {
+    fn new(z: usize, slices: usize) -> Self {
+        let slots = z * slices + LANES;
+        Self {
+            may_touch: vec![false; z],
+            pairs: PairLanes::new(slots),
+            out: SliceOutputs::new(slots),
+            loaded: LoadedContacts::new(z, z * slices),
+        }
+    }
 }
 
 /// The loaded roller–raceway contacts of one raceway: one block of slots (the loaded slices
@@ -187,12 +206,9 @@ impl LoadedContacts {
 
 impl RacewayScratch {
     fn new(z: usize, slices: usize) -> Self {
-        let slots = slices.div_ceil(LANES) * LANES;
         Self {
-            kernel: SliceOutputs::new(slots),
-            race_drop: vec![0.0; slots],
-            inner: LoadedContacts::new(z, z * slots),
-            outer: LoadedContacts::new(z, z * slots),
+            inner: RacewayPass::new(z, slices),
+            outer: RacewayPass::new(z, slices),
             force: vec![[0.0; 3]; z],
             moment: vec![[0.0; 3]; z],
             frame: vec![(0.0, 1.0, [0.0, 0.0, 1.0], [0.0; 3]); z],
@@ -201,8 +217,8 @@ impl RacewayScratch {
     }
 
     fn clear(&mut self) {
-        self.inner.clear();
-        self.outer.clear();
+        self.inner.loaded.clear();
+        self.outer.loaded.clear();
     }
 }
 
@@ -279,10 +295,102 @@ fn note(diag: &mut Diagnostics, what: &'static str, index: usize, penetration: f
     }
 }
 
-/// Slices of roller `j` on one raceway, pass 1 (SPEC §2.1–2.2): the slice kernel
-/// ([`slice_kernel::evaluate`]) gives the approach, slice law, damping and normal force of every
-/// slice. Adds the normal forces to the roller (`f`, `m`) and returns the normal force on the
-/// ring; records each loaded slice in `scratch` for the traction pass.
+/// Pass 1a of roller `j` on one raceway (SPEC §2.1–2.2): whether any slice can touch and, if
+/// so, the pair kinematics repeated over the roller's slots for the slot loop
+/// ([`raceway_kernel`]).
+#[inline]
+fn raceway_pair<const INNER: bool>(
+    model: &Model,
+    rs: &RacewaySlices,
+    j: usize,
+    rk: &RollerKin,
+    ring: &RingKin,
+    pass: &mut RacewayPass,
+) {
+    pass.may_touch[j] = false;
+    // Slice centres p = c + x a: their offset from the ring axis is dp(x) = dp_c + x a⊥, so
+    // ρ(x)² = A + 2Bx + Cx², a convex parabola in x. A slice can touch the inner raceway only
+    // if ρ < T_i = R_i + R_w − min drops somewhere on the roller (|x| ≤ X), and the outer one
+    // only if ρ > T_o = R_o − R_w + min drops: the minimum (at x = −B/C, clamped) and the
+    // maximum (at an end) of ρ² decide, without a square root. Exact for the extent of the
+    // slice centres, so a skewed roller (large C, B ≈ 0) is not taken for a touching one.
+    let d_c = sub(rk.c, ring.o);
+    let zeta_c = dot(d_c, ring.axis);
+    let dp_c = axpy(d_c, -zeta_c, ring.axis);
+    let a_ax = dot(rk.a, ring.axis);
+    let a_perp = axpy(rk.a, -a_ax, ring.axis);
+    let (qa, qb, qc) = (dot(dp_c, dp_c), dot(dp_c, a_perp), dot(a_perp, a_perp));
+    let drops = model.min_slice_drop + rs.min_drop;
+    let reach = model.slice_reach;
+    let may_touch = if INNER {
+        let t = ring.raceway_radius + model.rw - drops;
+        let x = if qc > 0.0 {
+            (-qb / qc).clamp(-reach, reach)
+        } else {
+            -reach.copysign(qb)
+        };
+        qa + x * (2.0 * qb + x * qc) < t * t
+    } else {
+        let t = ring.raceway_radius - model.rw + drops;
+        t <= 0.0 || qa + reach * (2.0 * qb.abs() + reach * qc) > t * t
+    };
+    if !may_touch {
+        return;
+    }
+    let slots = rs.lanes.slots(j);
+    if let Some(pr) = &rs.profile {
+        let race_drop = &mut pass.pairs.race_drop[slots.clone()];
+        for (d, &x) in race_drop.iter_mut().zip(&rs.lanes.x[slots.clone()]) {
+            *d = pr.drop(zeta_c + x * a_ax);
+        }
+    }
+    let pair = PairKinematics {
+        c: rk.c,
+        a: rk.a,
+        v: rk.v,
+        w: rk.w,
+        orbit: rk.orbit,
+    };
+    pass.pairs.set(slots, &pair);
+    pass.may_touch[j] = true;
+}
+
+/// Pass 1b on one raceway: the slot loop ([`slice_kernel::evaluate`]: approach, slice law,
+/// damping, normal force and contact kinematics) over every run of consecutive rollers that may
+/// touch it, the slices of a run back to back.
+fn raceway_kernel<const INNER: bool>(
+    model: &Model,
+    rs: &RacewaySlices,
+    ring: &RingKin,
+    pass: &mut RacewayPass,
+) {
+    let kinematics = RingKinematics {
+        ring_o: ring.o,
+        ring_v: ring.v,
+        ring_axis: ring.axis,
+        ring_spin: ring.spin,
+        raceway_radius: ring.raceway_radius,
+        rw: model.rw,
+        exponent: rs.n,
+    };
+    let mut j = 0;
+    while j < model.z {
+        if !pass.may_touch[j] {
+            j += 1;
+            continue;
+        }
+        let first = j;
+        while j < model.z && pass.may_touch[j] {
+            j += 1;
+        }
+        let slots = rs.lanes.slots(first).start..rs.lanes.slots(j - 1).end;
+        slice_kernel::evaluate::<INNER>(&rs.lanes, &pass.pairs, &kinematics, slots, &mut pass.out);
+    }
+}
+
+/// Pass 1c of roller `j` on one raceway: adds the normal forces of its slices to the roller
+/// (`f`, `m`) and returns the normal force on the ring; records the loaded slices for the
+/// traction pass.
 ///
 /// The EHL film is prepared once for the whole roller–raceway contact (its total load over the
 /// loaded length and the load-weighted entrainment speed — the film of a line contact is set
@@ -291,77 +399,24 @@ fn note(diag: &mut Diagnostics, what: &'static str, index: usize, penetration: f
 /// [`apply_traction`], for all rollers in one batch.
 #[allow(clippy::too_many_arguments)]
 #[inline]
-fn raceway_slices<const INNER: bool>(
+fn raceway_collect<const INNER: bool>(
     model: &Model,
     rs: &RacewaySlices,
     j: usize,
-    rk: &RollerKin,
-    ring: &RingKin,
     f: &mut V3,
     m: &mut V3,
     table: &mut ContactTable,
-    scratch: &mut RacewayScratch,
+    pass: &mut RacewayPass,
     limit: f64,
     violation: &mut Option<Violation>,
     tables: Tables,
 ) -> V3 {
     table.reset(j, tables);
-    // Slice centres p = c + x a: their offset from the ring axis is dp(x) = dp_c + x a⊥, so
-    // ρ(x)² = A + 2Bx + Cx². The distance from the axis is 1-Lipschitz, which bounds every
-    // slice's approach from the centre's: no slice can touch when the bound is ≤ 0.
-    let d_c = sub(rk.c, ring.o);
-    let zeta_c = dot(d_c, ring.axis);
-    let dp_c = axpy(d_c, -zeta_c, ring.axis);
-    let a_ax = dot(rk.a, ring.axis);
-    let a_perp = axpy(rk.a, -a_ax, ring.axis);
-    let (qa, qb, qc) = (dot(dp_c, dp_c), dot(dp_c, a_perp), dot(a_perp, a_perp));
-    // ρ_c = √A, reach = x_max √C; inner: ρ_c − reach < T, outer: ρ_c + reach > T, squared
-    // (no square root: a pair that cannot touch is dismissed for a few multiplications)
-    let drops = model.min_slice_drop + rs.min_drop;
-    let reach_sq = model.slice_reach * model.slice_reach * qc;
-    let may_touch = if INNER {
-        let t = ring.raceway_radius + model.rw - drops;
-        let excess = qa - t * t - reach_sq;
-        excess < 0.0 || excess * excess < 4.0 * t * t * reach_sq
-    } else {
-        let t = ring.raceway_radius - model.rw + drops;
-        let shortfall = t * t + reach_sq - qa;
-        reach_sq >= t * t || shortfall < 0.0 || shortfall * shortfall < 4.0 * t * t * reach_sq
-    };
-    if !may_touch {
+    if !pass.may_touch[j] {
         return [0.0; 3];
     }
-    let race_drop = match &rs.profile {
-        Some(pr) => {
-            for (d, &x) in scratch.race_drop.iter_mut().zip(&rs.lanes.x) {
-                *d = pr.drop(zeta_c + x * a_ax);
-            }
-            &scratch.race_drop
-        }
-        None => &rs.lanes.zero,
-    };
-    let pair = PairKinematics {
-        c: rk.c,
-        a: rk.a,
-        v: rk.v,
-        w: rk.w,
-        orbit: rk.orbit,
-        ring_o: ring.o,
-        ring_v: ring.v,
-        ring_axis: ring.axis,
-        ring_spin: ring.spin,
-        raceway_radius: ring.raceway_radius,
-        rw: model.rw,
-        dp_c,
-        a_perp,
-        qa,
-        qb,
-        qc,
-        exponent: rs.n,
-    };
-    let out = &mut scratch.kernel;
-    slice_kernel::evaluate::<INNER>(&rs.lanes, &pair, race_drop, out);
-    let sums = out.collect_loaded(model.slice_x.len(), &rs.lanes.len, limit);
+    let out = &mut pass.out;
+    let sums = out.collect_loaded(rs.lanes.slots(j), &rs.lanes.len, limit);
     if let (Some(penetration), None) = (sums.violation, &violation) {
         *violation = Some(Violation {
             what: if INNER {
@@ -373,18 +428,19 @@ fn raceway_slices<const INNER: bool>(
             penetration,
         });
     }
-    if sums.count == 0 {
+    if sums.slots.is_empty() {
         return [0.0; 3];
     }
     *f = add(*f, sums.force);
     *m = add(*m, sums.moment);
     let load = sums.load;
     table.force[j] = load;
-    let (tmodel, loaded) = if INNER {
-        (&model.traction.inner, &mut scratch.inner)
+    let tmodel = if INNER {
+        &model.traction.inner
     } else {
-        (&model.traction.outer, &mut scratch.outer)
+        &model.traction.outer
     };
+    let loaded = &mut pass.loaded;
     let whole = ContactState {
         normal_force_n: load,
         geometry: ContactGeometry::Line {
@@ -399,20 +455,20 @@ fn raceway_slices<const INNER: bool>(
         film_thickness_m: None,
     };
     let contact = loaded.batch.add_contact(tmodel, &whole);
-    let n = sums.count;
+    let front = sums.slots.clone();
     let first = loaded.batch.push_block(
         contact,
-        &out.q[..n],
-        &out.len[..n],
-        &out.u[..n],
-        &out.vs[..n],
+        &out.q[front.clone()],
+        &out.len[front.clone()],
+        &out.u[front.clone()],
+        &out.vs[front.clone()],
     );
-    loaded.blocks.push((j, contact, first..first + n));
+    loaded.blocks.push((j, contact, first..first + front.len()));
     for (to, from) in loaded.r_cp.iter_mut().zip(&out.r_cp) {
-        to.extend_from_slice(&from[..n]);
+        to.extend_from_slice(&from[front.clone()]);
     }
     for (to, from) in loaded.vt.iter_mut().zip(&out.vt) {
-        to.extend_from_slice(&from[..n]);
+        to.extend_from_slice(&from[front.clone()]);
     }
     scale(sums.force, -1.0)
 }
@@ -430,8 +486,18 @@ fn cut<'a>(column: &'a [f64], slots: &std::ops::Range<usize>, n: usize) -> &'a [
 fn apply_traction(model: &Model, diag: &mut Diagnostics, f_inner: &mut V3, tables: Tables) {
     let sc = &mut diag.slices;
     for (loaded, table, tmodel, inner) in [
-        (&mut sc.inner, &mut diag.inner, &model.traction.inner, true),
-        (&mut sc.outer, &mut diag.outer, &model.traction.outer, false),
+        (
+            &mut sc.inner.loaded,
+            &mut diag.inner,
+            &model.traction.inner,
+            true,
+        ),
+        (
+            &mut sc.outer.loaded,
+            &mut diag.outer,
+            &model.traction.outer,
+            false,
+        ),
     ] {
         let batch = &mut loaded.batch;
         batch.evaluate(tmodel);
@@ -567,35 +633,9 @@ pub(crate) fn rhs(
         };
         let mut f = scale(g, model.m_r);
         let mut m = [0.0; 3];
-        let fr = raceway_slices::<true>(
-            model,
-            &model.inner,
-            j,
-            &rk,
-            &inner,
-            &mut f,
-            &mut m,
-            &mut diag.inner,
-            &mut diag.slices,
-            div_limit,
-            &mut diag.violation,
-            tables,
-        );
-        f_inner = add(f_inner, fr);
-        raceway_slices::<false>(
-            model,
-            &model.outer,
-            j,
-            &rk,
-            &outer,
-            &mut f,
-            &mut m,
-            &mut diag.outer,
-            &mut diag.slices,
-            div_limit,
-            &mut diag.violation,
-            tables,
-        );
+        let sc = &mut diag.slices;
+        raceway_pair::<true>(model, &model.inner, j, &rk, &inner, &mut sc.inner);
+        raceway_pair::<false>(model, &model.outer, j, &rk, &outer, &mut sc.outer);
 
         // roller ↔ cage bars: edge lines of pocket j at the bar contact radius, both pocket
         // sides, evaluated at both ends of the roller (SPEC §1.5 "bone-shaped" scar)
@@ -783,6 +823,41 @@ pub(crate) fn rhs(
 
         diag.slices.force[j] = f;
         diag.slices.moment[j] = m;
+    }
+
+    // the raceway slices of all rollers: slot loops, then each roller's loaded slices
+    raceway_kernel::<true>(model, &model.inner, &inner, &mut diag.slices.inner);
+    raceway_kernel::<false>(model, &model.outer, &outer, &mut diag.slices.outer);
+    for j in 0..model.z {
+        let sc = &mut diag.slices;
+        let (mut f, mut m) = (sc.force[j], sc.moment[j]);
+        let fr = raceway_collect::<true>(
+            model,
+            &model.inner,
+            j,
+            &mut f,
+            &mut m,
+            &mut diag.inner,
+            &mut sc.inner,
+            div_limit,
+            &mut diag.violation,
+            tables,
+        );
+        f_inner = add(f_inner, fr);
+        raceway_collect::<false>(
+            model,
+            &model.outer,
+            j,
+            &mut f,
+            &mut m,
+            &mut diag.outer,
+            &mut sc.outer,
+            div_limit,
+            &mut diag.violation,
+            tables,
+        );
+        sc.force[j] = f;
+        sc.moment[j] = m;
     }
 
     // raceway traction of all rollers, then Newton–Euler in cylindrical coordinates (seed 000

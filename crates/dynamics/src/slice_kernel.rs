@@ -1,10 +1,15 @@
 //! The raceway slice kernel: approach, slice law, damping, normal force and contact kinematics
-//! of every slice of one roller on one raceway (SPEC §2.1–2.2, §3.5), evaluated slice by slice
+//! of every slice of the rollers on one raceway (SPEC §2.1–2.2, §3.5), evaluated slot by slot
 //! without branches so that the loop runs in vector lanes.
 //!
-//! [`evaluate`] writes one record per slice into [`SliceOutputs`] (struct of arrays); slices that
-//! do not touch carry `q = 0`. The caller sums the forces and collects the loaded slices in
-//! slice order ([`crate::rhs`]), so the sums are the same as those of a slice-by-slice loop.
+//! The slots of a raceway are the slices of all rollers back to back (slot `j·S + s` is slice
+//! `s` of roller `j`, [`SliceConstants::slots`]), so that one loop runs over the slices of many
+//! rollers and no vector lane is spent on padding between rollers. The roller kinematics are
+//! repeated over the roller's slots ([`PairLanes::set`]); the ring's are common
+//! ([`RingKinematics`]). [`evaluate`] writes one record per slot into [`SliceOutputs`] (struct of
+//! arrays); slices that do not touch carry `q = 0`. The caller sums the forces and collects the
+//! loaded slices of each roller in slice order ([`SliceOutputs::collect_loaded`], used by
+//! [`crate::rhs`]), so the sums are the same as those of a slice-by-slice loop.
 //! On x86-64 the loop is also compiled for AVX2 (four lanes) and AVX-512F (eight lanes) and the
 //! widest copy the CPU supports is chosen at run time; all versions give the same bits (no
 //! fused multiply–add: Rust never contracts on its own, and `rolldyn_numerics::fastmath` is
@@ -14,14 +19,19 @@ use crate::vec3::{V3, add, axpy, cross, dot, scale, sub};
 use rolldyn_contact::damping::SliceDamping;
 use rolldyn_numerics::avx2::LoopCopy;
 use rolldyn_numerics::fastmath;
+use std::ops::Range;
 
-/// Vector width the slice arrays are padded to: the widest loop copy's (AVX-512F: eight `f64`).
+/// Vector width of the widest loop copy (AVX-512F: eight `f64`): the slot arrays have this
+/// many padding slots at the end, so that a loop over whole vectors never runs out of them.
 pub(crate) const LANES: usize = LoopCopy::MAX_LANES;
 
-/// Per-slice constants of one raceway, padded to a multiple of [`LANES`]. Padding slots never
-/// touch (their drop is +∞) and carry no stiffness, damping or length.
+/// Per-slot constants of one raceway: the slices of every roller back to back, then [`LANES`]
+/// padding slots, which never touch (their drop is +∞) and carry no stiffness, damping or
+/// length.
 #[derive(Debug, Clone)]
 pub(crate) struct SliceConstants {
+    /// slices per roller
+    pub slices: usize,
     /// slice centre along the roller axis from the roller centre, m
     pub x: Vec<f64>,
     /// roller profile drop at the slice centre, m
@@ -34,45 +44,49 @@ pub(crate) struct SliceConstants {
     pub delta_star: Vec<f64>,
     /// slice length, m
     pub len: Vec<f64>,
-    /// raceway drop of a straight raceway (all zero)
-    pub zero: Vec<f64>,
 }
 
 impl SliceConstants {
-    /// Constants of the slices at `x` with roller drops `drop`, lengths `len`, slice-law
-    /// coefficients `k` and damping ramps `damping` (viscous `C(δ)·δ̇`, as
+    /// Constants of `rollers` rollers whose slices are at `x` with roller drops `drop`, lengths
+    /// `len`, slice-law coefficients `k` and damping ramps `damping` (viscous `C(δ)·δ̇`, as
     /// [`SliceDamping::new`] builds them).
-    pub fn new(x: &[f64], drop: &[f64], len: &[f64], k: &[f64], damping: &[SliceDamping]) -> Self {
-        let padded = x.len().div_ceil(LANES) * LANES;
-        let pad = |v: &[f64], fill: f64| {
-            let mut out = v.to_vec();
-            out.resize(padded, fill);
+    pub fn new(
+        rollers: usize,
+        x: &[f64],
+        drop: &[f64],
+        len: &[f64],
+        k: &[f64],
+        damping: &[SliceDamping],
+    ) -> Self {
+        let repeat = |v: &[f64], fill: f64| {
+            let mut out: Vec<f64> = (0..rollers).flat_map(|_| v.iter().copied()).collect();
+            out.resize(out.len() + LANES, fill);
             out
         };
         let c_max: Vec<f64> = damping.iter().map(|d| d.c_max).collect();
         let delta_star: Vec<f64> = damping.iter().map(|d| d.delta_star).collect();
         debug_assert!(damping.iter().all(|d| d.uses_velocity));
         Self {
-            x: pad(x, 0.0),
-            drop: pad(drop, f64::INFINITY),
-            k: pad(k, 0.0),
-            c_max: pad(&c_max, 0.0),
-            delta_star: pad(&delta_star, 1.0),
-            len: pad(len, 0.0),
-            zero: vec![0.0; padded],
+            slices: x.len(),
+            x: repeat(x, 0.0),
+            drop: repeat(drop, f64::INFINITY),
+            k: repeat(k, 0.0),
+            c_max: repeat(&c_max, 0.0),
+            delta_star: repeat(&delta_star, 1.0),
+            len: repeat(len, 0.0),
         }
+    }
+
+    /// The slots of roller `j`.
+    #[inline]
+    pub fn slots(&self, j: usize) -> Range<usize> {
+        j * self.slices..(j + 1) * self.slices
     }
 }
 
-/// Kinematics shared by all slices of one roller–raceway pair.
+/// Kinematics of the ring, shared by all slots of a raceway.
 #[derive(Debug, Clone, Copy)]
-pub(crate) struct PairKinematics {
-    /// roller centre, axis (unit), velocity, angular velocity and orbital speed θ̇
-    pub c: V3,
-    pub a: V3,
-    pub v: V3,
-    pub w: V3,
-    pub orbit: f64,
+pub(crate) struct RingKinematics {
     /// ring centre, velocity, axis (unit) and spin
     pub ring_o: V3,
     pub ring_v: V3,
@@ -81,19 +95,80 @@ pub(crate) struct PairKinematics {
     /// raceway radius and roller radius, m
     pub raceway_radius: f64,
     pub rw: f64,
-    /// offset of the roller centre from the ring axis (perpendicular to it) and the roller
-    /// axis's component perpendicular to the ring axis: slice offset `dp_c + x a_perp`
-    pub dp_c: V3,
-    pub a_perp: V3,
-    /// `ρ(x)² = qa + 2 qb x + qc x²`
-    pub qa: f64,
-    pub qb: f64,
-    pub qc: f64,
     /// slice-law exponent n
     pub exponent: f64,
 }
 
-/// Per-slot results of [`evaluate`] (struct of arrays, one slot per padded slice).
+/// Kinematics of one roller against one raceway, shared by the roller's slots.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct PairKinematics {
+    /// roller centre, axis (unit), velocity, angular velocity and orbital speed θ̇
+    pub c: V3,
+    pub a: V3,
+    pub v: V3,
+    pub w: V3,
+    pub orbit: f64,
+}
+
+impl PairKinematics {
+    /// The values repeated over the roller's slots, in the column order of [`PairLanes`] and
+    /// of the slot loop: c, a, v, w, θ̇.
+    fn lane_values(&self) -> [f64; PAIR_COLUMNS] {
+        let [c, a, v, w] = [self.c, self.a, self.v, self.w];
+        [
+            c[0], c[1], c[2], a[0], a[1], a[2], v[0], v[1], v[2], w[0], w[1], w[2], self.orbit,
+        ]
+    }
+}
+
+/// Number of [`PairKinematics`] values per slot.
+const PAIR_COLUMNS: usize = 13;
+
+/// [`PairKinematics`] repeated over each roller's slots (struct of arrays, slot layout of
+/// [`SliceConstants`]), plus the raceway drop under each slot.
+#[derive(Debug, Clone)]
+pub(crate) struct PairLanes {
+    /// one column per entry of [`PairKinematics::lane_values`]
+    columns: [Vec<f64>; PAIR_COLUMNS],
+    /// raceway drop under the slot (profiled raceways), m
+    pub race_drop: Vec<f64>,
+}
+
+impl PairLanes {
+    /// Lanes for `slots` slots (padding included), all zero.
+    pub fn new(slots: usize) -> Self {
+        Self {
+            columns: std::array::from_fn(|_| vec![0.0; slots]),
+            race_drop: vec![0.0; slots],
+        }
+    }
+
+    /// Repeats `k` over `slots` (the raceway drop is left as it is). Writes whole vectors from
+    /// `slots.start`, i.e. up to [`LANES`]` − 1` slots beyond `slots.end`: set the rollers in
+    /// slot order, so that the next roller's values replace those.
+    pub fn set(&mut self, slots: Range<usize>, k: &PairKinematics) {
+        let r = slots.start..slots.start + slots.len().div_ceil(LANES) * LANES;
+        let mut columns = self.columns.each_mut().map(|c| &mut c[r.clone()]);
+        fill_columns(&mut columns, &k.lane_values());
+    }
+}
+
+rolldyn_numerics::avx2_twin! {
+    /// Writes `values[i]` into every slot of `columns[i]` (each a whole number of [`LANES`]
+    /// long): one vector store per [`LANES`] slots in the AVX-512F copy.
+    fn fill_columns(
+        columns: &mut [&mut [f64]; PAIR_COLUMNS],
+        values: &[f64; PAIR_COLUMNS],
+    ) = fill_columns_portable / fill_columns_avx2 / fill_columns_avx512 {
+        for (column, &value) in columns.iter_mut().zip(values) {
+            for chunk in column.chunks_exact_mut(LANES) {
+                chunk.copy_from_slice(&[value; LANES]);
+            }
+        }
+    }
+}
+
+/// Per-slot results of [`evaluate`] (struct of arrays, slot layout of [`SliceConstants`]).
 #[derive(Debug, Clone, Default)]
 pub(crate) struct SliceOutputs {
     /// approach δ, m (≤ 0: no contact)
@@ -112,12 +187,12 @@ pub(crate) struct SliceOutputs {
     pub vs: Vec<f64>,
     /// entrainment speed in the roller's orbital frame, m/s
     pub u: Vec<f64>,
-    /// slice length of the compacted slots ([`SliceOutputs::compact`]), m
+    /// slice length of the compacted slots ([`SliceOutputs::collect_loaded`]), m
     pub len: Vec<f64>,
 }
 
 impl SliceOutputs {
-    /// Outputs for `slots` padded slices.
+    /// Outputs for `slots` slots (padding included).
     pub fn new(slots: usize) -> Self {
         let v = || vec![0.0; slots];
         Self {
@@ -133,13 +208,14 @@ impl SliceOutputs {
         }
     }
 
-    /// Pass 1 over the first `n` slots (the slices, in slot order): sums the normal forces and
-    /// moments of the loaded slots and moves their traction inputs (q, u, vs, r_cp, vt, and
-    /// the slice length from `lens`) to the front, in slot order; notes the first approach
-    /// above `limit` (divergence check).
-    pub fn collect_loaded(&mut self, n: usize, lens: &[f64], limit: f64) -> LoadedSlots {
-        // every column cut to n: the loop has no bounds checks but the one on the
-        // destination slot, which is the same for all columns
+    /// Pass 1 over the slots of one roller (`slots`, in slice order): sums the normal forces
+    /// and moments of the loaded slots and gathers their traction inputs (q, u, vs, r_cp, vt,
+    /// and the slice length from `lens`) into one run of slots, [`LoadedSlots::slots`], in slot
+    /// order; notes the first approach above `limit` (divergence check). The loaded slices of a
+    /// roller are usually consecutive already; only those after a gap are moved.
+    pub fn collect_loaded(&mut self, slots: Range<usize>, lens: &[f64], limit: f64) -> LoadedSlots {
+        // every column cut to the roller's slots: the loop has no bounds checks but the one
+        // on the destination slot, which is the same for all columns
         let Self {
             delta,
             q,
@@ -151,17 +227,44 @@ impl SliceOutputs {
             u,
             len,
         } = self;
-        let (delta, lens) = (&delta[..n], &lens[..n]);
-        let (q, vs, u, len) = (&mut q[..n], &mut vs[..n], &mut u[..n], &mut len[..n]);
-        let (fx, fy, fz) = (&fx[..n], &fy[..n], &fz[..n]);
-        let (mx, my, mz) = (&mx[..n], &my[..n], &mz[..n]);
-        let (rx, ry, rz) = (&mut rx[..n], &mut ry[..n], &mut rz[..n]);
-        let (tx, ty, tz) = (&mut tx[..n], &mut ty[..n], &mut tz[..n]);
+        let r = slots;
+        let n = r.len();
+        let (delta, lens) = (&delta[r.clone()][..n], &lens[r.clone()][..n]);
+        let (q, vs, u, len) = (
+            &mut q[r.clone()][..n],
+            &mut vs[r.clone()][..n],
+            &mut u[r.clone()][..n],
+            &mut len[r.clone()][..n],
+        );
+        let (fx, fy, fz) = (
+            &fx[r.clone()][..n],
+            &fy[r.clone()][..n],
+            &fz[r.clone()][..n],
+        );
+        let (mx, my, mz) = (
+            &mx[r.clone()][..n],
+            &my[r.clone()][..n],
+            &mz[r.clone()][..n],
+        );
+        let (rx, ry, rz) = (
+            &mut rx[r.clone()][..n],
+            &mut ry[r.clone()][..n],
+            &mut rz[r.clone()][..n],
+        );
+        let (tx, ty, tz) = (
+            &mut tx[r.clone()][..n],
+            &mut ty[r.clone()][..n],
+            &mut tz[r.clone()][..n],
+        );
         let mut sums = LoadedSlots::default();
-        for s in 0..n {
-            if delta[s] > limit && sums.violation.is_none() {
-                sums.violation = Some(delta[s]);
-            }
+        if let Some(s) = delta.iter().position(|&d| d > limit) {
+            sums.violation = Some(delta[s]);
+        }
+        let Some(first) = q.iter().position(|&q| q > 0.0) else {
+            return sums;
+        };
+        let mut to = first;
+        for s in first..n {
             let qs = q[s];
             if qs <= 0.0 {
                 continue;
@@ -171,25 +274,27 @@ impl SliceOutputs {
             sums.load += qs;
             sums.length += lens[s];
             sums.entrainment += qs * u[s];
-            let to = sums.count;
-            q[to] = qs;
-            u[to] = u[s];
-            vs[to] = vs[s];
             len[to] = lens[s];
-            rx[to] = rx[s];
-            ry[to] = ry[s];
-            rz[to] = rz[s];
-            tx[to] = tx[s];
-            ty[to] = ty[s];
-            tz[to] = tz[s];
-            sums.count += 1;
+            if to != s {
+                q[to] = qs;
+                u[to] = u[s];
+                vs[to] = vs[s];
+                rx[to] = rx[s];
+                ry[to] = ry[s];
+                rz[to] = rz[s];
+                tx[to] = tx[s];
+                ty[to] = ty[s];
+                tz[to] = tz[s];
+            }
+            to += 1;
         }
+        sums.slots = r.start + first..r.start + to;
         sums
     }
 }
 
 /// Result of [`SliceOutputs::collect_loaded`].
-#[derive(Debug, Clone, Copy, Default)]
+#[derive(Debug, Clone, Default)]
 pub(crate) struct LoadedSlots {
     /// sum of the normal forces on the roller and of their moments about its centre
     pub force: V3,
@@ -198,78 +303,76 @@ pub(crate) struct LoadedSlots {
     pub load: f64,
     pub length: f64,
     pub entrainment: f64,
-    /// number of loaded slots (now at the front of the arrays)
-    pub count: usize,
+    /// the slots that now hold the loaded slices (empty: none)
+    pub slots: Range<usize>,
     /// first approach above the divergence limit, m
     pub violation: Option<f64>,
 }
 
-/// Evaluates every slot of `sc` for the pair `k` (inner raceway when `INNER`); `race_drop` is
-/// the raceway drop under each slot (`sc.zero` for a straight raceway).
+/// Evaluates the slots `slots` of `sc` (inner raceway when `INNER`) with the roller kinematics
+/// of `pairs` and the ring's `ring`. Every roller whose slots overlap `slots` must have its
+/// lanes set; the loop runs over whole vectors from `slots.start`, so it may also evaluate up
+/// to [`LANES`]` − 1` slots beyond `slots.end` (which are then overwritten or ignored).
 pub(crate) fn evaluate<const INNER: bool>(
     sc: &SliceConstants,
-    k: &PairKinematics,
-    race_drop: &[f64],
+    pairs: &PairLanes,
+    ring: &RingKinematics,
+    slots: Range<usize>,
     out: &mut SliceOutputs,
 ) {
-    evaluate_with::<INNER>(sc, k, race_drop, out, LoopCopy::detect());
+    evaluate_with::<INNER>(sc, pairs, ring, slots, out, LoopCopy::detect());
 }
 
-/// [`evaluate`] with the compiled copy of the loops chosen by the caller (only one that the CPU
+/// The inputs of the slot loop, each cut to the loop's slots.
+struct SlotInputs<'a> {
+    x: &'a [f64],
+    drop: &'a [f64],
+    stiff: &'a [f64],
+    c_max: &'a [f64],
+    delta_star: &'a [f64],
+    race_drop: &'a [f64],
+    /// the columns of [`PairLanes`]
+    pair: [&'a [f64]; PAIR_COLUMNS],
+}
+
+/// [`evaluate`] with the compiled copy of the loop chosen by the caller (only one that the CPU
 /// supports: [`LoopCopy::detect`] or narrower).
-///
-/// First the approach of every slot ([`approaches`], cheap); the full slot loop then runs only
-/// over the whole vectors (groups of [`LoopCopy::lanes`] slots) from the first to the last touching
-/// slot: a roller that is lightly loaded or tilted touches with a few slices only. The other
-/// slots get `q = 0`; their remaining outputs are not written.
-fn evaluate_with<const INNER: bool>(
-    sc: &SliceConstants,
-    k: &PairKinematics,
-    race_drop: &[f64],
+fn evaluate_with<'a, const INNER: bool>(
+    sc: &'a SliceConstants,
+    pairs: &'a PairLanes,
+    ring: &RingKinematics,
+    range: Range<usize>,
     out: &mut SliceOutputs,
     copy: LoopCopy,
 ) {
-    let n = sc.x.len();
-    macro_rules! approach {
-        ($loop:ident) => {
-            $loop::<INNER>(k, &sc.x, &sc.drop, race_drop, &mut out.delta)
-        };
-    }
-    match copy {
-        // SAFETY: `copy` names only copies the CPU supports ([`evaluate`], the tests below).
-        #[cfg(target_arch = "x86_64")]
-        LoopCopy::Avx512 => unsafe { approach!(approaches_avx512) },
-        #[cfg(target_arch = "x86_64")]
-        LoopCopy::Avx2 => unsafe { approach!(approaches_avx2) },
-        _ => approach!(approaches),
-    }
-    let delta = &out.delta[..n];
-    let Some(first) = delta.iter().position(|&d| d > 0.0) else {
-        out.q[..n].fill(0.0);
+    if range.is_empty() {
         return;
-    };
-    let last = delta.iter().rposition(|&d| d > 0.0).unwrap_or(first);
-    // the whole vectors from the first to the last touching slot
+    }
+    // whole vectors from the first slot (the arrays end in LANES padding slots)
     let lanes = copy.lanes();
-    let r = first / lanes * lanes..(last + 1).div_ceil(lanes) * lanes;
-    out.q[..r.start].fill(0.0);
-    out.q[r.end..n].fill(0.0);
+    let r = range.start..range.start + range.len().div_ceil(lanes) * lanes;
+    let cut = |v: &'a [f64]| -> &'a [f64] { &v[r.clone()] };
+    let inputs = SlotInputs {
+        x: cut(&sc.x),
+        drop: cut(&sc.drop),
+        stiff: cut(&sc.k),
+        c_max: cut(&sc.c_max),
+        delta_star: cut(&sc.delta_star),
+        race_drop: cut(&pairs.race_drop),
+        pair: pairs.columns.each_ref().map(|c| cut(c)),
+    };
     let [fx, fy, fz] = &mut out.force;
     let [mx, my, mz] = &mut out.moment;
     let [rx, ry, rz] = &mut out.r_cp;
     let [tx, ty, tz] = &mut out.vt;
-    // Every array is a separate reference argument of the kernel, so the compiler knows that
-    // they do not overlap and vectorises the loop without run-time overlap checks.
+    // Every output array is a separate `&mut` argument of the loop, so the compiler knows that
+    // they overlap neither each other nor the inputs and vectorises the loop without run-time
+    // overlap checks.
     macro_rules! call {
         ($kernel:ident) => {
             $kernel::<INNER>(
-                k,
-                &sc.x[r.clone()],
-                &sc.drop[r.clone()],
-                &sc.k[r.clone()],
-                &sc.c_max[r.clone()],
-                &sc.delta_star[r.clone()],
-                &race_drop[r.clone()],
+                ring,
+                &inputs,
                 &mut out.delta[r.clone()],
                 &mut out.q[r.clone()],
                 &mut fx[r.clone()],
@@ -290,7 +393,7 @@ fn evaluate_with<const INNER: bool>(
         };
     }
     match copy {
-        // SAFETY: as above.
+        // SAFETY: `copy` names only copies the CPU supports ([`evaluate`], the tests below).
         #[cfg(target_arch = "x86_64")]
         LoopCopy::Avx512 => unsafe { call!(slots_avx512) },
         #[cfg(target_arch = "x86_64")]
@@ -299,57 +402,16 @@ fn evaluate_with<const INNER: bool>(
     }
 }
 
-/// Distance `ρ` of the slice centre at `xs` from the ring axis and the approach `δ` of the
-/// slice (seed 000 (2.5): `R_i + R_w − ρ − z_s − z_race` inner, `ρ + R_w − R_o − z_s − z_race`
-/// outer), from `ρ(x)² = A + 2Bx + Cx²`.
-#[inline(always)]
-fn slot_approach<const INNER: bool>(
-    k: &PairKinematics,
-    xs: f64,
-    drop: f64,
-    race_drop: f64,
-) -> (f64, f64) {
-    let rho = (k.qa + xs * (2.0 * k.qb + xs * k.qc)).max(0.0).sqrt();
-    let delta = if INNER {
-        k.raceway_radius + k.rw - rho
-    } else {
-        rho + k.rw - k.raceway_radius
-    } - drop
-        - race_drop;
-    (rho, delta)
-}
-
 rolldyn_numerics::avx2_twin! {
-    /// The approach of every slot ([`slot_approach`]) into `delta_out`.
-    fn approaches<const INNER: bool>(
-        k: &PairKinematics,
-        x: &[f64],
-        drop: &[f64],
-        race_drop: &[f64],
-        delta_out: &mut [f64],
-    ) / approaches_avx2 / approaches_avx512 {
-        let n = x.len();
-        let (drop, race_drop, delta_out) = (&drop[..n], &race_drop[..n], &mut delta_out[..n]);
-        for s in 0..n {
-            delta_out[s] = slot_approach::<INNER>(k, x[s], drop[s], race_drop[s]).1;
-        }
-    }
-}
-
-rolldyn_numerics::avx2_twin! {
-    /// The loop over the slots. Per slot (SPEC §2.1–2.2): slice centre `p = c + x a`, distance
-    /// from the ring axis `ρ`, approach `δ = R_i + R_w − ρ − z_s − z_race` (inner) or
-    /// `ρ + R_w − R_o − z_s − z_race` (outer), `Q = max(0, k_s δⁿ + STEP(δ, 0, 0, δ*, C_max) δ̇)`
-    /// for `δ > 0` (seed 000 (2.5)–(2.8)), contact point `p − R_w n`, relative velocity of roller
-    /// and ring there, its tangential part and the orbital-frame entrainment speed (SPEC §3.5).
+    /// The loop over the slots. Per slot (SPEC §2.1–2.2): slice centre `p = c + x a`, its
+    /// distance `ρ` from the ring axis, approach `δ = R_i + R_w − ρ − z_s −
+    /// z_race` (inner) or `ρ + R_w − R_o − z_s − z_race` (outer, seed 000 (2.5)),
+    /// `Q = max(0, k_s δⁿ + STEP(δ, 0, 0, δ*, C_max) δ̇)` for `δ > 0` (seed 000 (2.5)–(2.8)),
+    /// contact point `p − R_w n`, relative velocity of roller and ring there, its tangential
+    /// part and the orbital-frame entrainment speed (SPEC §3.5).
     fn slots<const INNER: bool>(
-        k: &PairKinematics,
-        x: &[f64],
-        drop: &[f64],
-        stiff: &[f64],
-        c_max: &[f64],
-        delta_star: &[f64],
-        race_drop: &[f64],
+        ring: &RingKinematics,
+        inputs: &SlotInputs,
         delta_out: &mut [f64],
         q_out: &mut [f64],
         fx: &mut [f64],
@@ -368,45 +430,59 @@ rolldyn_numerics::avx2_twin! {
         u_out: &mut [f64],
     ) / slots_avx2 / slots_avx512 {
         // equal lengths, known to the compiler: no bounds checks in the loop
-        let n_slots = x.len();
-        let (drop, stiff, c_max, delta_star, race_drop) = (
-            &drop[..n_slots],
-            &stiff[..n_slots],
-            &c_max[..n_slots],
-            &delta_star[..n_slots],
-            &race_drop[..n_slots],
+        let n = inputs.x.len();
+        let (x, drop, stiff, c_max, delta_star, race_drop) = (
+            &inputs.x[..n],
+            &inputs.drop[..n],
+            &inputs.stiff[..n],
+            &inputs.c_max[..n],
+            &inputs.delta_star[..n],
+            &inputs.race_drop[..n],
         );
+        let [cx, cy, cz, ax, ay, az, vx, vy, vz, wx, wy, wz, orbit] = inputs.pair.map(|c| &c[..n]);
         let (delta_out, q_out, vs_out, u_out) = (
-            &mut delta_out[..n_slots],
-            &mut q_out[..n_slots],
-            &mut vs_out[..n_slots],
-            &mut u_out[..n_slots],
+            &mut delta_out[..n],
+            &mut q_out[..n],
+            &mut vs_out[..n],
+            &mut u_out[..n],
         );
-        let (fx, fy, fz) = (&mut fx[..n_slots], &mut fy[..n_slots], &mut fz[..n_slots]);
-        let (mx, my, mz) = (&mut mx[..n_slots], &mut my[..n_slots], &mut mz[..n_slots]);
-        let (rx, ry, rz) = (&mut rx[..n_slots], &mut ry[..n_slots], &mut rz[..n_slots]);
-        let (tx, ty, tz) = (&mut tx[..n_slots], &mut ty[..n_slots], &mut tz[..n_slots]);
-        let ring_spin_axis = scale(k.ring_axis, k.ring_spin);
-        for s in 0..n_slots {
+        let (fx, fy, fz) = (&mut fx[..n], &mut fy[..n], &mut fz[..n]);
+        let (mx, my, mz) = (&mut mx[..n], &mut my[..n], &mut mz[..n]);
+        let (rx, ry, rz) = (&mut rx[..n], &mut ry[..n], &mut rz[..n]);
+        let (tx, ty, tz) = (&mut tx[..n], &mut ty[..n], &mut tz[..n]);
+        let ring_spin_axis = scale(ring.ring_axis, ring.ring_spin);
+        for s in 0..n {
             let xs = x[s];
-            let (rho, delta) = slot_approach::<INNER>(k, xs, drop[s], race_drop[s]);
+            let (c, a) = ([cx[s], cy[s], cz[s]], [ax[s], ay[s], az[s]]);
+            // offset of the slice centre from the ring axis, perpendicular to it
+            let d_c = sub(c, ring.ring_o);
+            let dp_c = axpy(d_c, -dot(d_c, ring.ring_axis), ring.ring_axis);
+            let a_perp = axpy(a, -dot(a, ring.ring_axis), ring.ring_axis);
+            let offset = axpy(dp_c, xs, a_perp);
+            let rho = dot(offset, offset).sqrt();
+            let delta = if INNER {
+                ring.raceway_radius + ring.rw - rho
+            } else {
+                rho + ring.rw - ring.raceway_radius
+            } - drop[s]
+                - race_drop[s];
             let inv_rho = if rho > 0.0 { 1.0 / rho } else { 0.0 };
             let touching = delta > 0.0 && rho > 0.0;
             // outward unit normal of the ring axis through the slice centre; n points from the
             // ring into the roller
-            let n_out = scale(axpy(k.dp_c, xs, k.a_perp), inv_rho);
+            let n_out = scale(offset, inv_rho);
             let n = if INNER { n_out } else { scale(n_out, -1.0) };
-            let r_cp = axpy(scale(k.a, xs), -k.rw, n);
-            let cp = add(k.c, r_cp);
-            let v_roll = add(k.v, cross(k.w, r_cp));
-            let v_ring = add(k.ring_v, cross(ring_spin_axis, sub(cp, k.ring_o)));
+            let r_cp = axpy(scale(a, xs), -ring.rw, n);
+            let cp = add(c, r_cp);
+            let v_roll = add([vx[s], vy[s], vz[s]], cross([wx[s], wy[s], wz[s]], r_cp));
+            let v_ring = add(ring.ring_v, cross(ring_spin_axis, sub(cp, ring.ring_o)));
             let vrel = sub(v_roll, v_ring);
             let v_normal = dot(vrel, n);
             let delta_dot = -v_normal;
             // slice law k_s δⁿ (exp(n ln δ)); the damping ramp STEP(δ, 0, 0, δ*, C_max) of
             // rolldyn_contact::damping with Δ = δ/δ* clamped to [0, 1]
             let elastic = if touching {
-                stiff[s] * fastmath::exp(k.exponent * fastmath::ln(delta))
+                stiff[s] * fastmath::exp(ring.exponent * fastmath::ln(delta))
             } else {
                 0.0
             };
@@ -422,8 +498,8 @@ rolldyn_numerics::avx2_twin! {
             let moment = cross(r_cp, normal);
             let vt = axpy(vrel, -v_normal, n);
             // rolling direction and entrainment speed in the roller's orbital frame (SPEC §3.5)
-            let t_dir = cross(k.ring_axis, n_out);
-            let w_frame = [-k.orbit * cp[1], k.orbit * cp[0], 0.0];
+            let t_dir = cross(ring.ring_axis, n_out);
+            let w_frame = [-orbit[s] * cp[1], orbit[s] * cp[0], 0.0];
             let u = 0.5 * (dot(v_roll, t_dir) + dot(v_ring, t_dir)) - dot(w_frame, t_dir);
             delta_out[s] = delta;
             q_out[s] = q;
@@ -450,69 +526,90 @@ mod tests {
     use super::*;
     use crate::vec3::{norm, perp};
 
-    fn constants() -> SliceConstants {
+    /// Ten slices per roller, `rollers` rollers.
+    fn constants(rollers: usize) -> SliceConstants {
         let x: Vec<f64> = (0..10).map(|s| -4.5e-3 + 1e-3 * s as f64).collect();
         let drop: Vec<f64> = x.iter().map(|x| 2e-6 * (x / 5e-3).powi(4)).collect();
         let len = vec![1e-3; 10];
         let k = vec![6e8; 10];
         let damping = vec![SliceDamping::new(30.0, 1e-6); 10];
-        SliceConstants::new(&x, &drop, &len, &k, &damping)
+        SliceConstants::new(rollers, &x, &drop, &len, &k, &damping)
     }
 
-    fn pair(inner: bool) -> PairKinematics {
-        // roller centre at the pitch radius, slightly tilted; ring axis z through the origin
-        let c = [0.0, 0.0862, 1e-5];
-        let a = [1.5e-3, -2e-3, 1.0];
+    fn ring(inner: bool) -> RingKinematics {
+        RingKinematics {
+            ring_o: [0.0; 3],
+            ring_v: [0.0; 3],
+            ring_axis: [0.0, 0.0, 1.0],
+            ring_spin: if inner { 667.0 } else { 0.0 },
+            raceway_radius: if inner { 0.0762 - 4e-6 } else { 0.0962 + 3e-6 },
+            rw: 0.01,
+            exponent: 10.0 / 9.0,
+        }
+    }
+
+    /// A roller at the pitch radius, slightly tilted by `tilt`, its centre displaced radially
+    /// by `shift`; ring axis z through the origin.
+    fn pair(tilt: f64, shift: f64) -> PairKinematics {
+        let c = [0.0, 0.0862 + shift, 1e-5];
+        let a = [1.5e-3 * tilt, -2e-3 * tilt, 1.0];
         let na = norm(a);
         let a = scale(a, 1.0 / na);
-        let ring_axis = [0.0, 0.0, 1.0];
-        let a_ax = dot(a, ring_axis);
-        let dp_c = [c[0], c[1], 0.0];
-        let a_perp = axpy(a, -a_ax, ring_axis);
         PairKinematics {
             c,
             a,
             v: [-25.0, 0.01, 0.0],
             w: [3.0, -2.0, -2900.0],
             orbit: 290.0,
-            ring_o: [0.0; 3],
-            ring_v: [0.0; 3],
-            ring_axis,
-            ring_spin: if inner { 667.0 } else { 0.0 },
-            raceway_radius: if inner { 0.0762 - 4e-6 } else { 0.0962 + 3e-6 },
-            rw: 0.01,
-            dp_c,
-            a_perp,
-            qa: dot(dp_c, dp_c),
-            qb: dot(dp_c, a_perp),
-            qc: dot(a_perp, a_perp),
-            exponent: 10.0 / 9.0,
         }
+    }
+
+    /// Evaluates every slot of `sc` for the rollers `pairs` with the loop copy `copy`.
+    fn run(
+        sc: &SliceConstants,
+        pairs: &[PairKinematics],
+        inner: bool,
+        copy: LoopCopy,
+    ) -> SliceOutputs {
+        let mut lanes = PairLanes::new(sc.x.len());
+        for (j, k) in pairs.iter().enumerate() {
+            lanes.set(sc.slots(j), k);
+        }
+        let mut out = SliceOutputs::new(sc.x.len());
+        let all = 0..pairs.len() * sc.slices;
+        if inner {
+            evaluate_with::<true>(sc, &lanes, &ring(true), all, &mut out, copy);
+        } else {
+            evaluate_with::<false>(sc, &lanes, &ring(false), all, &mut out, copy);
+        }
+        out
     }
 
     /// Slice by slice with the library's own functions (`powf`, `SliceDamping`, `perp`).
     fn reference(sc: &SliceConstants, k: &PairKinematics, inner: bool, s: usize) -> (f64, V3, f64) {
+        let g = ring(inner);
         let x = sc.x[s];
         let p = axpy(k.c, x, k.a);
-        let off = axpy(k.dp_c, x, k.a_perp);
+        // offset from the ring axis z through the origin
+        let off = [p[0], p[1], 0.0];
         let rho = norm(off);
         let delta = if inner {
-            k.raceway_radius + k.rw - rho
+            g.raceway_radius + g.rw - rho
         } else {
-            rho + k.rw - k.raceway_radius
+            rho + g.rw - g.raceway_radius
         } - sc.drop[s];
         let n_out = scale(off, 1.0 / rho);
         let n = if inner { n_out } else { scale(n_out, -1.0) };
-        let cp = axpy(p, -k.rw, n);
+        let cp = axpy(p, -g.rw, n);
         let v_roll = add(k.v, cross(k.w, sub(cp, k.c)));
         let v_ring = add(
-            k.ring_v,
-            scale(cross(k.ring_axis, sub(cp, k.ring_o)), k.ring_spin),
+            g.ring_v,
+            scale(cross(g.ring_axis, sub(cp, g.ring_o)), g.ring_spin),
         );
         let vrel = sub(v_roll, v_ring);
         let damping = SliceDamping::new(sc.c_max[s], sc.delta_star[s]);
         let q = if delta > 0.0 {
-            damping.normal_force(sc.k[s] * delta.powf(k.exponent), delta, -dot(vrel, n))
+            damping.normal_force(sc.k[s] * delta.powf(g.exponent), delta, -dot(vrel, n))
         } else {
             0.0
         };
@@ -521,15 +618,10 @@ mod tests {
 
     #[test]
     fn kernel_matches_slice_by_slice_evaluation() {
-        let sc = constants();
+        let sc = constants(1);
         for inner in [true, false] {
-            let k = pair(inner);
-            let mut out = SliceOutputs::new(sc.x.len());
-            if inner {
-                evaluate::<true>(&sc, &k, &sc.zero, &mut out);
-            } else {
-                evaluate::<false>(&sc, &k, &sc.zero, &mut out);
-            }
+            let k = pair(1.0, 0.0);
+            let out = run(&sc, &[k], inner, LoopCopy::detect());
             let mut loaded = 0;
             for s in 0..10 {
                 let (q, vt, delta) = reference(&sc, &k, inner, s);
@@ -560,39 +652,60 @@ mod tests {
         }
     }
 
-    /// The AVX2 and AVX-512F copies (those this CPU supports) and the portable loop give the
-    /// same bits.
+    /// The bits of every output of the first `slots` slots.
+    fn bits(o: &SliceOutputs, slots: usize) -> Vec<u64> {
+        let mut all = vec![&o.delta, &o.q, &o.vs, &o.u];
+        all.extend(o.force.iter().chain(&o.moment).chain(&o.r_cp).chain(&o.vt));
+        all.iter()
+            .flat_map(|v| v[..slots].iter().map(|x| x.to_bits()))
+            .collect()
+    }
+
+    /// Rollers evaluated back to back in one loop give each roller's own results, bit for bit,
+    /// and the AVX2 and AVX-512F copies (those this CPU supports) give the bits of the portable
+    /// loop.
     #[test]
-    fn vector_and_portable_loops_agree() {
-        let sc = constants();
-        // every approach and force; the other outputs of the loaded slots (the loop leaves
-        // those of slots outside its vectors unwritten, and the copies' vectors differ in width)
-        let bits = |o: &SliceOutputs| {
-            let mut all = vec![&o.vs, &o.u];
-            all.extend(o.force.iter().chain(&o.moment).chain(&o.r_cp).chain(&o.vt));
-            let loaded = (0..o.q.len()).filter(|&s| o.q[s] > 0.0);
-            let mut bits: Vec<u64> = o.delta.iter().chain(&o.q).map(|x| x.to_bits()).collect();
-            bits.extend(loaded.flat_map(|s| all.iter().map(move |v| v[s].to_bits())));
-            bits
-        };
-        for copy in [LoopCopy::Avx2, LoopCopy::Avx512] {
-            if copy > LoopCopy::detect() {
-                continue;
-            }
-            for inner in [true, false] {
-                let k = pair(inner);
-                let run = |copy| {
-                    let mut out = SliceOutputs::new(sc.x.len());
-                    if inner {
-                        evaluate_with::<true>(&sc, &k, &sc.zero, &mut out, copy);
-                    } else {
-                        evaluate_with::<false>(&sc, &k, &sc.zero, &mut out, copy);
+    fn packed_rollers_and_loop_copies_agree() {
+        let pairs = [pair(1.0, 0.0), pair(-2.0, 3e-6), pair(0.5, -2e-6)];
+        let sc = constants(pairs.len());
+        let slots = pairs.len() * sc.slices;
+        for inner in [true, false] {
+            let portable = run(&sc, &pairs, inner, LoopCopy::Portable);
+            for (j, k) in pairs.iter().enumerate() {
+                let alone = run(&constants(1), &[*k], inner, LoopCopy::Portable);
+                let own: Vec<u64> = {
+                    let mut o = SliceOutputs::new(sc.x.len());
+                    let r = sc.slots(j);
+                    for (to, from) in [
+                        (&mut o.delta, &portable.delta),
+                        (&mut o.q, &portable.q),
+                        (&mut o.vs, &portable.vs),
+                        (&mut o.u, &portable.u),
+                    ] {
+                        to[..sc.slices].copy_from_slice(&from[r.clone()]);
                     }
-                    bits(&out)
+                    let groups = [
+                        (&mut o.force, &portable.force),
+                        (&mut o.moment, &portable.moment),
+                        (&mut o.r_cp, &portable.r_cp),
+                        (&mut o.vt, &portable.vt),
+                    ];
+                    for (to, from) in groups {
+                        for (t, f) in to.iter_mut().zip(from) {
+                            t[..sc.slices].copy_from_slice(&f[r.clone()]);
+                        }
+                    }
+                    bits(&o, sc.slices)
                 };
+                assert_eq!(own, bits(&alone, sc.slices), "roller {j}, inner {inner}");
+            }
+            for copy in [LoopCopy::Avx2, LoopCopy::Avx512] {
+                if copy > LoopCopy::detect() {
+                    continue;
+                }
                 assert_eq!(
-                    run(copy),
-                    run(LoopCopy::Portable),
+                    bits(&run(&sc, &pairs, inner, copy), slots),
+                    bits(&portable, slots),
                     "{copy:?}, inner {inner}"
                 );
             }

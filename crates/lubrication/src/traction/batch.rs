@@ -437,17 +437,21 @@ impl ContactLanes {
         }));
         let n = contact_of.len();
         self.prepared.clear();
-        self.prepared
-            .extend(contact_of.iter().map(|&k| self.rows[k].0));
-        let rows = &self.rows;
-        let mut columns = self.columns.each_mut().map(|c| {
-            c.resize(n, 0.0);
-            &mut c[..n]
-        });
-        for (i, &k) in contact_of.iter().enumerate() {
-            for (column, &value) in columns.iter_mut().zip(&rows[k].1) {
-                column[i] = value;
+        self.prepared.resize(n, false);
+        for column in &mut self.columns {
+            column.resize(n, 0.0);
+        }
+        // the slices of a contact are consecutive (`push_block`): one fill per run and column
+        let mut start = 0;
+        while start < n {
+            let k = contact_of[start];
+            let end = start + contact_of[start..].iter().take_while(|&&c| c == k).count();
+            let (prepared, row) = &self.rows[k];
+            self.prepared[start..end].fill(*prepared);
+            for (column, &value) in self.columns.iter_mut().zip(row) {
+                column[start..end].fill(value);
             }
+            start = end;
         }
     }
 }
