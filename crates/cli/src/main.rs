@@ -57,6 +57,13 @@ fn main() -> ExitCode {
     unsafe {
         libc::signal(libc::SIGPIPE, libc::SIG_DFL);
     }
+    if let Some(missing) = missing_cpu_features() {
+        eprintln!(
+            "error: this rolldyn was built for x86-64-v3 but the CPU lacks {missing}; rebuild \
+             with RUSTFLAGS=\"-C target-cpu=x86-64\" cargo build --release (see .cargo/config.toml)"
+        );
+        return ExitCode::FAILURE;
+    }
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Demo(args) => commands::demo::run(args),
@@ -80,4 +87,20 @@ fn main() -> ExitCode {
             ExitCode::from(failure.exit_code())
         }
     }
+}
+
+/// The instruction-set extensions this binary was compiled to assume (`.cargo/config.toml`)
+/// that the CPU does not have, so that an old CPU gets a message instead of an illegal
+/// instruction.
+fn missing_cpu_features() -> Option<&'static str> {
+    #[cfg(all(target_arch = "x86_64", target_feature = "avx2"))]
+    {
+        if !std::arch::is_x86_feature_detected!("avx2") {
+            return Some("AVX2");
+        }
+        if !std::arch::is_x86_feature_detected!("fma") {
+            return Some("FMA");
+        }
+    }
+    None
 }

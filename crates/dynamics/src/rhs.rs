@@ -146,6 +146,8 @@ struct RacewayScratch {
     frame: Vec<(f64, f64, V3, V3)>,
     /// per roller: azimuth θ, sin θ, cos θ (one vectorised `sin_cos` for all rollers)
     theta: [Vec<f64>; 3],
+    /// per pocket: radial and tangential unit vectors in the cage plane
+    pockets: Vec<(V3, V3)>,
 }
 
 /// The contacts of one raceway in one evaluation (pass 1 of [`rhs`]): which rollers may touch
@@ -213,6 +215,7 @@ impl RacewayScratch {
             moment: vec![[0.0; 3]; z],
             frame: vec![(0.0, 1.0, [0.0, 0.0, 1.0], [0.0; 3]); z],
             theta: [vec![0.0; z], vec![0.0; z], vec![1.0; z]],
+            pockets: vec![([1.0, 0.0, 0.0], [0.0, 1.0, 0.0]); z],
         }
     }
 
@@ -614,6 +617,17 @@ pub(crate) fn rhs(
     }
     fastmath::sin_cos_many(theta, sin_theta, cos_theta);
 
+    // pocket frames: radial unit vector of pocket j in the cage plane (centre angle
+    // φ_c + 2πj/Z by the angle-sum formulas) and the tangential one, all pockets in one loop
+    for (frame, &(sin_pitch, cos_pitch)) in
+        diag.slices.pockets.iter_mut().zip(&model.pocket_sin_cos)
+    {
+        let sp = sin_phi * cos_pitch + cos_phi * sin_pitch;
+        let cpp = cos_phi * cos_pitch - sin_phi * sin_pitch;
+        let ep = unit_or(perp([cpp, sp, 0.0], ac), [cpp, sp, 0.0]);
+        *frame = (ep, cross(ac, ep));
+    }
+
     for j in 0..model.z {
         let b = lay.roller(j);
         let (r, zz) = (y[b + 1], y[b + 2]);
@@ -639,12 +653,7 @@ pub(crate) fn rhs(
 
         // roller ↔ cage bars: edge lines of pocket j at the bar contact radius, both pocket
         // sides, evaluated at both ends of the roller (SPEC §1.5 "bone-shaped" scar)
-        // pocket centre angle φ_c + 2πj/Z by the angle-sum formulas
-        let (sin_pitch, cos_pitch) = model.pocket_sin_cos[j];
-        let sp = sin_phi * cos_pitch + cos_phi * sin_pitch;
-        let cpp = cos_phi * cos_pitch - sin_phi * sin_pitch;
-        let ep = unit_or(perp([cpp, sp, 0.0], ac), [cpp, sp, 0.0]);
-        let tp = cross(ac, ep);
+        let (ep, tp) = diag.slices.pockets[j];
         let mut bar_q = 0.0;
         let mut bar_pw = 0.0;
         for side in [-1.0, 1.0] {
@@ -652,11 +661,13 @@ pub(crate) fn rhs(
             for &x in &model.bar_x {
                 let q = axpy(centre, x, a);
                 let d = perp(sub(q, edge), ac);
-                let dist = norm(d);
-                let delta = model.rw - dist;
-                if delta <= 0.0 || dist == 0.0 {
+                // no square root for the (many) points clear of the bar
+                let dist_sq = dot(d, d);
+                if dist_sq >= model.rw * model.rw || dist_sq == 0.0 {
                     continue;
                 }
+                let dist = dist_sq.sqrt();
+                let delta = model.rw - dist;
                 note(diag, "roller ↔ cage bar", j, delta, div_limit);
                 let n = scale(d, 1.0 / dist);
                 let cp = axpy(q, -model.rw, n);
