@@ -36,6 +36,7 @@
 //! for the ribs, EHL point-contact traction when the contact spot (radius `√(R δ)`) stays inside
 //! the overlap of end face and rib face (SPEC §6.7), boundary friction otherwise.
 
+use crate::kinematics::RollerKinematics;
 use crate::parameters::{EndFriction, RollerEndParameters};
 use crate::vec3::{V3, add, axpy, cross, dot, norm, perp, power, scale, sub};
 use rolldyn_contact::damping::SliceDamping;
@@ -106,16 +107,6 @@ pub(crate) struct BodyKin {
     pub v: V3,
     pub axis: V3,
     pub omega: V3,
-}
-
-/// Roller state needed by the end contacts.
-#[derive(Debug, Clone, Copy)]
-pub(crate) struct RollerState {
-    pub c: V3,
-    pub a: V3,
-    pub v: V3,
-    pub w: V3,
-    pub orbit: f64,
 }
 
 /// Deepest point of a roller end in a face band.
@@ -386,7 +377,7 @@ pub(crate) fn end_force(
     end: &EndGeometry,
     body: &BodyKin,
     reach: &AxialReach,
-    roller: &RollerState,
+    roller: &RollerKinematics,
     params: &RollerEndParameters,
     damping: &SliceDamping,
     lub: Option<&EndLubrication>,

@@ -81,6 +81,7 @@ mod ends;
 mod error;
 mod initial;
 pub mod integrator;
+mod kinematics;
 pub mod land;
 mod layout;
 mod model;

@@ -4,13 +4,12 @@
 //!
 //! Allocation-free: all scratch lives in [`Diagnostics`], allocated once.
 
-use crate::ends::{
-    AxialReach, BodyKin, EndContactRegime, EndForce, EndLubrication, RollerState, end_force,
-};
+use crate::ends::{AxialReach, BodyKin, EndContactRegime, EndForce, EndLubrication, end_force};
+use crate::kinematics::RollerKinematics;
 use crate::land::LandKinematics;
 use crate::layout::{CAGE_DOF, INNER_DOF, ROLLER_DOF};
 use crate::model::{Model, RacewaySlices};
-use crate::slice_kernel::{self, LANES, PairKinematics, PairLanes, RingKinematics, SliceOutputs};
+use crate::slice_kernel::{self, LANES, LoadedRun, RingKinematics, RollerLanes, SliceOutputs};
 use crate::vec3::{V3, add, axpy, cross, dot, norm, perp, power, scale, sub, unit_or};
 use rolldyn_contact::damping::SliceDamping;
 use rolldyn_lubrication::{BatchContact, ContactGeometry, ContactState, SliceBatch};
@@ -140,6 +139,8 @@ pub(crate) struct Diagnostics {
 struct RacewayScratch {
     inner: RacewayPass,
     outer: RacewayPass,
+    /// the kinematics of every roller that may touch a raceway, repeated over its slots
+    rollers: RollerLanes,
     force: Vec<V3>,
     moment: Vec<V3>,
     /// per roller: sin θ, cos θ, axis and angular velocity (pass 1, reused by Newton–Euler)
@@ -151,13 +152,14 @@ struct RacewayScratch {
 }
 
 /// The contacts of one raceway in one evaluation (pass 1 of [`rhs`]): which rollers may touch
-/// it, their kinematics repeated over their slots, the slot loop's results, and the loaded
-/// contacts of the traction batch.
+/// it, the raceway drop under their slots, the slot loop's results, and the loaded contacts of
+/// the traction batch.
 #[derive(Debug, Clone)]
 struct RacewayPass {
-    /// per roller: the pair bound allows a contact, and the roller's slots are set
+    /// per roller: the pair bound allows a contact (the roller's lanes are then set)
     may_touch: Vec<bool>,
-    pairs: PairLanes,
+    /// raceway drop under each slot (profiled raceways), m
+    race_drop: Vec<f64>,
     out: SliceOutputs,
     loaded: LoadedContacts,
 }
@@ -167,42 +169,41 @@ impl RacewayPass {
         let slots = z * slices + LANES;
         Self {
             may_touch: vec![false; z],
-            pairs: PairLanes::new(slots),
+            race_drop: vec![0.0; slots],
             out: SliceOutputs::new(slots),
-            loaded: LoadedContacts::new(z, z * slices),
+            loaded: LoadedContacts::new(z, slots),
         }
     }
 }
 
-/// The loaded roller–raceway contacts of one raceway: one block of slots (the loaded slices
-/// of the roller) per contact in the traction batch, with the contact point and tangential
-/// velocity of every slot for the friction forces.
+/// The loaded roller–raceway contacts of one raceway: one block of batch slices (the loaded
+/// slices of the roller) per contact in the traction batch, and the runs of consecutive loaded
+/// slots they came from, whose contact points and tangential velocities stay in
+/// [`SliceOutputs`].
 #[derive(Debug, Clone)]
 struct LoadedContacts {
     batch: SliceBatch,
-    /// roller, batch contact and batch slots of each block
+    /// roller, batch contact and batch slices of each block
     blocks: Vec<(usize, BatchContact, std::ops::Range<usize>)>,
-    r_cp: [Vec<f64>; 3],
-    vt: [Vec<f64>; 3],
+    /// every run of consecutive loaded slots, in batch order
+    runs: Vec<LoadedRun>,
 }
 
 impl LoadedContacts {
     fn new(rollers: usize, slots: usize) -> Self {
-        let v = || Vec::with_capacity(slots);
+        let mut batch = SliceBatch::with_capacity(slots);
+        batch.columns_mut(slots);
         Self {
-            batch: SliceBatch::with_capacity(slots),
+            batch,
             blocks: Vec::with_capacity(rollers),
-            r_cp: [v(), v(), v()],
-            vt: [v(), v(), v()],
+            runs: Vec::with_capacity(slots),
         }
     }
 
     fn clear(&mut self) {
         self.batch.clear();
         self.blocks.clear();
-        for v in self.r_cp.iter_mut().chain(self.vt.iter_mut()) {
-            v.clear();
-        }
+        self.runs.clear();
     }
 }
 
@@ -211,6 +212,7 @@ impl RacewayScratch {
         Self {
             inner: RacewayPass::new(z, slices),
             outer: RacewayPass::new(z, slices),
+            rollers: RollerLanes::new(z * slices + LANES),
             force: vec![[0.0; 3]; z],
             moment: vec![[0.0; 3]; z],
             frame: vec![(0.0, 1.0, [0.0, 0.0, 1.0], [0.0; 3]); z],
@@ -269,15 +271,6 @@ fn wr(dy: &mut [f64], i: usize, v: V3) {
     dy[i + 2] = v[2];
 }
 
-/// Kinematics of the roller needed by its contacts.
-struct RollerKin {
-    c: V3,
-    a: V3,
-    v: V3,
-    w: V3,
-    orbit: f64,
-}
-
 /// Kinematics of a ring (centre, velocity, axis, spin) and its raceway radius at this time.
 struct RingKin {
     o: V3,
@@ -299,17 +292,16 @@ fn note(diag: &mut Diagnostics, what: &'static str, index: usize, penetration: f
 }
 
 /// Pass 1a of roller `j` on one raceway (SPEC §2.1–2.2): whether any slice can touch and, if
-/// so, the pair kinematics repeated over the roller's slots for the slot loop
-/// ([`raceway_kernel`]).
+/// so, the raceway drop under the roller's slots for the slot loop ([`raceway_kernel`]).
 #[inline]
 fn raceway_pair<const INNER: bool>(
     model: &Model,
     rs: &RacewaySlices,
     j: usize,
-    rk: &RollerKin,
+    rk: &RollerKinematics,
     ring: &RingKin,
     pass: &mut RacewayPass,
-) {
+) -> bool {
     pass.may_touch[j] = false;
     // Slice centres p = c + x a: their offset from the ring axis is dp(x) = dp_c + x a⊥, so
     // ρ(x)² = A + 2Bx + Cx², a convex parabola in x. A slice can touch the inner raceway only
@@ -338,24 +330,17 @@ fn raceway_pair<const INNER: bool>(
         t <= 0.0 || qa + reach * (2.0 * qb.abs() + reach * qc) > t * t
     };
     if !may_touch {
-        return;
+        return false;
     }
-    let slots = rs.lanes.slots(j);
     if let Some(pr) = &rs.profile {
-        let race_drop = &mut pass.pairs.race_drop[slots.clone()];
-        for (d, &x) in race_drop.iter_mut().zip(&rs.lanes.x[slots.clone()]) {
+        let slots = rs.lanes.slots(j);
+        let race_drop = &mut pass.race_drop[slots.clone()];
+        for (d, &x) in race_drop.iter_mut().zip(&rs.lanes.x[slots]) {
             *d = pr.drop(zeta_c + x * a_ax);
         }
     }
-    let pair = PairKinematics {
-        c: rk.c,
-        a: rk.a,
-        v: rk.v,
-        w: rk.w,
-        orbit: rk.orbit,
-    };
-    pass.pairs.set(slots, &pair);
     pass.may_touch[j] = true;
+    true
 }
 
 /// Pass 1b on one raceway: the slot loop ([`slice_kernel::evaluate`]: approach, slice law,
@@ -365,6 +350,7 @@ fn raceway_kernel<const INNER: bool>(
     model: &Model,
     rs: &RacewaySlices,
     ring: &RingKin,
+    rollers: &RollerLanes,
     pass: &mut RacewayPass,
 ) {
     let kinematics = RingKinematics {
@@ -387,7 +373,14 @@ fn raceway_kernel<const INNER: bool>(
             j += 1;
         }
         let slots = rs.lanes.slots(first).start..rs.lanes.slots(j - 1).end;
-        slice_kernel::evaluate::<INNER>(&rs.lanes, &pass.pairs, &kinematics, slots, &mut pass.out);
+        slice_kernel::evaluate::<INNER>(
+            &rs.lanes,
+            rollers,
+            &pass.race_drop,
+            &kinematics,
+            slots,
+            &mut pass.out,
+        );
     }
 }
 
@@ -418,8 +411,15 @@ fn raceway_collect<const INNER: bool>(
     if !pass.may_touch[j] {
         return [0.0; 3];
     }
-    let out = &mut pass.out;
-    let sums = out.collect_loaded(rs.lanes.slots(j), &rs.lanes.len, limit);
+    let loaded = &mut pass.loaded;
+    let sums = pass.out.collect_loaded(
+        rs.lanes.slots(j),
+        &rs.lanes.len,
+        limit,
+        loaded.batch.len(),
+        &mut loaded.batch.columns_mut(0),
+        &mut loaded.runs,
+    );
     if let (Some(penetration), None) = (sums.violation, &violation) {
         *violation = Some(Violation {
             what: if INNER {
@@ -443,7 +443,6 @@ fn raceway_collect<const INNER: bool>(
     } else {
         &model.traction.outer
     };
-    let loaded = &mut pass.loaded;
     let whole = ContactState {
         normal_force_n: load,
         geometry: ContactGeometry::Line {
@@ -458,29 +457,16 @@ fn raceway_collect<const INNER: bool>(
         film_thickness_m: None,
     };
     let contact = loaded.batch.add_contact(tmodel, &whole);
-    let front = sums.slots.clone();
-    let first = loaded.batch.push_block(
-        contact,
-        &out.q[front.clone()],
-        &out.len[front.clone()],
-        &out.u[front.clone()],
-        &out.vs[front.clone()],
-    );
-    loaded.blocks.push((j, contact, first..first + front.len()));
-    for (to, from) in loaded.r_cp.iter_mut().zip(&out.r_cp) {
-        to.extend_from_slice(&from[front.clone()]);
-    }
-    for (to, from) in loaded.vt.iter_mut().zip(&out.vt) {
-        to.extend_from_slice(&from[front.clone()]);
-    }
+    loaded.batch.claim(contact, sums.slots.len());
+    loaded.blocks.push((j, contact, sums.slots));
     scale(sums.force, -1.0)
 }
 
-/// The `n` entries of `column` in the traction block `slots` (a slice of length `n`, so that a
-/// loop over `0..n` indexing several such slices has no bounds checks).
+/// The `n` entries of `column` from `first` on (a slice of length `n`, so that a loop over
+/// `0..n` indexing several such slices has no bounds checks).
 #[inline]
-fn cut<'a>(column: &'a [f64], slots: &std::ops::Range<usize>, n: usize) -> &'a [f64] {
-    &column[slots.clone()][..n]
+fn cut(column: &[f64], first: usize, n: usize) -> &[f64] {
+    &column[first..first + n]
 }
 
 /// Pass 2 of the raceway contacts: evaluates the traction of every loaded slice (one batch per
@@ -488,35 +474,26 @@ fn cut<'a>(column: &'a [f64], slots: &std::ops::Range<usize>, n: usize) -> &'a [
 /// ring (`f_inner`) and, with [`Tables::Fill`], the per-roller contact tables.
 fn apply_traction(model: &Model, diag: &mut Diagnostics, f_inner: &mut V3, tables: Tables) {
     let sc = &mut diag.slices;
-    for (loaded, table, tmodel, inner) in [
-        (
-            &mut sc.inner.loaded,
-            &mut diag.inner,
-            &model.traction.inner,
-            true,
-        ),
-        (
-            &mut sc.outer.loaded,
-            &mut diag.outer,
-            &model.traction.outer,
-            false,
-        ),
+    let slices = model.inner.lanes.slices;
+    for (RacewayPass { loaded, out, .. }, table, tmodel, inner) in [
+        (&mut sc.inner, &mut diag.inner, &model.traction.inner, true),
+        (&mut sc.outer, &mut diag.outer, &model.traction.outer, false),
     ] {
         let batch = &mut loaded.batch;
         batch.evaluate(tmodel);
         let (q_all, vs_all, mu_all) = batch.forces_speeds_coefficients();
-        for (j, contact, slots) in &loaded.blocks {
-            let j = *j;
-            // the block's columns, cut to one length (no bounds checks in the loop)
-            let n = slots.len();
+        for run in &loaded.runs {
+            let j = run.slot / slices;
+            // the run's columns, cut to one length (no bounds checks in the loop)
+            let n = run.batch.len();
             let (q, vs, mu) = (
-                cut(q_all, slots, n),
-                cut(vs_all, slots, n),
-                cut(mu_all, slots, n),
+                cut(q_all, run.batch.start, n),
+                cut(vs_all, run.batch.start, n),
+                cut(mu_all, run.batch.start, n),
             );
-            let [vtx, vty, vtz] = loaded.vt.each_ref().map(|c| cut(c, slots, n));
-            let [rx, ry, rz] = loaded.r_cp.each_ref().map(|c| cut(c, slots, n));
-            // the block's friction force and moment are summed in registers, then applied once
+            let [vtx, vty, vtz] = out.vt.each_ref().map(|c| cut(c, run.slot, n));
+            let [rx, ry, rz] = out.r_cp.each_ref().map(|c| cut(c, run.slot, n));
+            // the run's friction force and moment are summed in registers, then applied once
             let (mut force, mut moment) = ([0.0; 3], [0.0; 3]);
             for i in 0..n {
                 if vs[i] > 0.0 {
@@ -530,9 +507,12 @@ fn apply_traction(model: &Model, diag: &mut Diagnostics, f_inner: &mut V3, table
             if inner {
                 *f_inner = sub(*f_inner, force);
             }
-            if tables == Tables::Skip {
-                continue;
-            }
+        }
+        if tables == Tables::Skip {
+            continue;
+        }
+        for (j, contact, slots) in &loaded.blocks {
+            let j = *j;
             let (_, film_minimum, lambda) = batch.film(*contact);
             for i in slots.clone() {
                 let q = batch.normal_force(i);
@@ -638,7 +618,7 @@ pub(crate) fn rhs(
         diag.slices.frame[j] = (s, c, a, w);
         let centre = [r * c, r * s, zz];
         let v = [rdot * c - r * thd * s, rdot * s + r * thd * c, zd];
-        let rk = RollerKin {
+        let rk = RollerKinematics {
             c: centre,
             a,
             v,
@@ -648,8 +628,11 @@ pub(crate) fn rhs(
         let mut f = scale(g, model.m_r);
         let mut m = [0.0; 3];
         let sc = &mut diag.slices;
-        raceway_pair::<true>(model, &model.inner, j, &rk, &inner, &mut sc.inner);
-        raceway_pair::<false>(model, &model.outer, j, &rk, &outer, &mut sc.outer);
+        let touch_inner = raceway_pair::<true>(model, &model.inner, j, &rk, &inner, &mut sc.inner);
+        let touch_outer = raceway_pair::<false>(model, &model.outer, j, &rk, &outer, &mut sc.outer);
+        if touch_inner || touch_outer {
+            sc.rollers.set(model.inner.lanes.slots(j), &rk);
+        }
 
         // roller ↔ cage bars: edge lines of pocket j at the bar contact radius, both pocket
         // sides, evaluated at both ends of the roller (SPEC §1.5 "bone-shaped" scar)
@@ -700,13 +683,6 @@ pub(crate) fn rhs(
         diag.bar_power[j] = bar_pw;
 
         // roller ends ↔ ribs of both rings (pair 56) and ↔ cage pocket faces (pair 54)
-        let rs = RollerState {
-            c: centre,
-            a,
-            v,
-            w,
-            orbit: thd,
-        };
         let apply = |ef: &EndForce, f: &mut V3, m: &mut V3| {
             *f = add(*f, ef.force);
             *m = add(*m, ef.moment);
@@ -754,7 +730,7 @@ pub(crate) fn rhs(
                         &ends.end,
                         &body,
                         &reach,
-                        &rs,
+                        &rk,
                         &model.params.roller_end_rib,
                         &ends.rib_damping,
                         Some(&lub),
@@ -808,7 +784,7 @@ pub(crate) fn rhs(
                     &ends.end,
                     &body,
                     &reach,
-                    &rs,
+                    &rk,
                     &model.params.roller_end_cage,
                     &ends.pocket_damping,
                     None,
@@ -837,8 +813,9 @@ pub(crate) fn rhs(
     }
 
     // the raceway slices of all rollers: slot loops, then each roller's loaded slices
-    raceway_kernel::<true>(model, &model.inner, &inner, &mut diag.slices.inner);
-    raceway_kernel::<false>(model, &model.outer, &outer, &mut diag.slices.outer);
+    let sc = &mut diag.slices;
+    raceway_kernel::<true>(model, &model.inner, &inner, &sc.rollers, &mut sc.inner);
+    raceway_kernel::<false>(model, &model.outer, &outer, &sc.rollers, &mut sc.outer);
     for j in 0..model.z {
         let sc = &mut diag.slices;
         let (mut f, mut m) = (sc.force[j], sc.moment[j]);

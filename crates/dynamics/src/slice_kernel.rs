@@ -5,8 +5,8 @@
 //! The slots of a raceway are the slices of all rollers back to back (slot `j·S + s` is slice
 //! `s` of roller `j`, [`SliceConstants::slots`]), so that one loop runs over the slices of many
 //! rollers and no vector lane is spent on padding between rollers. The roller kinematics are
-//! repeated over the roller's slots ([`PairLanes::set`]); the ring's are common
-//! ([`RingKinematics`]). [`evaluate`] writes one record per slot into [`SliceOutputs`] (struct of
+//! repeated over the roller's slots ([`RollerLanes::set`], once for both raceways); the ring's
+//! are common ([`RingKinematics`]). [`evaluate`] writes one record per slot into [`SliceOutputs`] (struct of
 //! arrays); slices that do not touch carry `q = 0`. The caller sums the forces and collects the
 //! loaded slices of each roller in slice order ([`SliceOutputs::collect_loaded`], used by
 //! [`crate::rhs`]), so the sums are the same as those of a slice-by-slice loop.
@@ -15,8 +15,10 @@
 //! fused multiply–add: Rust never contracts on its own, and `rolldyn_numerics::fastmath` is
 //! written for that).
 
+use crate::kinematics::RollerKinematics;
 use crate::vec3::{V3, add, axpy, cross, dot, scale, sub};
 use rolldyn_contact::damping::SliceDamping;
+use rolldyn_lubrication::SliceColumnsMut;
 use rolldyn_numerics::avx2::LoopCopy;
 use rolldyn_numerics::fastmath;
 use std::ops::Range;
@@ -99,70 +101,65 @@ pub(crate) struct RingKinematics {
     pub exponent: f64,
 }
 
-/// Kinematics of one roller against one raceway, shared by the roller's slots.
-#[derive(Debug, Clone, Copy)]
-pub(crate) struct PairKinematics {
-    /// roller centre, axis (unit), velocity, angular velocity and orbital speed θ̇
-    pub c: V3,
-    pub a: V3,
-    pub v: V3,
-    pub w: V3,
-    pub orbit: f64,
+/// The values of [`RollerKinematics`] repeated over the roller's slots, in the column order of
+/// [`RollerLanes`] and of the slot loop: c, a, v, w, θ̇.
+fn lane_values(k: &RollerKinematics) -> [f64; ROLLER_COLUMNS] {
+    let [c, a, v, w] = [k.c, k.a, k.v, k.w];
+    [
+        c[0], c[1], c[2], a[0], a[1], a[2], v[0], v[1], v[2], w[0], w[1], w[2], k.orbit,
+    ]
 }
 
-impl PairKinematics {
-    /// The values repeated over the roller's slots, in the column order of [`PairLanes`] and
-    /// of the slot loop: c, a, v, w, θ̇.
-    fn lane_values(&self) -> [f64; PAIR_COLUMNS] {
-        let [c, a, v, w] = [self.c, self.a, self.v, self.w];
-        [
-            c[0], c[1], c[2], a[0], a[1], a[2], v[0], v[1], v[2], w[0], w[1], w[2], self.orbit,
-        ]
-    }
-}
+/// Number of [`RollerKinematics`] values per slot.
+const ROLLER_COLUMNS: usize = 13;
 
-/// Number of [`PairKinematics`] values per slot.
-const PAIR_COLUMNS: usize = 13;
-
-/// [`PairKinematics`] repeated over each roller's slots (struct of arrays, slot layout of
-/// [`SliceConstants`]), plus the raceway drop under each slot.
+/// [`RollerKinematics`] repeated over each roller's slots (struct of arrays, slot layout of
+/// [`SliceConstants`]); the same for both raceways, whose slots coincide.
 #[derive(Debug, Clone)]
-pub(crate) struct PairLanes {
-    /// one column per entry of [`PairKinematics::lane_values`]
-    columns: [Vec<f64>; PAIR_COLUMNS],
-    /// raceway drop under the slot (profiled raceways), m
-    pub race_drop: Vec<f64>,
+pub(crate) struct RollerLanes {
+    /// one column per entry of [`lane_values`]
+    columns: [Vec<f64>; ROLLER_COLUMNS],
 }
 
-impl PairLanes {
+impl RollerLanes {
     /// Lanes for `slots` slots (padding included), all zero.
     pub fn new(slots: usize) -> Self {
         Self {
             columns: std::array::from_fn(|_| vec![0.0; slots]),
-            race_drop: vec![0.0; slots],
         }
     }
 
-    /// Repeats `k` over `slots` (the raceway drop is left as it is). Writes whole vectors from
-    /// `slots.start`, i.e. up to [`LANES`]` − 1` slots beyond `slots.end`: set the rollers in
-    /// slot order, so that the next roller's values replace those.
-    pub fn set(&mut self, slots: Range<usize>, k: &PairKinematics) {
-        let r = slots.start..slots.start + slots.len().div_ceil(LANES) * LANES;
+    /// Repeats `k` over `slots`. Writes whole vectors from `slots.start`, i.e. up to
+    /// [`LANES`]` − 1` slots beyond `slots.end`: set the rollers in slot order, so that the
+    /// next roller's values replace those.
+    pub fn set(&mut self, slots: Range<usize>, k: &RollerKinematics) {
+        let vectors = slots.len().div_ceil(LANES);
+        let r = slots.start..slots.start + vectors * LANES;
         let mut columns = self.columns.each_mut().map(|c| &mut c[r.clone()]);
-        fill_columns(&mut columns, &k.lane_values());
+        let values = lane_values(k);
+        // a fixed number of stores per column for the common roller lengths (up to 24 slices)
+        match vectors {
+            1 => fill_columns::<1>(&mut columns, &values),
+            2 => fill_columns::<2>(&mut columns, &values),
+            3 => fill_columns::<3>(&mut columns, &values),
+            _ => fill_columns::<0>(&mut columns, &values),
+        }
     }
 }
 
 rolldyn_numerics::avx2_twin! {
     /// Writes `values[i]` into every slot of `columns[i]` (each a whole number of [`LANES`]
-    /// long): one vector store per [`LANES`] slots in the AVX-512F copy.
-    fn fill_columns(
-        columns: &mut [&mut [f64]; PAIR_COLUMNS],
-        values: &[f64; PAIR_COLUMNS],
+    /// long; `VECTORS` of them, or any number for `VECTORS = 0`): one vector store per
+    /// [`LANES`] slots in the AVX-512F copy.
+    fn fill_columns<const VECTORS: usize>(
+        columns: &mut [&mut [f64]; ROLLER_COLUMNS],
+        values: &[f64; ROLLER_COLUMNS],
     ) = fill_columns_portable / fill_columns_avx2 / fill_columns_avx512 {
         for (column, &value) in columns.iter_mut().zip(values) {
-            for chunk in column.chunks_exact_mut(LANES) {
-                chunk.copy_from_slice(&[value; LANES]);
+            let (chunks, _) = column.as_chunks_mut::<LANES>();
+            let chunks = if VECTORS > 0 { &mut chunks[..VECTORS] } else { chunks };
+            for chunk in chunks {
+                *chunk = [value; LANES];
             }
         }
     }
@@ -187,8 +184,6 @@ pub(crate) struct SliceOutputs {
     pub vs: Vec<f64>,
     /// entrainment speed in the roller's orbital frame, m/s
     pub u: Vec<f64>,
-    /// slice length of the compacted slots ([`SliceOutputs::collect_loaded`]), m
-    pub len: Vec<f64>,
 }
 
 impl SliceOutputs {
@@ -204,93 +199,78 @@ impl SliceOutputs {
             vt: [v(), v(), v()],
             vs: v(),
             u: v(),
-            len: v(),
         }
     }
 
     /// Pass 1 over the slots of one roller (`slots`, in slice order): sums the normal forces
-    /// and moments of the loaded slots and gathers their traction inputs (q, u, vs, r_cp, vt,
-    /// and the slice length from `lens`) into one run of slots, [`LoadedSlots::slots`], in slot
-    /// order; notes the first approach above `limit` (divergence check). The loaded slices of a
-    /// roller are usually consecutive already; only those after a gap are moved.
-    pub fn collect_loaded(&mut self, slots: Range<usize>, lens: &[f64], limit: f64) -> LoadedSlots {
-        // every column cut to the roller's slots: the loop has no bounds checks but the one
-        // on the destination slot, which is the same for all columns
+    /// and moments of the loaded slots and writes their traction inputs (Q, slice length from
+    /// `lens`, u, |v_t|) to `columns` from index `to` on, one run of consecutive loaded slots
+    /// after the other, each recorded in `runs`. Notes the first approach above `limit`
+    /// (divergence check). The contact point and tangential velocity of a slot stay where
+    /// they are: [`LoadedRun::slot`] finds them.
+    pub fn collect_loaded(
+        &self,
+        slots: Range<usize>,
+        lens: &[f64],
+        limit: f64,
+        to: usize,
+        columns: &mut SliceColumnsMut,
+        runs: &mut Vec<LoadedRun>,
+    ) -> LoadedSlots {
         let Self {
             delta,
             q,
             force: [fx, fy, fz],
             moment: [mx, my, mz],
-            r_cp: [rx, ry, rz],
-            vt: [tx, ty, tz],
             vs,
             u,
-            len,
+            ..
         } = self;
-        let r = slots;
-        let n = r.len();
-        let (delta, lens) = (&delta[r.clone()][..n], &lens[r.clone()][..n]);
-        let (q, vs, u, len) = (
-            &mut q[r.clone()][..n],
-            &mut vs[r.clone()][..n],
-            &mut u[r.clone()][..n],
-            &mut len[r.clone()][..n],
-        );
-        let (fx, fy, fz) = (
-            &fx[r.clone()][..n],
-            &fy[r.clone()][..n],
-            &fz[r.clone()][..n],
-        );
-        let (mx, my, mz) = (
-            &mx[r.clone()][..n],
-            &my[r.clone()][..n],
-            &mz[r.clone()][..n],
-        );
-        let (rx, ry, rz) = (
-            &mut rx[r.clone()][..n],
-            &mut ry[r.clone()][..n],
-            &mut rz[r.clone()][..n],
-        );
-        let (tx, ty, tz) = (
-            &mut tx[r.clone()][..n],
-            &mut ty[r.clone()][..n],
-            &mut tz[r.clone()][..n],
-        );
         let mut sums = LoadedSlots::default();
-        if let Some(s) = delta.iter().position(|&d| d > limit) {
-            sums.violation = Some(delta[s]);
+        if let Some(s) = delta[slots.clone()].iter().position(|&d| d > limit) {
+            sums.violation = Some(delta[slots.start + s]);
         }
-        let Some(first) = q.iter().position(|&q| q > 0.0) else {
-            return sums;
-        };
-        let mut to = first;
-        for s in first..n {
-            let qs = q[s];
-            if qs <= 0.0 {
+        let first = to;
+        let mut to = to;
+        let mut s = slots.start;
+        while s < slots.end {
+            if q[s] <= 0.0 {
+                s += 1;
                 continue;
             }
-            sums.force = add(sums.force, [fx[s], fy[s], fz[s]]);
-            sums.moment = add(sums.moment, [mx[s], my[s], mz[s]]);
-            sums.load += qs;
-            sums.length += lens[s];
-            sums.entrainment += qs * u[s];
-            len[to] = lens[s];
-            if to != s {
-                q[to] = qs;
-                u[to] = u[s];
-                vs[to] = vs[s];
-                rx[to] = rx[s];
-                ry[to] = ry[s];
-                rz[to] = rz[s];
-                tx[to] = tx[s];
-                ty[to] = ty[s];
-                tz[to] = tz[s];
+            let (start, run_start) = (s, to);
+            while s < slots.end && q[s] > 0.0 {
+                let qs = q[s];
+                sums.force = add(sums.force, [fx[s], fy[s], fz[s]]);
+                sums.moment = add(sums.moment, [mx[s], my[s], mz[s]]);
+                sums.load += qs;
+                sums.length += lens[s];
+                sums.entrainment += qs * u[s];
+                columns.normal_force_n[to] = qs;
+                columns.length_m[to] = lens[s];
+                columns.rolling_speed_m_s[to] = u[s];
+                columns.sliding_speed_m_s[to] = vs[s];
+                s += 1;
+                to += 1;
             }
-            to += 1;
+            runs.push(LoadedRun {
+                batch: run_start..to,
+                slot: start,
+            });
         }
-        sums.slots = r.start + first..r.start + to;
+        sums.slots = first..to;
         sums
     }
+}
+
+/// A run of consecutive loaded slots of one roller, moved to the traction batch by
+/// [`SliceOutputs::collect_loaded`].
+#[derive(Debug, Clone)]
+pub(crate) struct LoadedRun {
+    /// the run's batch slices
+    pub batch: Range<usize>,
+    /// the slot of its first slice (the others follow)
+    pub slot: usize,
 }
 
 /// Result of [`SliceOutputs::collect_loaded`].
@@ -303,24 +283,25 @@ pub(crate) struct LoadedSlots {
     pub load: f64,
     pub length: f64,
     pub entrainment: f64,
-    /// the slots that now hold the loaded slices (empty: none)
+    /// the batch slices that now hold the loaded slices (empty: none)
     pub slots: Range<usize>,
     /// first approach above the divergence limit, m
     pub violation: Option<f64>,
 }
 
 /// Evaluates the slots `slots` of `sc` (inner raceway when `INNER`) with the roller kinematics
-/// of `pairs` and the ring's `ring`. Every roller whose slots overlap `slots` must have its
-/// lanes set; the loop runs over whole vectors from `slots.start`, so it may also evaluate up
+/// of `rollers`, the raceway drop `race_drop` under each slot and the ring's `ring`. Every
+/// roller whose slots overlap `slots` must have its lanes set; the loop runs over whole vectors from `slots.start`, so it may also evaluate up
 /// to [`LANES`]` − 1` slots beyond `slots.end` (which are then overwritten or ignored).
 pub(crate) fn evaluate<const INNER: bool>(
     sc: &SliceConstants,
-    pairs: &PairLanes,
+    rollers: &RollerLanes,
+    race_drop: &[f64],
     ring: &RingKinematics,
     slots: Range<usize>,
     out: &mut SliceOutputs,
 ) {
-    evaluate_with::<INNER>(sc, pairs, ring, slots, out, LoopCopy::detect());
+    evaluate_with::<INNER>(sc, rollers, race_drop, ring, slots, out, LoopCopy::detect());
 }
 
 /// The inputs of the slot loop, each cut to the loop's slots.
@@ -331,15 +312,16 @@ struct SlotInputs<'a> {
     c_max: &'a [f64],
     delta_star: &'a [f64],
     race_drop: &'a [f64],
-    /// the columns of [`PairLanes`]
-    pair: [&'a [f64]; PAIR_COLUMNS],
+    /// the columns of [`RollerLanes`]
+    roller: [&'a [f64]; ROLLER_COLUMNS],
 }
 
 /// [`evaluate`] with the compiled copy of the loop chosen by the caller (only one that the CPU
 /// supports: [`LoopCopy::detect`] or narrower).
 fn evaluate_with<'a, const INNER: bool>(
     sc: &'a SliceConstants,
-    pairs: &'a PairLanes,
+    rollers: &'a RollerLanes,
+    race_drop: &'a [f64],
     ring: &RingKinematics,
     range: Range<usize>,
     out: &mut SliceOutputs,
@@ -358,8 +340,8 @@ fn evaluate_with<'a, const INNER: bool>(
         stiff: cut(&sc.k),
         c_max: cut(&sc.c_max),
         delta_star: cut(&sc.delta_star),
-        race_drop: cut(&pairs.race_drop),
-        pair: pairs.columns.each_ref().map(|c| cut(c)),
+        race_drop: cut(race_drop),
+        roller: rollers.columns.each_ref().map(|c| cut(c)),
     };
     let [fx, fy, fz] = &mut out.force;
     let [mx, my, mz] = &mut out.moment;
@@ -439,7 +421,7 @@ rolldyn_numerics::avx2_twin! {
             &inputs.delta_star[..n],
             &inputs.race_drop[..n],
         );
-        let [cx, cy, cz, ax, ay, az, vx, vy, vz, wx, wy, wz, orbit] = inputs.pair.map(|c| &c[..n]);
+        let [cx, cy, cz, ax, ay, az, vx, vy, vz, wx, wy, wz, orbit] = inputs.roller.map(|c| &c[..n]);
         let (delta_out, q_out, vs_out, u_out) = (
             &mut delta_out[..n],
             &mut q_out[..n],
@@ -550,12 +532,12 @@ mod tests {
 
     /// A roller at the pitch radius, slightly tilted by `tilt`, its centre displaced radially
     /// by `shift`; ring axis z through the origin.
-    fn pair(tilt: f64, shift: f64) -> PairKinematics {
+    fn roller(tilt: f64, shift: f64) -> RollerKinematics {
         let c = [0.0, 0.0862 + shift, 1e-5];
         let a = [1.5e-3 * tilt, -2e-3 * tilt, 1.0];
         let na = norm(a);
         let a = scale(a, 1.0 / na);
-        PairKinematics {
+        RollerKinematics {
             c,
             a,
             v: [-25.0, 0.01, 0.0],
@@ -564,29 +546,35 @@ mod tests {
         }
     }
 
-    /// Evaluates every slot of `sc` for the rollers `pairs` with the loop copy `copy`.
+    /// Evaluates every slot of `sc` for the rollers `rollers` with the loop copy `copy`.
     fn run(
         sc: &SliceConstants,
-        pairs: &[PairKinematics],
+        rollers: &[RollerKinematics],
         inner: bool,
         copy: LoopCopy,
     ) -> SliceOutputs {
-        let mut lanes = PairLanes::new(sc.x.len());
-        for (j, k) in pairs.iter().enumerate() {
+        let mut lanes = RollerLanes::new(sc.x.len());
+        for (j, k) in rollers.iter().enumerate() {
             lanes.set(sc.slots(j), k);
         }
         let mut out = SliceOutputs::new(sc.x.len());
-        let all = 0..pairs.len() * sc.slices;
+        let all = 0..rollers.len() * sc.slices;
+        let race_drop = vec![0.0; sc.x.len()];
         if inner {
-            evaluate_with::<true>(sc, &lanes, &ring(true), all, &mut out, copy);
+            evaluate_with::<true>(sc, &lanes, &race_drop, &ring(true), all, &mut out, copy);
         } else {
-            evaluate_with::<false>(sc, &lanes, &ring(false), all, &mut out, copy);
+            evaluate_with::<false>(sc, &lanes, &race_drop, &ring(false), all, &mut out, copy);
         }
         out
     }
 
     /// Slice by slice with the library's own functions (`powf`, `SliceDamping`, `perp`).
-    fn reference(sc: &SliceConstants, k: &PairKinematics, inner: bool, s: usize) -> (f64, V3, f64) {
+    fn reference(
+        sc: &SliceConstants,
+        k: &RollerKinematics,
+        inner: bool,
+        s: usize,
+    ) -> (f64, V3, f64) {
         let g = ring(inner);
         let x = sc.x[s];
         let p = axpy(k.c, x, k.a);
@@ -620,7 +608,7 @@ mod tests {
     fn kernel_matches_slice_by_slice_evaluation() {
         let sc = constants(1);
         for inner in [true, false] {
-            let k = pair(1.0, 0.0);
+            let k = roller(1.0, 0.0);
             let out = run(&sc, &[k], inner, LoopCopy::detect());
             let mut loaded = 0;
             for s in 0..10 {
@@ -666,12 +654,12 @@ mod tests {
     /// loop.
     #[test]
     fn packed_rollers_and_loop_copies_agree() {
-        let pairs = [pair(1.0, 0.0), pair(-2.0, 3e-6), pair(0.5, -2e-6)];
-        let sc = constants(pairs.len());
-        let all = 0..pairs.len() * sc.slices;
+        let rollers = [roller(1.0, 0.0), roller(-2.0, 3e-6), roller(0.5, -2e-6)];
+        let sc = constants(rollers.len());
+        let all = 0..rollers.len() * sc.slices;
         for inner in [true, false] {
-            let portable = run(&sc, &pairs, inner, LoopCopy::Portable);
-            for (j, k) in pairs.iter().enumerate() {
+            let portable = run(&sc, &rollers, inner, LoopCopy::Portable);
+            for (j, k) in rollers.iter().enumerate() {
                 let alone = run(&constants(1), &[*k], inner, LoopCopy::Portable);
                 assert_eq!(
                     bits(&portable, sc.slots(j)),
@@ -684,7 +672,7 @@ mod tests {
                     continue;
                 }
                 assert_eq!(
-                    bits(&run(&sc, &pairs, inner, copy), all.clone()),
+                    bits(&run(&sc, &rollers, inner, copy), all.clone()),
                     bits(&portable, all.clone()),
                     "{copy:?}, inner {inner}"
                 );

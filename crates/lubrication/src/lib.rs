@@ -63,6 +63,6 @@ pub use regime::{FrictionRegime, LambdaDefinition, LubricationRegime};
 pub use scuffing::{CriticalSlip, SlipSearch, critical_slip};
 pub use traction::{
     BatchContact, BoundaryFriction, FrictionLaw, Hydrodynamic, LubricatedFriction, MixedLimits,
-    MurakiSettings, PreparedContact, Rheology, Seed001Settings, SliceBatch, SmallShearRate,
-    Traction, TractionModel, TwoLevelLaw, Warnings, traction,
+    MurakiSettings, PreparedContact, Rheology, Seed001Settings, SliceBatch, SliceColumnsMut,
+    SmallShearRate, Traction, TractionModel, TwoLevelLaw, Warnings, traction,
 };

@@ -80,63 +80,99 @@ fn models() -> Vec<(&'static str, TractionModel)> {
     ]
 }
 
+/// One round of [`batch_equals_single_slice_evaluation`]: fills `batch` (cleared first) with
+/// `contacts` (load N, rolling speed m/s, temperature °C) of ten slices each, evaluates it and
+/// compares every film and coefficient with the single-slice path.
+fn check_round(
+    name: &str,
+    model: &TractionModel,
+    batch: &mut SliceBatch,
+    contacts: &[(f64, f64, f64)],
+) {
+    batch.clear();
+    let mut expected = Vec::new();
+    let mut films = Vec::new();
+    for (c, &(q, u, t_c)) in contacts.iter().enumerate() {
+        let w = whole(q, u, t_c);
+        let contact = batch.add_contact(model, &w);
+        let prepared = model.prepare_contact(&w, None);
+        films.push((contact, prepared.map(|p| p.film())));
+        for s in 0..10 {
+            let share = q * (0.02 + 0.03 * s as f64);
+            let q_s = if s == 9 { 0.0 } else { share };
+            let u_s = u * (1.0 + 0.01 * s as f64) * if c == 2 { -1.0 } else { 1.0 };
+            let v_s = [-0.5, -1e-4, 0.0, 1e-5, 3e-4, 0.01, 0.2, 1.0, 5.0, 0.3][s];
+            let i = batch.push(contact, q_s, 0.8e-3, u_s, v_s);
+            let st = batch.state(i);
+            let reference = match &prepared {
+                Some(p) => model.traction_prepared(p, &st).coefficient,
+                None => traction(&st, model).coefficient,
+            };
+            expected.push(reference);
+        }
+    }
+    batch.evaluate(model);
+    for (contact, film) in films {
+        let (central, minimum, _) = batch.film(contact);
+        if let Some((hc, hm)) = film {
+            assert_eq!(
+                (central.to_bits(), minimum.to_bits()),
+                (hc.to_bits(), hm.to_bits())
+            );
+        } else {
+            assert!(
+                central.is_nan() && minimum.is_nan(),
+                "{name}: film without a law"
+            );
+        }
+    }
+    assert_eq!(batch.len(), expected.len());
+    for (i, e) in expected.iter().enumerate() {
+        let got = batch.coefficient(i);
+        assert!(
+            got.to_bits() == e.to_bits() || (got == 0.0 && *e == 0.0),
+            "{name}, slice {i}: batch {got} vs single {e}"
+        );
+    }
+}
+
 #[test]
 fn batch_equals_single_slice_evaluation() {
+    // contacts over loads, speeds (incl. below the rolling-speed floor) and temperatures;
+    // consecutive contacts at one temperature share the oil preparation, and columns that are
+    // the same for every contact of a round are kept from the round before when unchanged
+    let mixed = [
+        (400.0, 30.0, 100.0),
+        (20.0, 5.0, 60.0),
+        (150.0, 1e-4, 100.0),
+        (1e-3, 30.0, 120.0),
+        (250.0, 12.0, 120.0),
+    ];
+    let hot = [
+        (400.0, 30.0, 100.0),
+        (20.0, 5.0, 100.0),
+        (150.0, 1e-4, 100.0),
+    ];
+    let hotter = [
+        (300.0, 20.0, 120.0),
+        (90.0, 25.0, 120.0),
+        (150.0, 1e-4, 120.0),
+        (60.0, 2.0, 120.0),
+        (10.0, 30.0, 120.0),
+        (250.0, 12.0, 120.0),
+    ];
     for (name, model) in models() {
         let mut batch = SliceBatch::default();
-        let mut expected = Vec::new();
-        let mut films = Vec::new();
-        // contacts over loads, speeds (incl. below the rolling-speed floor) and temperatures;
-        // the last two share their temperature (the batch reuses the oil preparation)
-        for (c, &(q, u, t_c)) in [
-            (400.0, 30.0, 100.0),
-            (20.0, 5.0, 60.0),
-            (150.0, 1e-4, 100.0),
-            (1e-3, 30.0, 120.0),
-            (250.0, 12.0, 120.0),
-        ]
-        .iter()
-        .enumerate()
-        {
-            let w = whole(q, u, t_c);
-            let contact = batch.add_contact(&model, &w);
-            let prepared = model.prepare_contact(&w, None);
-            films.push((contact, prepared.map(|p| p.film())));
-            for s in 0..10 {
-                let share = q * (0.02 + 0.03 * s as f64);
-                let q_s = if s == 9 { 0.0 } else { share };
-                let u_s = u * (1.0 + 0.01 * s as f64) * if c == 2 { -1.0 } else { 1.0 };
-                let v_s = [-0.5, -1e-4, 0.0, 1e-5, 3e-4, 0.01, 0.2, 1.0, 5.0, 0.3][s];
-                let i = batch.push(contact, q_s, 0.8e-3, u_s, v_s);
-                let st = batch.state(i);
-                let reference = match &prepared {
-                    Some(p) => model.traction_prepared(p, &st).coefficient,
-                    None => traction(&st, &model).coefficient,
-                };
-                expected.push(reference);
-            }
-        }
-        batch.evaluate(&model);
-        for (contact, film) in films {
-            let (central, minimum, _) = batch.film(contact);
-            if let Some((hc, hm)) = film {
-                assert_eq!(
-                    (central.to_bits(), minimum.to_bits()),
-                    (hc.to_bits(), hm.to_bits())
-                );
-            } else {
-                assert!(
-                    central.is_nan() && minimum.is_nan(),
-                    "{name}: film without a law"
-                );
-            }
-        }
-        for (i, e) in expected.iter().enumerate() {
-            let got = batch.coefficient(i);
-            assert!(
-                got.to_bits() == e.to_bits() || (got == 0.0 && *e == 0.0),
-                "{name}, slice {i}: batch {got} vs single {e}"
-            );
+        for round in [
+            &mixed[..],
+            &hot[..2],
+            &hot,
+            &hot[..2],
+            &hotter,
+            &hot,
+            &mixed,
+        ] {
+            check_round(name, &model, &mut batch, round);
         }
     }
 }

@@ -76,11 +76,6 @@ impl SliceBatch {
     pub fn clear(&mut self) {
         self.contacts.clear();
         self.contact_of.clear();
-        self.normal_force_n.clear();
-        self.length_m.clear();
-        self.rolling_speed_m_s.clear();
-        self.sliding_speed_m_s.clear();
-        self.coefficient.clear();
         self.films.clear();
     }
 
@@ -143,12 +138,13 @@ impl SliceBatch {
         rolling_speed_m_s: f64,
         sliding_speed_m_s: f64,
     ) -> usize {
-        self.contact_of.push(contact.0);
-        self.normal_force_n.push(normal_force_n);
-        self.length_m.push(length_m);
-        self.rolling_speed_m_s.push(rolling_speed_m_s);
-        self.sliding_speed_m_s.push(sliding_speed_m_s);
-        self.len() - 1
+        self.push_block(
+            contact,
+            &[normal_force_n],
+            &[length_m],
+            &[rolling_speed_m_s],
+            &[sliding_speed_m_s],
+        )
     }
 
     /// Adds a block of slices of `contact`, one per element of the arrays (normal force N,
@@ -165,22 +161,62 @@ impl SliceBatch {
     ) -> usize {
         let first = self.len();
         let n = normal_force_n.len();
+        let to = first..first + n;
+        let columns = self.columns_mut(to.end);
+        columns.normal_force_n[to.clone()].copy_from_slice(normal_force_n);
+        columns.length_m[to.clone()].copy_from_slice(&length_m[..n]);
+        columns.rolling_speed_m_s[to.clone()].copy_from_slice(&rolling_speed_m_s[..n]);
+        columns.sliding_speed_m_s[to].copy_from_slice(&sliding_speed_m_s[..n]);
+        self.claim(contact, n)
+    }
+
+    /// The slice columns for writing slices in place, each at least `room` long: index `i` is
+    /// slice `i`. Indices from [`SliceBatch::len`] on are free; write the next slices there
+    /// and add them with [`SliceBatch::claim`]. Saves a copy when the slices are produced in
+    /// an array already (the dynamics' slot loop writes its results here directly).
+    pub fn columns_mut(&mut self, room: usize) -> SliceColumnsMut<'_> {
+        let columns = [
+            &mut self.normal_force_n,
+            &mut self.length_m,
+            &mut self.rolling_speed_m_s,
+            &mut self.sliding_speed_m_s,
+        ];
+        for column in columns {
+            if column.len() < room {
+                column.resize(room, 0.0);
+            }
+        }
+        SliceColumnsMut {
+            normal_force_n: &mut self.normal_force_n,
+            length_m: &mut self.length_m,
+            rolling_speed_m_s: &mut self.rolling_speed_m_s,
+            sliding_speed_m_s: &mut self.sliding_speed_m_s,
+        }
+    }
+
+    /// Adds the `n` slices written in place after the last one ([`SliceBatch::columns_mut`])
+    /// as slices of `contact`. Returns the index of the first.
+    ///
+    /// # Panics
+    /// If the columns are shorter than the batch would then be.
+    pub fn claim(&mut self, contact: BatchContact, n: usize) -> usize {
+        let first = self.len();
+        assert!(
+            first + n <= self.normal_force_n.len(),
+            "SliceBatch::claim: {n} slices from {first} were not written (room {})",
+            self.normal_force_n.len()
+        );
         self.contact_of.resize(first + n, contact.0);
-        self.normal_force_n.extend_from_slice(normal_force_n);
-        self.length_m.extend_from_slice(&length_m[..n]);
-        self.rolling_speed_m_s
-            .extend_from_slice(&rolling_speed_m_s[..n]);
-        self.sliding_speed_m_s
-            .extend_from_slice(&sliding_speed_m_s[..n]);
         first
     }
 
     /// Normal forces (N), sliding speeds (m/s) and, after [`SliceBatch::evaluate`], traction
     /// coefficients of all slices, in slice order (for loops over many slices).
     pub fn forces_speeds_coefficients(&self) -> (&[f64], &[f64], &[f64]) {
+        let n = self.len();
         (
-            &self.normal_force_n,
-            &self.sliding_speed_m_s,
+            &self.normal_force_n[..n],
+            &self.sliding_speed_m_s[..n],
             &self.coefficient,
         )
     }
@@ -294,6 +330,19 @@ impl SliceBatch {
     }
 }
 
+/// The slice columns of a [`SliceBatch`], writable in place ([`SliceBatch::columns_mut`]).
+#[derive(Debug)]
+pub struct SliceColumnsMut<'a> {
+    /// normal force, N
+    pub normal_force_n: &'a mut [f64],
+    /// slice length, m
+    pub length_m: &'a mut [f64],
+    /// rolling (entrainment) speed, m/s
+    pub rolling_speed_m_s: &'a mut [f64],
+    /// sliding speed, m/s (the coefficient takes its sign)
+    pub sliding_speed_m_s: &'a mut [f64],
+}
+
 /// The arrays of a batch read by the evaluation loops.
 struct Slices<'a> {
     lanes: &'a ContactLanes,
@@ -384,14 +433,18 @@ impl PendingFilms {
 
 /// Per-slice copies of their contact's data ([`ContactTraction`] and the line stiffness
 /// π E'/(2 R')), so that the main loop reads contiguous arrays. Each contact's row is computed
-/// once (its divisions included) and then copied to its slices.
+/// once (its divisions included) and then copied to its slices. A column whose value is the
+/// same for every prepared contact (the oil properties and the stiffness of one raceway at one
+/// temperature) is filled once for all slices, and not again while it stays the same.
 #[derive(Debug, Clone, Default)]
 struct ContactLanes {
     rows: Vec<(bool, [f64; LANE_COLUMNS])>,
     /// the contact is prepared (lubricated and loaded)
     prepared: Vec<bool>,
-    /// one column per entry of [`lane_row`], in its order
+    /// one column per entry of [`lane_row`], in its order (at least as long as the batch)
     columns: [Vec<f64>; LANE_COLUMNS],
+    /// per column: the bits of the value that fills its first `len` slots, if it is uniform
+    kept: [Option<(u64, usize)>; LANE_COLUMNS],
 }
 
 /// The number of f64 columns of [`ContactLanes`].
@@ -438,18 +491,46 @@ impl ContactLanes {
         let n = contact_of.len();
         self.prepared.clear();
         self.prepared.resize(n, false);
-        for column in &mut self.columns {
-            column.resize(n, 0.0);
+        // the value shared by all prepared contacts, per column (the other rows only ever meet
+        // a zero coefficient)
+        let mut uniform: [Option<u64>; LANE_COLUMNS] = [None; LANE_COLUMNS];
+        let mut prepared_rows = self.rows.iter().filter(|(p, _)| *p).map(|(_, row)| row);
+        if let Some(first) = prepared_rows.next() {
+            uniform = first.map(|v| Some(v.to_bits()));
+            for row in prepared_rows {
+                for (u, v) in uniform.iter_mut().zip(row) {
+                    if *u != Some(v.to_bits()) {
+                        *u = None;
+                    }
+                }
+            }
         }
-        // the slices of a contact are consecutive (`push_block`): one fill per run and column
+        for ((column, kept), u) in self.columns.iter_mut().zip(&mut self.kept).zip(uniform) {
+            if column.len() < n {
+                column.resize(n, 0.0);
+                *kept = None;
+            }
+            match (u, *kept) {
+                (Some(bits), Some((kept_bits, len))) if bits == kept_bits && len >= n => {}
+                (Some(bits), _) => {
+                    column[..n].fill(f64::from_bits(bits));
+                    *kept = Some((bits, n));
+                }
+                (None, _) => *kept = None,
+            }
+        }
+        // the slices of a contact are consecutive (`push_block`): one fill per run and
+        // non-uniform column
         let mut start = 0;
         while start < n {
             let k = contact_of[start];
             let end = start + contact_of[start..].iter().take_while(|&&c| c == k).count();
             let (prepared, row) = &self.rows[k];
             self.prepared[start..end].fill(*prepared);
-            for (column, &value) in self.columns.iter_mut().zip(row) {
-                column[start..end].fill(value);
+            for ((column, kept), &value) in self.columns.iter_mut().zip(&self.kept).zip(row) {
+                if kept.is_none() {
+                    column[start..end].fill(value);
+                }
             }
             start = end;
         }

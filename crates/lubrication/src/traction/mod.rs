@@ -25,7 +25,7 @@ pub mod muraki;
 pub mod table;
 pub mod two_level;
 
-pub use batch::{BatchContact, SliceBatch};
+pub use batch::{BatchContact, SliceBatch, SliceColumnsMut};
 pub use boundary::{BoundaryFriction, kragelsky};
 pub use flash::{Seed001Inputs, Seed001Result, Seed001Settings, seed001_friction};
 pub use mixed::{MixedLimits, mixed_friction, mixed_friction_weighted};
