@@ -178,15 +178,25 @@ impl RacewayPass {
 
 /// The loaded roller–raceway contacts of one raceway: one block of batch slices (the loaded
 /// slices of the roller) per contact in the traction batch, and the runs of consecutive loaded
-/// slots they came from, whose contact points and tangential velocities stay in
+/// slots they came from, whose contact points and sliding directions stay in
 /// [`SliceOutputs`].
 #[derive(Debug, Clone)]
 struct LoadedContacts {
     batch: SliceBatch,
-    /// roller, batch contact and batch slices of each block
-    blocks: Vec<(usize, BatchContact, std::ops::Range<usize>)>,
+    blocks: Vec<LoadedBlock>,
     /// every run of consecutive loaded slots, in batch order
     runs: Vec<LoadedRun>,
+}
+
+/// The loaded slices of one roller on one raceway: one contact of the traction batch.
+#[derive(Debug, Clone)]
+struct LoadedBlock {
+    roller: usize,
+    contact: BatchContact,
+    /// its slices in the batch
+    slices: std::ops::Range<usize>,
+    /// its runs of consecutive loaded slots in [`LoadedContacts::runs`]
+    runs: std::ops::Range<usize>,
 }
 
 impl LoadedContacts {
@@ -384,9 +394,9 @@ fn raceway_kernel<const INNER: bool>(
     }
 }
 
-/// Pass 1c of roller `j` on one raceway: adds the normal forces of its slices to the roller
-/// (`f`, `m`) and returns the normal force on the ring; records the loaded slices for the
-/// traction pass.
+/// Pass 1c of roller `j` on one raceway: records its loaded slices for the traction pass
+/// ([`apply_traction`], which applies their normal and friction forces) and its total normal
+/// force in `table`.
 ///
 /// The EHL film is prepared once for the whole roller–raceway contact (its total load over the
 /// loaded length and the load-weighted entrainment speed — the film of a line contact is set
@@ -399,19 +409,18 @@ fn raceway_collect<const INNER: bool>(
     model: &Model,
     rs: &RacewaySlices,
     j: usize,
-    f: &mut V3,
-    m: &mut V3,
     table: &mut ContactTable,
     pass: &mut RacewayPass,
     limit: f64,
     violation: &mut Option<Violation>,
     tables: Tables,
-) -> V3 {
+) {
     table.reset(j, tables);
     if !pass.may_touch[j] {
-        return [0.0; 3];
+        return;
     }
     let loaded = &mut pass.loaded;
+    let first_run = loaded.runs.len();
     let sums = pass.out.collect_loaded(
         rs.lanes.slots(j),
         &rs.lanes.len,
@@ -432,10 +441,8 @@ fn raceway_collect<const INNER: bool>(
         });
     }
     if sums.slots.is_empty() {
-        return [0.0; 3];
+        return;
     }
-    *f = add(*f, sums.force);
-    *m = add(*m, sums.moment);
     let load = sums.load;
     table.force[j] = load;
     let tmodel = if INNER {
@@ -458,8 +465,12 @@ fn raceway_collect<const INNER: bool>(
     };
     let contact = loaded.batch.add_contact(tmodel, &whole);
     loaded.batch.claim(contact, sums.slots.len());
-    loaded.blocks.push((j, contact, sums.slots));
-    scale(sums.force, -1.0)
+    loaded.blocks.push(LoadedBlock {
+        roller: j,
+        contact,
+        slices: sums.slots,
+        runs: first_run..loaded.runs.len(),
+    });
 }
 
 /// The `n` entries of `column` from `first` on (a slice of length `n`, so that a loop over
@@ -470,36 +481,37 @@ fn cut(column: &[f64], first: usize, n: usize) -> &[f64] {
 }
 
 /// Pass 2 of the raceway contacts: evaluates the traction of every loaded slice (one batch per
-/// raceway, [`SliceBatch::evaluate`]) and adds the friction forces to the rollers, the inner
-/// ring (`f_inner`) and, with [`Tables::Fill`], the per-roller contact tables.
+/// raceway, [`SliceBatch::evaluate`]) and adds the normal and friction force of each loaded
+/// slice and their moment to its roller, their reaction to the inner ring (`f_inner`) and, with
+/// [`Tables::Fill`], fills the per-roller contact tables.
 fn apply_traction(model: &Model, diag: &mut Diagnostics, f_inner: &mut V3, tables: Tables) {
     let sc = &mut diag.slices;
-    let slices = model.inner.lanes.slices;
     for (RacewayPass { loaded, out, .. }, table, tmodel, inner) in [
         (&mut sc.inner, &mut diag.inner, &model.traction.inner, true),
         (&mut sc.outer, &mut diag.outer, &model.traction.outer, false),
     ] {
         let batch = &mut loaded.batch;
         batch.evaluate(tmodel);
-        let (q_all, vs_all, mu_all) = batch.forces_speeds_coefficients();
-        for run in &loaded.runs {
-            let j = run.slot / slices;
-            // the run's columns, cut to one length (no bounds checks in the loop)
-            let n = run.batch.len();
-            let (q, vs, mu) = (
-                cut(q_all, run.batch.start, n),
-                cut(vs_all, run.batch.start, n),
-                cut(mu_all, run.batch.start, n),
-            );
-            let [vtx, vty, vtz] = out.vt.each_ref().map(|c| cut(c, run.slot, n));
-            let [rx, ry, rz] = out.r_cp.each_ref().map(|c| cut(c, run.slot, n));
-            // the run's friction force and moment are summed in registers, then applied once
+        let (q_all, _, mu_all) = batch.forces_speeds_coefficients();
+        for block in &loaded.blocks {
+            let j = block.roller;
+            // the block's normal and friction forces and their moment are summed in registers,
+            // then applied once
             let (mut force, mut moment) = ([0.0; 3], [0.0; 3]);
-            for i in 0..n {
-                if vs[i] > 0.0 {
-                    let friction = scale([vtx[i], vty[i], vtz[i]], -mu[i] * q[i] / vs[i]);
-                    force = add(force, friction);
-                    moment = add(moment, cross([rx[i], ry[i], rz[i]], friction));
+            for run in &loaded.runs[block.runs.clone()] {
+                // the run's columns, cut to one length (no bounds checks in the loop)
+                let n = run.batch.len();
+                let (q, mu) = (
+                    cut(q_all, run.batch.start, n),
+                    cut(mu_all, run.batch.start, n),
+                );
+                let [nx, ny, nz] = out.force.each_ref().map(|c| cut(c, run.slot, n));
+                let [dx, dy, dz] = out.slide_dir.each_ref().map(|c| cut(c, run.slot, n));
+                let [rx, ry, rz] = out.r_cp.each_ref().map(|c| cut(c, run.slot, n));
+                for i in 0..n {
+                    let slice = axpy([nx[i], ny[i], nz[i]], -mu[i] * q[i], [dx[i], dy[i], dz[i]]);
+                    force = add(force, slice);
+                    moment = add(moment, cross([rx[i], ry[i], rz[i]], slice));
                 }
             }
             sc.force[j] = add(sc.force[j], force);
@@ -511,10 +523,10 @@ fn apply_traction(model: &Model, diag: &mut Diagnostics, f_inner: &mut V3, table
         if tables == Tables::Skip {
             continue;
         }
-        for (j, contact, slots) in &loaded.blocks {
-            let j = *j;
-            let (_, film_minimum, lambda) = batch.film(*contact);
-            for i in slots.clone() {
+        for block in &loaded.blocks {
+            let j = block.roller;
+            let (_, film_minimum, lambda) = batch.film(block.contact);
+            for i in block.slices.clone() {
                 let q = batch.normal_force(i);
                 let mu = batch.coefficient(i);
                 let vs = batch.sliding_speed(i);
@@ -608,6 +620,41 @@ pub(crate) fn rhs(
         *frame = (ep, cross(ac, ep));
     }
 
+    // the bodies that carry end faces, the same for every roller: the rings with their ribs
+    // (and the lubrication of their rib contacts) and the cage
+    let ends = &model.ends;
+    let rib_rings = [
+        (&inner, &ends.inner_ribs, true),
+        (&outer, &ends.outer_ribs, false),
+    ]
+    .map(|(ring, faces, inner_ring)| {
+        let body = BodyKin {
+            o: ring.o,
+            v: ring.v,
+            axis: ring.axis,
+            omega: scale(ring.axis, ring.spin),
+        };
+        let (model, temperature_k) = if inner_ring {
+            (&model.traction.inner, cond.temperatures.inner_raceway_k)
+        } else {
+            (&model.traction.outer, cond.temperatures.outer_raceway_k)
+        };
+        let lub = EndLubrication {
+            model,
+            reduced_radius: ends.rib_reduced_radius,
+            reduced_modulus: ends.rib_reduced_modulus,
+            roughness: ends.rib_roughness,
+            temperature_k,
+        };
+        (body, lub, faces, inner_ring)
+    });
+    let cage_body = BodyKin {
+        o: cc,
+        v: vcc,
+        axis: ac,
+        omega: wc,
+    };
+
     for j in 0..model.z {
         let b = lay.roller(j);
         let (r, zz) = (y[b + 1], y[b + 2]);
@@ -687,53 +734,29 @@ pub(crate) fn rhs(
             *f = add(*f, ef.force);
             *m = add(*m, ef.moment);
         };
-        let ends = &model.ends;
         let (mut rib_q, mut rib_vs, mut rib_edge, mut rib_mu, mut rib_pw, mut rib_best) =
             (0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
         let mut rib_regime = EndContactRegime::None;
         if model.params.roller_end_rib.enabled {
-            for (ring, faces, inner_ring) in [
-                (&inner, &ends.inner_ribs, true),
-                (&outer, &ends.outer_ribs, false),
-            ] {
+            for (body, lub, faces, inner_ring) in &rib_rings {
+                let inner_ring = *inner_ring;
                 if faces.is_empty() {
                     continue;
                 }
-                let body = BodyKin {
-                    o: ring.o,
-                    v: ring.v,
-                    axis: ring.axis,
-                    omega: scale(ring.axis, ring.spin),
-                };
-                let lub = EndLubrication {
-                    model: if inner_ring {
-                        &model.traction.inner
-                    } else {
-                        &model.traction.outer
-                    },
-                    reduced_radius: ends.rib_reduced_radius,
-                    reduced_modulus: ends.rib_reduced_modulus,
-                    roughness: ends.rib_roughness,
-                    temperature_k: if inner_ring {
-                        cond.temperatures.inner_raceway_k
-                    } else {
-                        cond.temperatures.outer_raceway_k
-                    },
-                };
-                let reach = AxialReach::new(&body, &ends.end, centre, a);
-                for face in faces {
+                let reach = AxialReach::new(body, &ends.end, centre, a);
+                for face in faces.iter() {
                     if reach.bound(face, &ends.end) <= 0.0 {
                         continue;
                     }
                     let Some(ef) = end_force(
                         face,
                         &ends.end,
-                        &body,
+                        body,
                         &reach,
                         &rk,
                         &model.params.roller_end_rib,
                         &ends.rib_damping,
-                        Some(&lub),
+                        Some(lub),
                     ) else {
                         continue;
                     };
@@ -768,13 +791,7 @@ pub(crate) fn rhs(
         }
         let (mut pocket_q, mut pocket_pw) = (0.0, 0.0);
         if model.params.roller_end_cage.enabled {
-            let body = BodyKin {
-                o: cc,
-                v: vcc,
-                axis: ac,
-                omega: wc,
-            };
-            let reach = AxialReach::new(&body, &ends.end, centre, a);
+            let reach = AxialReach::new(&cage_body, &ends.end, centre, a);
             for face in &ends.pocket {
                 if reach.bound(face, &ends.end) <= 0.0 {
                     continue;
@@ -782,7 +799,7 @@ pub(crate) fn rhs(
                 let Some(ef) = end_force(
                     face,
                     &ends.end,
-                    &body,
+                    &cage_body,
                     &reach,
                     &rk,
                     &model.params.roller_end_cage,
@@ -818,34 +835,26 @@ pub(crate) fn rhs(
     raceway_kernel::<false>(model, &model.outer, &outer, &sc.rollers, &mut sc.outer);
     for j in 0..model.z {
         let sc = &mut diag.slices;
-        let (mut f, mut m) = (sc.force[j], sc.moment[j]);
-        let fr = raceway_collect::<true>(
+        raceway_collect::<true>(
             model,
             &model.inner,
             j,
-            &mut f,
-            &mut m,
             &mut diag.inner,
             &mut sc.inner,
             div_limit,
             &mut diag.violation,
             tables,
         );
-        f_inner = add(f_inner, fr);
         raceway_collect::<false>(
             model,
             &model.outer,
             j,
-            &mut f,
-            &mut m,
             &mut diag.outer,
             &mut sc.outer,
             div_limit,
             &mut diag.violation,
             tables,
         );
-        sc.force[j] = f;
-        sc.moment[j] = m;
     }
 
     // raceway traction of all rollers, then Newton–Euler in cylindrical coordinates (seed 000

@@ -174,13 +174,12 @@ pub(crate) struct SliceOutputs {
     pub q: Vec<f64>,
     /// normal force on the roller `Q n`, N
     pub force: [Vec<f64>; 3],
-    /// its moment about the roller centre, N·m
-    pub moment: [Vec<f64>; 3],
     /// contact point relative to the roller centre, m
     pub r_cp: [Vec<f64>; 3],
-    /// tangential relative velocity (roller − ring), m/s
-    pub vt: [Vec<f64>; 3],
-    /// its magnitude, m/s
+    /// direction of the tangential relative velocity v_t (roller − ring), unit (zero where
+    /// v_t vanishes): the friction on the roller is `−μ Q` times it
+    pub slide_dir: [Vec<f64>; 3],
+    /// the sliding speed |v_t|, m/s
     pub vs: Vec<f64>,
     /// entrainment speed in the roller's orbital frame, m/s
     pub u: Vec<f64>,
@@ -194,20 +193,20 @@ impl SliceOutputs {
             delta: v(),
             q: v(),
             force: [v(), v(), v()],
-            moment: [v(), v(), v()],
             r_cp: [v(), v(), v()],
-            vt: [v(), v(), v()],
+            slide_dir: [v(), v(), v()],
             vs: v(),
             u: v(),
         }
     }
 
-    /// Pass 1 over the slots of one roller (`slots`, in slice order): sums the normal forces
-    /// and moments of the loaded slots and writes their traction inputs (Q, slice length from
-    /// `lens`, u, |v_t|) to `columns` from index `to` on, one run of consecutive loaded slots
-    /// after the other, each recorded in `runs`. Notes the first approach above `limit`
-    /// (divergence check). The contact point and tangential velocity of a slot stay where
-    /// they are: [`LoadedRun::slot`] finds them.
+    /// Pass 1 over the slots of one roller (`slots`, in slice order): sums the loads of the
+    /// loaded slots and writes their traction inputs (Q, slice length from `lens`, u, |v_t|) to
+    /// `columns` from index `to` on, one run of consecutive loaded slots after the other, each
+    /// recorded in `runs`. Notes the first approach above `limit` (divergence check). The
+    /// normal force, contact point and sliding direction of a slot stay where they are
+    /// ([`LoadedRun::slot`] finds them): the traction pass adds the normal and friction forces
+    /// of a slice and their moment together.
     pub fn collect_loaded(
         &self,
         slots: Range<usize>,
@@ -218,13 +217,7 @@ impl SliceOutputs {
         runs: &mut Vec<LoadedRun>,
     ) -> LoadedSlots {
         let Self {
-            delta,
-            q,
-            force: [fx, fy, fz],
-            moment: [mx, my, mz],
-            vs,
-            u,
-            ..
+            delta, q, vs, u, ..
         } = self;
         let mut sums = LoadedSlots::default();
         if let Some(s) = delta[slots.clone()].iter().position(|&d| d > limit) {
@@ -241,8 +234,6 @@ impl SliceOutputs {
             let (start, run_start) = (s, to);
             while s < slots.end && q[s] > 0.0 {
                 let qs = q[s];
-                sums.force = add(sums.force, [fx[s], fy[s], fz[s]]);
-                sums.moment = add(sums.moment, [mx[s], my[s], mz[s]]);
                 sums.load += qs;
                 sums.length += lens[s];
                 sums.entrainment += qs * u[s];
@@ -276,9 +267,6 @@ pub(crate) struct LoadedRun {
 /// Result of [`SliceOutputs::collect_loaded`].
 #[derive(Debug, Clone, Default)]
 pub(crate) struct LoadedSlots {
-    /// sum of the normal forces on the roller and of their moments about its centre
-    pub force: V3,
-    pub moment: V3,
     /// total normal force, N; loaded length, m; Σ Q u (load-weighted entrainment × load)
     pub load: f64,
     pub length: f64,
@@ -344,9 +332,8 @@ fn evaluate_with<'a, const INNER: bool>(
         roller: rollers.columns.each_ref().map(|c| cut(c)),
     };
     let [fx, fy, fz] = &mut out.force;
-    let [mx, my, mz] = &mut out.moment;
     let [rx, ry, rz] = &mut out.r_cp;
-    let [tx, ty, tz] = &mut out.vt;
+    let [tx, ty, tz] = &mut out.slide_dir;
     // Every output array is a separate `&mut` argument of the loop, so the compiler knows that
     // they overlap neither each other nor the inputs and vectorises the loop without run-time
     // overlap checks.
@@ -360,9 +347,6 @@ fn evaluate_with<'a, const INNER: bool>(
                 &mut fx[r.clone()],
                 &mut fy[r.clone()],
                 &mut fz[r.clone()],
-                &mut mx[r.clone()],
-                &mut my[r.clone()],
-                &mut mz[r.clone()],
                 &mut rx[r.clone()],
                 &mut ry[r.clone()],
                 &mut rz[r.clone()],
@@ -399,9 +383,6 @@ rolldyn_numerics::avx2_twin! {
         fx: &mut [f64],
         fy: &mut [f64],
         fz: &mut [f64],
-        mx: &mut [f64],
-        my: &mut [f64],
-        mz: &mut [f64],
         rx: &mut [f64],
         ry: &mut [f64],
         rz: &mut [f64],
@@ -429,7 +410,6 @@ rolldyn_numerics::avx2_twin! {
             &mut u_out[..n],
         );
         let (fx, fy, fz) = (&mut fx[..n], &mut fy[..n], &mut fz[..n]);
-        let (mx, my, mz) = (&mut mx[..n], &mut my[..n], &mut mz[..n]);
         let (rx, ry, rz) = (&mut rx[..n], &mut ry[..n], &mut rz[..n]);
         let (tx, ty, tz) = (&mut tx[..n], &mut ty[..n], &mut tz[..n]);
         let ring_spin_axis = scale(ring.ring_axis, ring.ring_spin);
@@ -477,7 +457,6 @@ rolldyn_numerics::avx2_twin! {
                 0.0
             };
             let normal = scale(n, q);
-            let moment = cross(r_cp, normal);
             let vt = axpy(vrel, -v_normal, n);
             // rolling direction and entrainment speed in the roller's orbital frame (SPEC §3.5)
             let t_dir = cross(ring.ring_axis, n_out);
@@ -488,16 +467,15 @@ rolldyn_numerics::avx2_twin! {
             fx[s] = normal[0];
             fy[s] = normal[1];
             fz[s] = normal[2];
-            mx[s] = moment[0];
-            my[s] = moment[1];
-            mz[s] = moment[2];
             rx[s] = r_cp[0];
             ry[s] = r_cp[1];
             rz[s] = r_cp[2];
-            tx[s] = vt[0];
-            ty[s] = vt[1];
-            tz[s] = vt[2];
-            vs_out[s] = dot(vt, vt).sqrt();
+            let vs = dot(vt, vt).sqrt();
+            let dir = scale(vt, if vs > 0.0 { 1.0 / vs } else { 0.0 });
+            tx[s] = dir[0];
+            ty[s] = dir[1];
+            tz[s] = dir[2];
+            vs_out[s] = vs;
             u_out[s] = u;
         }
     }
@@ -623,7 +601,14 @@ mod tests {
                 );
                 if q > 0.0 {
                     loaded += 1;
-                    let got = [out.vt[0][s], out.vt[1][s], out.vt[2][s]];
+                    let got = scale(
+                        [
+                            out.slide_dir[0][s],
+                            out.slide_dir[1][s],
+                            out.slide_dir[2][s],
+                        ],
+                        out.vs[s],
+                    );
                     assert!(
                         norm(sub(got, vt)) < 1e-12 * norm(vt).max(1.0),
                         "v_t slice {s}"
@@ -643,7 +628,7 @@ mod tests {
     /// The bits of every output of the slots `slots`.
     fn bits(o: &SliceOutputs, slots: Range<usize>) -> Vec<u64> {
         let mut all = vec![&o.delta, &o.q, &o.vs, &o.u];
-        all.extend(o.force.iter().chain(&o.moment).chain(&o.r_cp).chain(&o.vt));
+        all.extend(o.force.iter().chain(&o.r_cp).chain(&o.slide_dir));
         all.iter()
             .flat_map(|v| v[slots.clone()].iter().map(|x| x.to_bits()))
             .collect()

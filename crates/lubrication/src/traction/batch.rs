@@ -433,15 +433,17 @@ impl PendingFilms {
 
 /// Per-slice copies of their contact's data ([`ContactTraction`] and the line stiffness
 /// π E'/(2 R')), so that the main loop reads contiguous arrays. Each contact's row is computed
-/// once (its divisions included) and then copied to its slices. A column whose value is the
-/// same for every prepared contact (the oil properties and the stiffness of one raceway at one
-/// temperature) is filled once for all slices, and not again while it stays the same.
+/// once (its divisions included) and then copied to its slices. When every prepared contact has
+/// the same temperature, R' and E' (one raceway of the dynamics), the columns that depend on
+/// nothing else ([`OIL_COLUMNS`]) are the same for all of them: they are filled once for all
+/// slices, and not again while they stay the same.
 #[derive(Debug, Clone, Default)]
 struct ContactLanes {
-    rows: Vec<(bool, [f64; LANE_COLUMNS])>,
+    rows: Vec<[f64; LANE_COLUMNS]>,
     /// the contact is prepared (lubricated and loaded)
     prepared: Vec<bool>,
-    /// one column per entry of [`lane_row`], in its order (at least as long as the batch)
+    /// one column per entry of [`lane_row`], in its order, at least [`FILL_WIDTH`] longer than
+    /// the batch
     columns: [Vec<f64>; LANE_COLUMNS],
     /// per column: the bits of the value that fills its first `len` slots, if it is uniform
     kept: [Option<(u64, usize)>; LANE_COLUMNS],
@@ -449,6 +451,17 @@ struct ContactLanes {
 
 /// The number of f64 columns of [`ContactLanes`].
 const LANE_COLUMNS: usize = 13;
+
+/// The columns of [`lane_row`] that depend only on the contact's temperature (the oil
+/// properties), R' and E' (the line stiffness).
+const OIL_COLUMNS: [bool; LANE_COLUMNS] = [
+    true, false, false, true, true, true, true, true, true, false, false, false, false,
+];
+
+/// Slices written per store when a contact's value is copied to its slices: whole groups of
+/// this many, so that a copy may run up to `FILL_WIDTH − 1` slices into the next contact's,
+/// which are written afterwards.
+const FILL_WIDTH: usize = 8;
 
 /// A contact's entries of the [`ContactLanes`] columns: the line stiffness, Λ, the blend weight
 /// and the fields of [`MurakiContact`] (η0, ᾱ, Γ, 1/Γ, τ0, β0, h, 1/(τ0 h), τ0² h,
@@ -478,39 +491,41 @@ impl ContactLanes {
         self.rows.extend(contacts.iter().map(|c| {
             let stiffness = line_stiffness(c.reduced_modulus_pa, c.reduced_radius_m);
             match &c.prepared {
-                Some(p) => (
-                    true,
-                    lane_row(
-                        stiffness,
-                        &ContactTraction::new(lf, &p.props, p.film_central_m, p.lambda),
-                    ),
+                Some(p) => lane_row(
+                    stiffness,
+                    &ContactTraction::new(lf, &p.props, p.film_central_m, p.lambda),
                 ),
-                None => (false, lane_row(stiffness, &ContactTraction::default())),
+                None => lane_row(stiffness, &ContactTraction::default()),
             }
         }));
+        // the prepared contacts (the others only ever meet a zero coefficient) and whether
+        // they share the inputs of the oil columns
+        let mut prepared = contacts
+            .iter()
+            .enumerate()
+            .filter(|(_, c)| c.prepared.is_some());
+        let first = prepared.next();
+        let same_oil = first.is_some_and(|(_, a)| {
+            prepared.all(|(_, b)| {
+                a.temperature_k.to_bits() == b.temperature_k.to_bits()
+                    && a.reduced_radius_m.to_bits() == b.reduced_radius_m.to_bits()
+                    && a.reduced_modulus_pa.to_bits() == b.reduced_modulus_pa.to_bits()
+            })
+        });
         let n = contact_of.len();
+        let room = n + FILL_WIDTH;
         self.prepared.clear();
-        self.prepared.resize(n, false);
-        // the value shared by all prepared contacts, per column (the other rows only ever meet
-        // a zero coefficient)
-        let mut uniform: [Option<u64>; LANE_COLUMNS] = [None; LANE_COLUMNS];
-        let mut prepared_rows = self.rows.iter().filter(|(p, _)| *p).map(|(_, row)| row);
-        if let Some(first) = prepared_rows.next() {
-            uniform = first.map(|v| Some(v.to_bits()));
-            for row in prepared_rows {
-                for (u, v) in uniform.iter_mut().zip(row) {
-                    if *u != Some(v.to_bits()) {
-                        *u = None;
-                    }
-                }
-            }
-        }
-        for ((column, kept), u) in self.columns.iter_mut().zip(&mut self.kept).zip(uniform) {
-            if column.len() < n {
-                column.resize(n, 0.0);
+        self.prepared.resize(room, false);
+        for (c, (column, kept)) in self.columns.iter_mut().zip(&mut self.kept).enumerate() {
+            if column.len() < room {
+                column.resize(room, 0.0);
                 *kept = None;
             }
-            match (u, *kept) {
+            let uniform = match first {
+                Some((k, _)) if same_oil && OIL_COLUMNS[c] => Some(self.rows[k][c].to_bits()),
+                _ => None,
+            };
+            match (uniform, *kept) {
                 (Some(bits), Some((kept_bits, len))) if bits == kept_bits && len >= n => {}
                 (Some(bits), _) => {
                     column[..n].fill(f64::from_bits(bits));
@@ -519,17 +534,25 @@ impl ContactLanes {
                 (None, _) => *kept = None,
             }
         }
-        // the slices of a contact are consecutive (`push_block`): one fill per run and
-        // non-uniform column
+        // the slices of a contact are consecutive (`push_block`): its values are copied in
+        // whole groups of FILL_WIDTH slices, contact after contact
         let mut start = 0;
         while start < n {
             let k = contact_of[start];
             let end = start + contact_of[start..].iter().take_while(|&&c| c == k).count();
-            let (prepared, row) = &self.rows[k];
-            self.prepared[start..end].fill(*prepared);
+            let groups = start..start + (end - start).div_ceil(FILL_WIDTH) * FILL_WIDTH;
+            let row = &self.rows[k];
+            for group in self.prepared[groups.clone()]
+                .as_chunks_mut::<FILL_WIDTH>()
+                .0
+            {
+                *group = [contacts[k].prepared.is_some(); FILL_WIDTH];
+            }
             for ((column, kept), &value) in self.columns.iter_mut().zip(&self.kept).zip(row) {
                 if kept.is_none() {
-                    column[start..end].fill(value);
+                    for group in column[groups.clone()].as_chunks_mut::<FILL_WIDTH>().0 {
+                        *group = [value; FILL_WIDTH];
+                    }
                 }
             }
             start = end;
