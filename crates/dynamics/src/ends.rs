@@ -217,6 +217,7 @@ pub(crate) fn deepest_within(
         return None;
     }
     let cs = end.sphere_curvature;
+    let flat_face = face.slope == 0.0 && face.curvature == 0.0;
     // best y and the approach for a fixed x
     let eval = |x: f64| -> (f64, f64) {
         let disc = (r * r - x * x).max(0.0).sqrt();
@@ -231,8 +232,13 @@ pub(crate) fn deepest_within(
         } else {
             -ymax
         };
-        let u = rho_p + beta * x + y * y / (2.0 * rho_p) - face.rho_c;
-        let prot = face.slope * u - 0.5 * face.curvature * u * u;
+        // the face's protrusion at the point (zero on a flat face: no division on that path)
+        let prot = if flat_face {
+            0.0
+        } else {
+            let u = rho_p + beta * x + y * y / (2.0 * rho_p) - face.rho_c;
+            face.slope * u - 0.5 * face.curvature * u * u
+        };
         let d = delta0 + p_lin * x + q_lin * y - 0.5 * cs * ka * (x * x + y * y) + prot;
         (d, y)
     };

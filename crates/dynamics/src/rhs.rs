@@ -861,7 +861,7 @@ pub(crate) fn rhs(
     // (2.1)) and L̇ = M ((2.2) in the inertial frame: the gyroscopic term is contained in
     // ω(L, a))
     apply_traction(model, diag, &mut f_inner, tables);
-    let mr = model.m_r;
+    let inv_mr = 1.0 / model.m_r;
     for j in 0..model.z {
         if tables == Tables::Fill {
             diag.inner.finish(j);
@@ -878,9 +878,9 @@ pub(crate) fn rhs(
         dy[b + 1] = rdot;
         dy[b + 2] = zd;
         wr(dy, b + 3, cross(w, a));
-        dy[b + 6] = (f_tangential / mr - 2.0 * rdot * thd) / r;
-        dy[b + 7] = f_radial / mr + r * thd * thd;
-        dy[b + 8] = f[2] / mr;
+        dy[b + 6] = (f_tangential * inv_mr - 2.0 * rdot * thd) / r;
+        dy[b + 7] = f_radial * inv_mr + r * thd * thd;
+        dy[b + 8] = f[2] * inv_mr;
         wr(dy, b + 9, m);
     }
 

@@ -85,17 +85,29 @@ impl SliceBatch {
     /// are computed for all contacts together in [`SliceBatch::evaluate`].
     pub fn add_contact(&mut self, model: &TractionModel, whole: &ContactState) -> BatchContact {
         let index = self.contacts.len();
-        let prepared = match self.same_oil_as_last(whole) {
-            Some(oil) => Some((oil, true)),
-            None => model.prepare_contact_deferred(whole),
-        };
-        let prepared = match prepared {
-            Some((prepared, true)) => {
+        if self.same_oil_as_last(whole) {
+            // a copy of the last contact (one move), then its own geometry and film inputs
+            self.contacts.push(self.contacts[index - 1]);
+            let contact = &mut self.contacts[index];
+            contact.reduced_radius_m = whole.reduced_radius_m;
+            contact.reduced_modulus_pa = whole.reduced_modulus_pa;
+            contact.roughness_ra_m = whole.roughness_ra_m;
+            if let Some(prepared) = contact.prepared.as_mut() {
+                prepared.film_central_m = f64::NAN;
+                prepared.film_minimum_m = f64::NAN;
+                prepared.lambda = f64::NAN;
                 self.films.push(index, &prepared.props, whole);
-                Some(prepared)
             }
-            other => other.map(|(prepared, _)| prepared),
-        };
+            return BatchContact(index);
+        }
+        let prepared = model
+            .prepare_contact_deferred(whole)
+            .map(|(prepared, deferred)| {
+                if deferred {
+                    self.films.push(index, &prepared.props, whole);
+                }
+                prepared
+            });
         self.contacts.push(Contact {
             prepared,
             reduced_radius_m: whole.reduced_radius_m,
@@ -106,26 +118,23 @@ impl SliceBatch {
         BatchContact(index)
     }
 
-    /// The last contact's preparation with its film cleared, when `whole` is a loaded line
-    /// contact at the same temperature as that contact and that film was deferred: the oil
-    /// properties, the resolved formula and the warnings depend on nothing else, so the table
-    /// look-up is done once per raceway instead of once per contact.
-    fn same_oil_as_last(&self, whole: &ContactState) -> Option<PreparedContact> {
-        let last = self.contacts.last()?;
-        let prepared = last.prepared.as_ref()?;
-        let deferred = matches!(
+    /// Whether the last contact's preparation holds for `whole` too (with its own film): a
+    /// loaded line contact at the same temperature as that contact, whose film was deferred.
+    /// The oil properties, the resolved formula and the warnings depend on nothing else, so the
+    /// table look-up is done once per raceway instead of once per contact.
+    fn same_oil_as_last(&self, whole: &ContactState) -> bool {
+        let Some(prepared) = self.contacts.last().and_then(|last| {
+            (last.temperature_k == whole.temperature_k)
+                .then_some(last.prepared.as_ref())
+                .flatten()
+        }) else {
+            return false;
+        };
+        matches!(
             prepared.formula,
             Some(FilmFormula::RigidPiezoviscousLine | FilmFormula::Auto)
-        );
-        let same = last.temperature_k == whole.temperature_k
-            && whole.normal_force_n > 0.0
-            && whole.geometry.is_line();
-        (deferred && same).then_some(PreparedContact {
-            film_central_m: f64::NAN,
-            film_minimum_m: f64::NAN,
-            lambda: f64::NAN,
-            ..*prepared
-        })
+        ) && whole.normal_force_n > 0.0
+            && whole.geometry.is_line()
     }
 
     /// Adds a slice of `contact`: normal force (N), slice length (m), rolling and sliding speed
