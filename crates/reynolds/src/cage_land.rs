@@ -121,23 +121,27 @@ pub fn short_bearing_integrals(eps: f64, phi1: f64) -> (f64, f64) {
     }
     let q = 1.0 - eps * eps;
     let k = ((1.0 + eps) / (1.0 - eps)).sqrt();
-    // continuous antiderivative of 1/D
-    let i1 = |t: f64| {
+    // continuous antiderivative of 1/D, from tan(t/2)
+    let i1 = |t: f64, tan_half: f64| {
         let m = ((t + std::f64::consts::PI) / std::f64::consts::TAU).floor();
-        2.0 / q.sqrt() * ((k * (0.5 * t).tan()).atan() + std::f64::consts::PI * m)
+        2.0 / q.sqrt() * ((k * tan_half).atan() + std::f64::consts::PI * m)
     };
-    let anti = |t: f64| -> (f64, f64, f64) {
-        // (J_sc, J_cc, J_ss) antiderivatives
-        let (s, c) = t.sin_cos();
+    // (J_sc, J_cc, J_ss) antiderivatives at t, from sin t, cos t and tan(t/2)
+    let anti = |t: f64, s: f64, c: f64, tan_half: f64| -> (f64, f64, f64) {
         let d = 1.0 - eps * c;
-        let a1 = i1(t);
+        let a1 = i1(t, tan_half);
         let a2 = eps * s / (q * d) + a1 / q;
         let a3 = eps * s / (2.0 * q * d * d) + 3.0 / (2.0 * q) * a2 - 1.0 / (2.0 * q) * a1;
         let jsc = (2.0 * d - 1.0) / (2.0 * eps * eps * d * d);
         let jcc = (a3 - 2.0 * a2 + a1) / (eps * eps);
         (jsc, jcc, a3 - jcc)
     };
-    let (xa, xb) = (anti(a), anti(b));
+    // at a = φ₁ − π: sin a = −sin φ₁, cos a = −cos φ₁, tan(a/2) = −1/tan(φ₁/2)
+    let tan_half = (0.5 * phi1).tan();
+    let (xa, xb) = (
+        anti(a, -s1, -c1, -1.0 / tan_half),
+        anti(b, s1, c1, tan_half),
+    );
     let (jsc, jcc, jss) = (xb.0 - xa.0, xb.1 - xa.1, xb.2 - xa.2);
     (c1 * jsc - s1 * jcc, c1 * jss - s1 * jsc)
 }
@@ -352,7 +356,8 @@ impl CageLand {
             ),
         };
         let c = g.clearance;
-        let emag = ej[0].hypot(ej[1]);
+        // √(x² + y²) rather than hypot: no overflow at these magnitudes, and cheaper
+        let emag = (ej[0] * ej[0] + ej[1] * ej[1]).sqrt();
         let mut eps = emag / c;
         let (ca, sa) = if emag > 0.0 {
             (ej[0] / emag, ej[1] / emag)
@@ -371,7 +376,7 @@ impl CageLand {
         let alpha_dot = if emag > 0.0 { et / emag } else { 0.0 };
         let omega_bar = 0.5 * (wj + wb) - alpha_dot;
         let (a_rot, a_sq) = (eps * omega_bar, er / c);
-        let cmag = a_rot.hypot(a_sq);
+        let cmag = (a_rot * a_rot + a_sq * a_sq).sqrt();
         let (mut fr, mut ft) = (0.0, 0.0);
         if cmag > 0.0 {
             let phi1 = a_sq.atan2(a_rot);
@@ -390,7 +395,7 @@ impl CageLand {
                 ft = k * it;
             } else {
                 let (tr, tt) = self.table(eps.max(0.02), phi_f);
-                let mag = k * ir.hypot(it);
+                let mag = k * (ir * ir + it * it).sqrt();
                 fr = mag * tr;
                 ft = mag * tt;
             }
