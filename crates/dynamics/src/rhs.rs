@@ -147,8 +147,15 @@ struct RacewayScratch {
     frame: Vec<(f64, f64, V3, V3)>,
     /// per roller: azimuth θ, sin θ, cos θ (one vectorised `sin_cos` for all rollers)
     theta: [Vec<f64>; 3],
-    /// per pocket: radial and tangential unit vectors in the cage plane
-    pockets: Vec<(V3, V3)>,
+    /// per roller: centre and unit axis (struct of arrays, for the vector loops of pass 1a)
+    centre: [Vec<f64>; 3],
+    axis: [Vec<f64>; 3],
+    /// per pocket: radial and tangential unit vectors in the cage plane (struct of arrays:
+    /// e_x, e_y, e_z, t_x, t_y, t_z)
+    pockets: [Vec<f64>; 6],
+    /// per roller: squared distance of its bar points (pocket sides −, + × roller ends −, +)
+    /// from the bar edges, measured in the cage plane
+    bar_dist_sq: [Vec<f64>; 4],
 }
 
 /// The contacts of one raceway in one evaluation (pass 1 of [`rhs`]): which rollers may touch
@@ -227,7 +234,10 @@ impl RacewayScratch {
             moment: vec![[0.0; 3]; z],
             frame: vec![(0.0, 1.0, [0.0, 0.0, 1.0], [0.0; 3]); z],
             theta: [vec![0.0; z], vec![0.0; z], vec![1.0; z]],
-            pockets: vec![([1.0, 0.0, 0.0], [0.0, 1.0, 0.0]); z],
+            centre: [vec![0.0; z], vec![0.0; z], vec![0.0; z]],
+            axis: [vec![0.0; z], vec![0.0; z], vec![1.0; z]],
+            pockets: std::array::from_fn(|_| vec![0.0; z]),
+            bar_dist_sq: std::array::from_fn(|_| vec![0.0; z]),
         }
     }
 
@@ -301,56 +311,69 @@ fn note(diag: &mut Diagnostics, what: &'static str, index: usize, penetration: f
     }
 }
 
-/// Pass 1a of roller `j` on one raceway (SPEC §2.1–2.2): whether any slice can touch and, if
-/// so, the raceway drop under the roller's slots for the slot loop ([`raceway_kernel`]).
-#[inline]
-fn raceway_pair<const INNER: bool>(
+/// Pass 1a on one raceway (SPEC §2.1–2.2), for all rollers in one vector loop: whether any
+/// slice of roller `j` can touch (`pass.may_touch[j]`), from the centres and unit axes in
+/// `centre` and `axis`.
+///
+/// Slice centres p = c + x a: their offset from the ring axis is dp(x) = dp_c + x a⊥, so
+/// ρ(x)² = A + 2Bx + Cx², a convex parabola in x. A slice can touch the inner raceway only if
+/// ρ < T_i = R_i + R_w − min drops somewhere on the roller (|x| ≤ X), and the outer one only if
+/// ρ > T_o = R_o − R_w + min drops: the minimum (at x = −B/C, clamped) and the maximum (at an
+/// end) of ρ² decide, without a square root. Exact for the extent of the slice centres, so a
+/// skewed roller (large C, B ≈ 0) is not taken for a touching one.
+fn raceway_pairs<const INNER: bool>(
     model: &Model,
+    rs: &RacewaySlices,
+    ring: &RingKin,
+    centre: &[Vec<f64>; 3],
+    axis: &[Vec<f64>; 3],
+    pass: &mut RacewayPass,
+) {
+    let z = model.z;
+    let drops = model.min_slice_drop + rs.min_drop;
+    let reach = model.slice_reach;
+    let [cx, cy, cz] = centre.each_ref().map(|c| &c[..z]);
+    let [ax, ay, az] = axis.each_ref().map(|c| &c[..z]);
+    let may_touch = &mut pass.may_touch[..z];
+    for j in 0..z {
+        let d_c = sub([cx[j], cy[j], cz[j]], ring.o);
+        let dp_c = axpy(d_c, -dot(d_c, ring.axis), ring.axis);
+        let a = [ax[j], ay[j], az[j]];
+        let a_perp = axpy(a, -dot(a, ring.axis), ring.axis);
+        let (qa, qb, qc) = (dot(dp_c, dp_c), dot(dp_c, a_perp), dot(a_perp, a_perp));
+        may_touch[j] = if INNER {
+            let t = ring.raceway_radius + model.rw - drops;
+            let x = if qc > 0.0 {
+                (-qb / qc).clamp(-reach, reach)
+            } else {
+                -reach.copysign(qb)
+            };
+            qa + x * (2.0 * qb + x * qc) < t * t
+        } else {
+            let t = ring.raceway_radius - model.rw + drops;
+            t <= 0.0 || qa + reach * (2.0 * qb.abs() + reach * qc) > t * t
+        };
+    }
+}
+
+/// The raceway drop under the slots of roller `j` (profiled raceways only) for the slot loop
+/// ([`raceway_kernel`]).
+fn raceway_drop(
     rs: &RacewaySlices,
     j: usize,
     rk: &RollerKinematics,
     ring: &RingKin,
     pass: &mut RacewayPass,
-) -> bool {
-    pass.may_touch[j] = false;
-    // Slice centres p = c + x a: their offset from the ring axis is dp(x) = dp_c + x a⊥, so
-    // ρ(x)² = A + 2Bx + Cx², a convex parabola in x. A slice can touch the inner raceway only
-    // if ρ < T_i = R_i + R_w − min drops somewhere on the roller (|x| ≤ X), and the outer one
-    // only if ρ > T_o = R_o − R_w + min drops: the minimum (at x = −B/C, clamped) and the
-    // maximum (at an end) of ρ² decide, without a square root. Exact for the extent of the
-    // slice centres, so a skewed roller (large C, B ≈ 0) is not taken for a touching one.
-    let d_c = sub(rk.c, ring.o);
-    let zeta_c = dot(d_c, ring.axis);
-    let dp_c = axpy(d_c, -zeta_c, ring.axis);
-    let a_ax = dot(rk.a, ring.axis);
-    let a_perp = axpy(rk.a, -a_ax, ring.axis);
-    let (qa, qb, qc) = (dot(dp_c, dp_c), dot(dp_c, a_perp), dot(a_perp, a_perp));
-    let drops = model.min_slice_drop + rs.min_drop;
-    let reach = model.slice_reach;
-    let may_touch = if INNER {
-        let t = ring.raceway_radius + model.rw - drops;
-        let x = if qc > 0.0 {
-            (-qb / qc).clamp(-reach, reach)
-        } else {
-            -reach.copysign(qb)
-        };
-        qa + x * (2.0 * qb + x * qc) < t * t
-    } else {
-        let t = ring.raceway_radius - model.rw + drops;
-        t <= 0.0 || qa + reach * (2.0 * qb.abs() + reach * qc) > t * t
-    };
-    if !may_touch {
-        return false;
-    }
+) {
     if let Some(pr) = &rs.profile {
+        let zeta_c = dot(sub(rk.c, ring.o), ring.axis);
+        let a_ax = dot(rk.a, ring.axis);
         let slots = rs.lanes.slots(j);
         let race_drop = &mut pass.race_drop[slots.clone()];
         for (d, &x) in race_drop.iter_mut().zip(&rs.lanes.x[slots]) {
             *d = pr.drop(zeta_c + x * a_ax);
         }
     }
-    pass.may_touch[j] = true;
-    true
 }
 
 /// Pass 1b on one raceway: the slot loop ([`slice_kernel::evaluate`]: approach, slice law,
@@ -608,16 +631,84 @@ pub(crate) fn rhs(
         *th = y[lay.roller(j)];
     }
     fastmath::sin_cos_many(theta, sin_theta, cos_theta);
+    // every roller's centre and unit axis (vector loops), then pass 1a on both raceways
+    {
+        let sc = &mut diag.slices;
+        let [cx, cy, cz] = &mut sc.centre;
+        let [ax, ay, az] = &mut sc.axis;
+        for j in 0..model.z {
+            let b = lay.roller(j);
+            let r = y[b + 1];
+            cx[j] = r * sc.theta[2][j];
+            cy[j] = r * sc.theta[1][j];
+            cz[j] = y[b + 2];
+            ax[j] = y[b + 3];
+            ay[j] = y[b + 4];
+            az[j] = y[b + 5];
+        }
+        // unit axes as `unit_or(a, e_z)`, with the same expressions
+        let (ax, ay, az) = (&mut ax[..model.z], &mut ay[..model.z], &mut az[..model.z]);
+        for j in 0..model.z {
+            let n = (ax[j] * ax[j] + ay[j] * ay[j] + az[j] * az[j]).sqrt();
+            let inv = 1.0 / n;
+            let some = n > 0.0;
+            ax[j] = if some { ax[j] * inv } else { 0.0 };
+            ay[j] = if some { ay[j] * inv } else { 0.0 };
+            az[j] = if some { az[j] * inv } else { 1.0 };
+        }
+        raceway_pairs::<true>(
+            model,
+            &model.inner,
+            &inner,
+            &sc.centre,
+            &sc.axis,
+            &mut sc.inner,
+        );
+        raceway_pairs::<false>(
+            model,
+            &model.outer,
+            &outer,
+            &sc.centre,
+            &sc.axis,
+            &mut sc.outer,
+        );
+    }
 
     // pocket frames: radial unit vector of pocket j in the cage plane (centre angle
     // φ_c + 2πj/Z by the angle-sum formulas) and the tangential one, all pockets in one loop
-    for (frame, &(sin_pitch, cos_pitch)) in
-        diag.slices.pockets.iter_mut().zip(&model.pocket_sin_cos)
-    {
+    let [ex, ey, ez, tx, ty, tz] = diag.slices.pockets.each_mut().map(|c| &mut c[..model.z]);
+    let pitch = &model.pocket_sin_cos[..model.z];
+    for j in 0..model.z {
+        let (sin_pitch, cos_pitch) = pitch[j];
         let sp = sin_phi * cos_pitch + cos_phi * sin_pitch;
         let cpp = cos_phi * cos_pitch - sin_phi * sin_pitch;
         let ep = unit_or(perp([cpp, sp, 0.0], ac), [cpp, sp, 0.0]);
-        *frame = (ep, cross(ac, ep));
+        let tp = cross(ac, ep);
+        [ex[j], ey[j], ez[j]] = ep;
+        [tx[j], ty[j], tz[j]] = tp;
+    }
+    // roller ↔ cage bars, first for all rollers at once: the squared distance of each bar
+    // point from its bar edge (the expressions of the contact loop below)
+    {
+        let sc = &mut diag.slices;
+        let [cx, cy, cz] = sc.centre.each_ref().map(|c| &c[..model.z]);
+        let [ax, ay, az] = sc.axis.each_ref().map(|c| &c[..model.z]);
+        let [ex, ey, ez, tx, ty, tz] = sc.pockets.each_ref().map(|c| &c[..model.z]);
+        let [d0, d1, d2, d3] = sc.bar_dist_sq.each_mut().map(|c| &mut c[..model.z]);
+        for j in 0..model.z {
+            let (ep, tp) = ([ex[j], ey[j], ez[j]], [tx[j], ty[j], tz[j]]);
+            let (centre, a) = ([cx[j], cy[j], cz[j]], [ax[j], ay[j], az[j]]);
+            let dist_sq = |side: f64, x: f64| {
+                let edge = axpy(axpy(cc, model.r_bar, ep), side * model.half_pocket, tp);
+                let d = perp(sub(axpy(centre, x, a), edge), ac);
+                dot(d, d)
+            };
+            let [x0, x1] = model.bar_x;
+            d0[j] = dist_sq(-1.0, x0);
+            d1[j] = dist_sq(-1.0, x1);
+            d2[j] = dist_sq(1.0, x0);
+            d3[j] = dist_sq(1.0, x1);
+        }
     }
 
     // the bodies that carry end faces, the same for every roller: the rings with their ribs
@@ -658,7 +749,11 @@ pub(crate) fn rhs(
     for j in 0..model.z {
         let b = lay.roller(j);
         let (r, zz) = (y[b + 1], y[b + 2]);
-        let a = unit_or(rd(y, b + 3), [0.0, 0.0, 1.0]);
+        let a = [
+            diag.slices.axis[0][j],
+            diag.slices.axis[1][j],
+            diag.slices.axis[2][j],
+        ];
         let (thd, rdot, zd) = (y[b + 6], y[b + 7], y[b + 8]);
         let w = axisymmetric_omega(rd(y, b + 9), a, model.ia_r, model.it_r);
         let (s, c) = (diag.slices.theta[1][j], diag.slices.theta[2][j]);
@@ -675,27 +770,37 @@ pub(crate) fn rhs(
         let mut f = scale(g, model.m_r);
         let mut m = [0.0; 3];
         let sc = &mut diag.slices;
-        let touch_inner = raceway_pair::<true>(model, &model.inner, j, &rk, &inner, &mut sc.inner);
-        let touch_outer = raceway_pair::<false>(model, &model.outer, j, &rk, &outer, &mut sc.outer);
+        let (touch_inner, touch_outer) = (sc.inner.may_touch[j], sc.outer.may_touch[j]);
+        if touch_inner {
+            raceway_drop(&model.inner, j, &rk, &inner, &mut sc.inner);
+        }
+        if touch_outer {
+            raceway_drop(&model.outer, j, &rk, &outer, &mut sc.outer);
+        }
         if touch_inner || touch_outer {
             sc.rollers.set(model.inner.lanes.slots(j), &rk);
         }
 
         // roller ↔ cage bars: edge lines of pocket j at the bar contact radius, both pocket
         // sides, evaluated at both ends of the roller (SPEC §1.5 "bone-shaped" scar)
-        let (ep, tp) = diag.slices.pockets[j];
+        let pk = &diag.slices.pockets;
+        let (ep, tp) = (
+            [pk[0][j], pk[1][j], pk[2][j]],
+            [pk[3][j], pk[4][j], pk[5][j]],
+        );
         let mut bar_q = 0.0;
         let mut bar_pw = 0.0;
-        for side in [-1.0, 1.0] {
+        let bar_dist_sq = diag.slices.bar_dist_sq.each_ref().map(|c| c[j]);
+        for (k, side) in [-1.0, 1.0].into_iter().enumerate() {
             let edge = axpy(axpy(cc, model.r_bar, ep), side * model.half_pocket, tp);
-            for &x in &model.bar_x {
-                let q = axpy(centre, x, a);
-                let d = perp(sub(q, edge), ac);
-                // no square root for the (many) points clear of the bar
-                let dist_sq = dot(d, d);
+            for (i, &x) in model.bar_x.iter().enumerate() {
+                // the (many) points clear of the bar were settled by the vector loop
+                let dist_sq = bar_dist_sq[2 * k + i];
                 if dist_sq >= model.rw * model.rw || dist_sq == 0.0 {
                     continue;
                 }
+                let q = axpy(centre, x, a);
+                let d = perp(sub(q, edge), ac);
                 let dist = dist_sq.sqrt();
                 let delta = model.rw - dist;
                 note(diag, "roller ↔ cage bar", j, delta, div_limit);
