@@ -139,6 +139,7 @@ pub(crate) struct AxialReach {
 }
 
 impl AxialReach {
+    #[inline]
     pub(crate) fn new(body: &BodyKin, end: &EndGeometry, c: V3, a: V3) -> Self {
         let cos_a = dot(a, body.axis);
         Self {
@@ -158,6 +159,59 @@ impl AxialReach {
             + end.half_length * self.cos_a
             + self.tilt
             + face.max_protrusion()
+    }
+}
+
+/// [`AxialReach`] of every roller on one body (struct of arrays), computed in one vector loop
+/// with the expressions of [`AxialReach::new`].
+#[derive(Debug, Clone)]
+pub(crate) struct ReachColumns {
+    zeta_c: Vec<f64>,
+    cos_a: Vec<f64>,
+    tilt: Vec<f64>,
+}
+
+impl ReachColumns {
+    /// Columns for `rollers` rollers.
+    pub(crate) fn new(rollers: usize) -> Self {
+        Self {
+            zeta_c: vec![0.0; rollers],
+            cos_a: vec![1.0; rollers],
+            tilt: vec![0.0; rollers],
+        }
+    }
+
+    /// The reach on `body` of the rollers with centres `centre` and unit axes `axis` (columns
+    /// x, y, z).
+    pub(crate) fn compute(
+        &mut self,
+        body: &BodyKin,
+        end: &EndGeometry,
+        centre: &[Vec<f64>; 3],
+        axis: &[Vec<f64>; 3],
+    ) {
+        let z = self.zeta_c.len();
+        let [cx, cy, cz] = centre.each_ref().map(|c| &c[..z]);
+        let [ax, ay, az] = axis.each_ref().map(|c| &c[..z]);
+        let (zeta_c, cos_a, tilt) = (
+            &mut self.zeta_c[..z],
+            &mut self.cos_a[..z],
+            &mut self.tilt[..z],
+        );
+        for j in 0..z {
+            let r = AxialReach::new(body, end, [cx[j], cy[j], cz[j]], [ax[j], ay[j], az[j]]);
+            (zeta_c[j], cos_a[j], tilt[j]) = (r.zeta_c, r.cos_a, r.tilt);
+        }
+    }
+
+    /// The reach of roller `j`.
+    #[inline]
+    pub(crate) fn get(&self, j: usize) -> AxialReach {
+        AxialReach {
+            zeta_c: self.zeta_c[j],
+            cos_a: self.cos_a[j],
+            tilt: self.tilt[j],
+        }
     }
 }
 

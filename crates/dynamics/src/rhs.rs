@@ -4,7 +4,7 @@
 //!
 //! Allocation-free: all scratch lives in [`Diagnostics`], allocated once.
 
-use crate::ends::{AxialReach, BodyKin, EndContactRegime, EndForce, EndLubrication, end_force};
+use crate::ends::{BodyKin, EndContactRegime, EndForce, EndLubrication, ReachColumns, end_force};
 use crate::kinematics::RollerKinematics;
 use crate::land::LandKinematics;
 use crate::layout::{CAGE_DOF, INNER_DOF, ROLLER_DOF};
@@ -156,6 +156,9 @@ struct RacewayScratch {
     /// per roller: squared distance of its bar points (pocket sides −, + × roller ends −, +)
     /// from the bar edges, measured in the cage plane
     bar_dist_sq: [Vec<f64>; 4],
+    /// per roller: the axial reach of its ends towards the faces of the inner ring, the outer
+    /// ring and the cage
+    reach: [ReachColumns; 3],
 }
 
 /// The contacts of one raceway in one evaluation (pass 1 of [`rhs`]): which rollers may touch
@@ -238,6 +241,7 @@ impl RacewayScratch {
             axis: [vec![0.0; z], vec![0.0; z], vec![1.0; z]],
             pockets: std::array::from_fn(|_| vec![0.0; z]),
             bar_dist_sq: std::array::from_fn(|_| vec![0.0; z]),
+            reach: std::array::from_fn(|_| ReachColumns::new(z)),
         }
     }
 
@@ -745,6 +749,21 @@ pub(crate) fn rhs(
         axis: ac,
         omega: wc,
     };
+    {
+        let sc = &mut diag.slices;
+        let [inner_reach, outer_reach, cage_reach] = &mut sc.reach;
+        let (centre, axis) = (&sc.centre, &sc.axis);
+        if model.params.roller_end_rib.enabled {
+            for ((body, _, faces, _), reach) in rib_rings.iter().zip([inner_reach, outer_reach]) {
+                if !faces.is_empty() {
+                    reach.compute(body, &ends.end, centre, axis);
+                }
+            }
+        }
+        if model.params.roller_end_cage.enabled {
+            cage_reach.compute(&cage_body, &ends.end, centre, axis);
+        }
+    }
 
     for j in 0..model.z {
         let b = lay.roller(j);
@@ -843,12 +862,12 @@ pub(crate) fn rhs(
             (0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
         let mut rib_regime = EndContactRegime::None;
         if model.params.roller_end_rib.enabled {
-            for (body, lub, faces, inner_ring) in &rib_rings {
+            for (k, (body, lub, faces, inner_ring)) in rib_rings.iter().enumerate() {
                 let inner_ring = *inner_ring;
                 if faces.is_empty() {
                     continue;
                 }
-                let reach = AxialReach::new(body, &ends.end, centre, a);
+                let reach = diag.slices.reach[k].get(j);
                 for face in faces.iter() {
                     if reach.bound(face, &ends.end) <= 0.0 {
                         continue;
@@ -896,7 +915,7 @@ pub(crate) fn rhs(
         }
         let (mut pocket_q, mut pocket_pw) = (0.0, 0.0);
         if model.params.roller_end_cage.enabled {
-            let reach = AxialReach::new(&cage_body, &ends.end, centre, a);
+            let reach = diag.slices.reach[2].get(j);
             for face in &ends.pocket {
                 if reach.bound(face, &ends.end) <= 0.0 {
                     continue;
