@@ -194,6 +194,8 @@ impl RacewayPass {
 struct LoadedContacts {
     batch: SliceBatch,
     blocks: Vec<LoadedBlock>,
+    /// the batch contact of each block
+    contacts: Vec<BatchContact>,
     /// every run of consecutive loaded slots, in batch order
     runs: Vec<LoadedRun>,
 }
@@ -202,11 +204,14 @@ struct LoadedContacts {
 #[derive(Debug, Clone)]
 struct LoadedBlock {
     roller: usize,
-    contact: BatchContact,
     /// its slices in the batch
     slices: std::ops::Range<usize>,
     /// its runs of consecutive loaded slots in [`LoadedContacts::runs`]
     runs: std::ops::Range<usize>,
+    /// total normal force, N; loaded length, m; Σ Q u, N·m/s
+    load: f64,
+    length: f64,
+    entrainment: f64,
 }
 
 impl LoadedContacts {
@@ -216,6 +221,7 @@ impl LoadedContacts {
         Self {
             batch,
             blocks: Vec::with_capacity(rollers),
+            contacts: Vec::with_capacity(rollers),
             runs: Vec::with_capacity(slots),
         }
     }
@@ -223,6 +229,7 @@ impl LoadedContacts {
     fn clear(&mut self) {
         self.batch.clear();
         self.blocks.clear();
+        self.contacts.clear();
         self.runs.clear();
     }
 }
@@ -421,9 +428,9 @@ fn raceway_kernel<const INNER: bool>(
     }
 }
 
-/// Pass 1c of roller `j` on one raceway: records its loaded slices for the traction pass
-/// ([`apply_traction`], which applies their normal and friction forces) and its total normal
-/// force in `table`.
+/// Pass 1c on one raceway: records the loaded slices of every roller for the traction pass
+/// ([`apply_traction`], which applies their normal and friction forces), one batch contact per
+/// loaded roller, and each roller's total normal force in `table`.
 ///
 /// The EHL film is prepared once for the whole roller–raceway contact (its total load over the
 /// loaded length and the load-weighted entrainment speed — the film of a line contact is set
@@ -435,69 +442,79 @@ fn raceway_kernel<const INNER: bool>(
 fn raceway_collect<const INNER: bool>(
     model: &Model,
     rs: &RacewaySlices,
-    j: usize,
     table: &mut ContactTable,
     pass: &mut RacewayPass,
     limit: f64,
     violation: &mut Option<Violation>,
     tables: Tables,
 ) {
-    table.reset(j, tables);
-    if !pass.may_touch[j] {
-        return;
-    }
     let loaded = &mut pass.loaded;
-    let first_run = loaded.runs.len();
-    let sums = pass.out.collect_loaded(
-        rs.lanes.slots(j),
-        &rs.lanes.len,
-        limit,
-        loaded.batch.len(),
-        &mut loaded.batch.columns_mut(0),
-        &mut loaded.runs,
-    );
-    if let (Some(penetration), None) = (sums.violation, &violation) {
-        *violation = Some(Violation {
-            what: if INNER {
-                "roller ↔ inner raceway"
-            } else {
-                "roller ↔ outer raceway"
-            },
-            index: j,
-            penetration,
+    // every roller's loaded slots into the batch's slice columns, one block per roller
+    let mut columns = loaded.batch.columns_mut(0);
+    let mut to = 0;
+    for j in 0..model.z {
+        table.reset(j, tables);
+        if !pass.may_touch[j] {
+            continue;
+        }
+        let first_run = loaded.runs.len();
+        let sums = pass.out.collect_loaded(
+            rs.lanes.slots(j),
+            &rs.lanes.len,
+            limit,
+            to,
+            &mut columns,
+            &mut loaded.runs,
+        );
+        if let (Some(penetration), None) = (sums.violation, &violation) {
+            *violation = Some(Violation {
+                what: if INNER {
+                    "roller ↔ inner raceway"
+                } else {
+                    "roller ↔ outer raceway"
+                },
+                index: j,
+                penetration,
+            });
+        }
+        if sums.slots.is_empty() {
+            continue;
+        }
+        to = sums.slots.end;
+        table.force[j] = sums.load;
+        loaded.blocks.push(LoadedBlock {
+            roller: j,
+            slices: sums.slots,
+            runs: first_run..loaded.runs.len(),
+            load: sums.load,
+            length: sums.length,
+            entrainment: sums.entrainment,
         });
     }
-    if sums.slots.is_empty() {
-        return;
-    }
-    let load = sums.load;
-    table.force[j] = load;
+    // then the contacts, in the order of their slices
     let tmodel = if INNER {
         &model.traction.inner
     } else {
         &model.traction.outer
     };
-    let whole = ContactState {
-        normal_force_n: load,
-        geometry: ContactGeometry::Line {
-            length_m: sums.length,
-        },
-        reduced_radius_m: rs.reduced_radius,
-        reduced_modulus_pa: rs.reduced_modulus,
-        rolling_speed_m_s: sums.entrainment / load,
-        sliding_speed_m_s: 0.0,
-        temperature_k: rs.temperature_k,
-        roughness_ra_m: rs.roughness,
-        film_thickness_m: None,
-    };
-    let contact = loaded.batch.add_contact(tmodel, &whole);
-    loaded.batch.claim(contact, sums.slots.len());
-    loaded.blocks.push(LoadedBlock {
-        roller: j,
-        contact,
-        slices: sums.slots,
-        runs: first_run..loaded.runs.len(),
-    });
+    for block in &loaded.blocks {
+        let whole = ContactState {
+            normal_force_n: block.load,
+            geometry: ContactGeometry::Line {
+                length_m: block.length,
+            },
+            reduced_radius_m: rs.reduced_radius,
+            reduced_modulus_pa: rs.reduced_modulus,
+            rolling_speed_m_s: block.entrainment / block.load,
+            sliding_speed_m_s: 0.0,
+            temperature_k: rs.temperature_k,
+            roughness_ra_m: rs.roughness,
+            film_thickness_m: None,
+        };
+        let contact = loaded.batch.add_contact(tmodel, &whole);
+        loaded.batch.claim(contact, block.slices.len());
+        loaded.contacts.push(contact);
+    }
 }
 
 /// The `n` entries of `column` from `first` on (a slice of length `n`, so that a loop over
@@ -550,9 +567,9 @@ fn apply_traction(model: &Model, diag: &mut Diagnostics, f_inner: &mut V3, table
         if tables == Tables::Skip {
             continue;
         }
-        for block in &loaded.blocks {
+        for (block, &contact) in loaded.blocks.iter().zip(&loaded.contacts) {
             let j = block.roller;
-            let (_, film_minimum, lambda) = batch.film(block.contact);
+            let (_, film_minimum, lambda) = batch.film(contact);
             for i in block.slices.clone() {
                 let q = batch.normal_force(i);
                 let mu = batch.coefficient(i);
@@ -957,29 +974,24 @@ pub(crate) fn rhs(
     let sc = &mut diag.slices;
     raceway_kernel::<true>(model, &model.inner, &inner, &sc.rollers, &mut sc.inner);
     raceway_kernel::<false>(model, &model.outer, &outer, &sc.rollers, &mut sc.outer);
-    for j in 0..model.z {
-        let sc = &mut diag.slices;
-        raceway_collect::<true>(
-            model,
-            &model.inner,
-            j,
-            &mut diag.inner,
-            &mut sc.inner,
-            div_limit,
-            &mut diag.violation,
-            tables,
-        );
-        raceway_collect::<false>(
-            model,
-            &model.outer,
-            j,
-            &mut diag.outer,
-            &mut sc.outer,
-            div_limit,
-            &mut diag.violation,
-            tables,
-        );
-    }
+    raceway_collect::<true>(
+        model,
+        &model.inner,
+        &mut diag.inner,
+        &mut sc.inner,
+        div_limit,
+        &mut diag.violation,
+        tables,
+    );
+    raceway_collect::<false>(
+        model,
+        &model.outer,
+        &mut diag.outer,
+        &mut sc.outer,
+        div_limit,
+        &mut diag.violation,
+        tables,
+    );
 
     // raceway traction of all rollers, then Newton–Euler in cylindrical coordinates (seed 000
     // (2.1)) and L̇ = M ((2.2) in the inertial frame: the gyroscopic term is contained in
