@@ -6,10 +6,11 @@
 //! `s` of roller `j`, [`SliceConstants::slots`]), so that one loop runs over the slices of many
 //! rollers and no vector lane is spent on padding between rollers. The roller kinematics are
 //! repeated over the roller's slots ([`RollerLanes::set`], once for both raceways); the ring's
-//! are common ([`RingKinematics`]). [`evaluate`] writes one record per slot into [`SliceOutputs`] (struct of
-//! arrays); slices that do not touch carry `q = 0`. The caller sums the forces and collects the
-//! loaded slices of each roller in slice order ([`SliceOutputs::collect_loaded`], used by
-//! [`crate::rhs`]), so the sums are the same as those of a slice-by-slice loop.
+//! are common ([`RingKinematics`]). [`evaluate`] writes one record per slot into
+//! [`SliceOutputs`] (struct of arrays); slices that do not touch carry `q = 0`. The caller
+//! collects the loaded slices of each roller in slice order into the traction batch
+//! ([`SliceOutputs::collect_loaded`], used by [`crate::rhs`]) and later sums each slice's normal
+//! and friction force in that order.
 //! On x86-64 the loop is also compiled for AVX2 (four lanes) and AVX-512F (eight lanes) and the
 //! widest copy the CPU supports is chosen at run time; all versions give the same bits (no
 //! fused multiply–add: Rust never contracts on its own, and `rolldyn_numerics::fastmath` is
