@@ -311,6 +311,15 @@ struct RingKin {
     raceway_radius: f64,
 }
 
+/// Offset of the bar point `q` of a roller from the edge line of its pocket's bar on `side`
+/// (±1), perpendicular to the cage axis `ac`: the edge runs along the cage axis at the bar
+/// contact radius from the cage centre `cc`, in the pocket frame `(e_p, t_p)`.
+#[inline]
+fn bar_offset(model: &Model, cc: V3, ac: V3, (ep, tp): (V3, V3), side: f64, q: V3) -> V3 {
+    let edge = axpy(axpy(cc, model.r_bar, ep), side * model.half_pocket, tp);
+    perp(sub(q, edge), ac)
+}
+
 #[inline]
 fn note(diag: &mut Diagnostics, what: &'static str, index: usize, penetration: f64, limit: f64) {
     if penetration > limit && diag.violation.is_none() {
@@ -720,8 +729,7 @@ pub(crate) fn rhs(
             let (ep, tp) = ([ex[j], ey[j], ez[j]], [tx[j], ty[j], tz[j]]);
             let (centre, a) = ([cx[j], cy[j], cz[j]], [ax[j], ay[j], az[j]]);
             let dist_sq = |side: f64, x: f64| {
-                let edge = axpy(axpy(cc, model.r_bar, ep), side * model.half_pocket, tp);
-                let d = perp(sub(axpy(centre, x, a), edge), ac);
+                let d = bar_offset(model, cc, ac, (ep, tp), side, axpy(centre, x, a));
                 dot(d, d)
             };
             let [x0, x1] = model.bar_x;
@@ -828,7 +836,6 @@ pub(crate) fn rhs(
         let mut bar_pw = 0.0;
         let bar_dist_sq = diag.slices.bar_dist_sq.each_ref().map(|c| c[j]);
         for (k, side) in [-1.0, 1.0].into_iter().enumerate() {
-            let edge = axpy(axpy(cc, model.r_bar, ep), side * model.half_pocket, tp);
             for (i, &x) in model.bar_x.iter().enumerate() {
                 // the (many) points clear of the bar were settled by the vector loop
                 let dist_sq = bar_dist_sq[2 * k + i];
@@ -836,7 +843,7 @@ pub(crate) fn rhs(
                     continue;
                 }
                 let q = axpy(centre, x, a);
-                let d = perp(sub(q, edge), ac);
+                let d = bar_offset(model, cc, ac, (ep, tp), side, q);
                 let dist = dist_sq.sqrt();
                 let delta = model.rw - dist;
                 note(diag, "roller ↔ cage bar", j, delta, div_limit);
