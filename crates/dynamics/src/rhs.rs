@@ -835,7 +835,7 @@ pub(crate) fn rhs(
         let mut bar_q = 0.0;
         let mut bar_pw = 0.0;
         let bar_dist_sq = diag.slices.bar_dist_sq.each_ref().map(|c| c[j]);
-        for (k, side) in [-1.0, 1.0].into_iter().enumerate() {
+        for (k, &side) in [-1.0, 1.0].iter().enumerate() {
             for (i, &x) in model.bar_x.iter().enumerate() {
                 // the (many) points clear of the bar were settled by the vector loop
                 let dist_sq = bar_dist_sq[2 * k + i];

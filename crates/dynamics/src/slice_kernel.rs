@@ -43,8 +43,9 @@ pub(crate) struct SliceConstants {
     pub k: Vec<f64>,
     /// full damping `C_max` of the slice, N·s/m
     pub c_max: Vec<f64>,
-    /// approach `δ*` at which the damping reaches `C_max`, m
-    pub delta_star: Vec<f64>,
+    /// 1/δ* of the approach `δ*` at which the damping reaches `C_max`, 1/m (the slot loop
+    /// multiplies instead of dividing)
+    pub inv_delta_star: Vec<f64>,
     /// slice length, m
     pub len: Vec<f64>,
 }
@@ -67,7 +68,7 @@ impl SliceConstants {
             out
         };
         let c_max: Vec<f64> = damping.iter().map(|d| d.c_max).collect();
-        let delta_star: Vec<f64> = damping.iter().map(|d| d.delta_star).collect();
+        let inv_delta_star: Vec<f64> = damping.iter().map(|d| 1.0 / d.delta_star).collect();
         debug_assert!(damping.iter().all(|d| d.uses_velocity));
         Self {
             slices: x.len(),
@@ -75,7 +76,7 @@ impl SliceConstants {
             drop: repeat(drop, f64::INFINITY),
             k: repeat(k, 0.0),
             c_max: repeat(&c_max, 0.0),
-            delta_star: repeat(&delta_star, 1.0),
+            inv_delta_star: repeat(&inv_delta_star, 1.0),
             len: repeat(len, 0.0),
         }
     }
@@ -135,31 +136,32 @@ impl RollerLanes {
     /// next roller's values replace those.
     pub fn set(&mut self, slots: Range<usize>, k: &RollerKinematics) {
         let vectors = slots.len().div_ceil(LANES);
-        let r = slots.start..slots.start + vectors * LANES;
-        let mut columns = self.columns.each_mut().map(|c| &mut c[r.clone()]);
         let values = lane_values(k);
+        let columns = &mut self.columns;
         // a fixed number of stores per column for the common roller lengths (up to 24 slices)
         match vectors {
-            1 => fill_columns::<1>(&mut columns, &values),
-            2 => fill_columns::<2>(&mut columns, &values),
-            3 => fill_columns::<3>(&mut columns, &values),
-            _ => fill_columns::<0>(&mut columns, &values),
+            1 => fill_columns::<1>(columns, slots.start, vectors, &values),
+            2 => fill_columns::<2>(columns, slots.start, vectors, &values),
+            3 => fill_columns::<3>(columns, slots.start, vectors, &values),
+            _ => fill_columns::<0>(columns, slots.start, vectors, &values),
         }
     }
 }
 
 rolldyn_numerics::avx2_twin! {
-    /// Writes `values[i]` into every slot of `columns[i]` (each a whole number of [`LANES`]
-    /// long; `VECTORS` of them, or any number for `VECTORS = 0`): one vector store per
-    /// [`LANES`] slots in the AVX-512F copy.
+    /// Writes `values[i]` into `vectors` whole vectors of [`LANES`] slots of `columns[i]` from
+    /// slot `start` on (`VECTORS` of them when it is not 0): one vector store per [`LANES`]
+    /// slots in the AVX-512F copy.
     fn fill_columns<const VECTORS: usize>(
-        columns: &mut [&mut [f64]; ROLLER_COLUMNS],
+        columns: &mut [Vec<f64>; ROLLER_COLUMNS],
+        start: usize,
+        vectors: usize,
         values: &[f64; ROLLER_COLUMNS],
     ) = fill_columns_portable / fill_columns_avx2 / fill_columns_avx512 {
+        let vectors = if VECTORS > 0 { VECTORS } else { vectors };
         for (column, &value) in columns.iter_mut().zip(values) {
-            let (chunks, _) = column.as_chunks_mut::<LANES>();
-            let chunks = if VECTORS > 0 { &mut chunks[..VECTORS] } else { chunks };
-            for chunk in chunks {
+            let slots = &mut column[start..start + vectors * LANES];
+            for chunk in slots.as_chunks_mut::<LANES>().0 {
                 *chunk = [value; LANES];
             }
         }
@@ -299,7 +301,7 @@ struct SlotInputs<'a> {
     drop: &'a [f64],
     stiff: &'a [f64],
     c_max: &'a [f64],
-    delta_star: &'a [f64],
+    inv_delta_star: &'a [f64],
     race_drop: &'a [f64],
     /// the columns of [`RollerLanes`]
     roller: [&'a [f64]; ROLLER_COLUMNS],
@@ -328,7 +330,7 @@ fn evaluate_with<'a, const INNER: bool>(
         drop: cut(&sc.drop),
         stiff: cut(&sc.k),
         c_max: cut(&sc.c_max),
-        delta_star: cut(&sc.delta_star),
+        inv_delta_star: cut(&sc.inv_delta_star),
         race_drop: cut(race_drop),
         roller: rollers.columns.each_ref().map(|c| cut(c)),
     };
@@ -395,12 +397,12 @@ rolldyn_numerics::avx2_twin! {
     ) / slots_avx2 / slots_avx512 {
         // equal lengths, known to the compiler: no bounds checks in the loop
         let n = inputs.x.len();
-        let (x, drop, stiff, c_max, delta_star, race_drop) = (
+        let (x, drop, stiff, c_max, inv_delta_star, race_drop) = (
             &inputs.x[..n],
             &inputs.drop[..n],
             &inputs.stiff[..n],
             &inputs.c_max[..n],
-            &inputs.delta_star[..n],
+            &inputs.inv_delta_star[..n],
             &inputs.race_drop[..n],
         );
         let [cx, cy, cz, ax, ay, az, vx, vy, vz, wx, wy, wz, orbit] = inputs.roller.map(|c| &c[..n]);
@@ -443,13 +445,13 @@ rolldyn_numerics::avx2_twin! {
             let v_normal = dot(vrel, n);
             let delta_dot = -v_normal;
             // slice law k_s δⁿ (exp(n ln δ)); the damping ramp STEP(δ, 0, 0, δ*, C_max) of
-            // rolldyn_contact::damping with Δ = δ/δ* clamped to [0, 1]
+            // rolldyn_contact::damping with Δ = δ·(1/δ*) clamped to [0, 1]
             let elastic = if touching {
                 stiff[s] * fastmath::exp(ring.exponent * fastmath::ln(delta))
             } else {
                 0.0
             };
-            let ramp = (delta / delta_star[s]).clamp(0.0, 1.0);
+            let ramp = (delta * inv_delta_star[s]).clamp(0.0, 1.0);
             let damping = c_max[s] * ramp * ramp * (3.0 - 2.0 * ramp);
             let pressing = elastic + damping * delta_dot;
             let q = if touching && pressing > 0.0 {
@@ -574,7 +576,7 @@ mod tests {
             scale(cross(g.ring_axis, sub(cp, g.ring_o)), g.ring_spin),
         );
         let vrel = sub(v_roll, v_ring);
-        let damping = SliceDamping::new(sc.c_max[s], sc.delta_star[s]);
+        let damping = SliceDamping::new(sc.c_max[s], 1.0 / sc.inv_delta_star[s]);
         let q = if delta > 0.0 {
             damping.normal_force(sc.k[s] * delta.powf(g.exponent), delta, -dot(vrel, n))
         } else {

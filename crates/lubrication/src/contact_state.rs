@@ -77,23 +77,27 @@ impl ContactState {
         self.sliding_speed_m_s / self.rolling_speed_m_s.abs().max(u_min)
     }
 
-    /// Hertz quantities of this state and its [`SlicePressure`] (for a line contact both from
-    /// one evaluation of (2.15)–(2.16), the same as a traction batch's).
+    /// Hertz quantities of this state, its [`SlicePressure`] and 1/`rolling_speed` (> 0; for
+    /// a line contact all from one evaluation of (2.15)–(2.16), the same as a traction batch's).
     #[inline]
-    pub fn hertz_and_pressure(&self) -> (HertzContact, SlicePressure) {
+    pub(crate) fn hertz_and_pressure(
+        &self,
+        rolling_speed: f64,
+    ) -> (HertzContact, SlicePressure, f64) {
         match self.geometry {
             ContactGeometry::Line { length_m } => {
-                let sp = SlicePressure::line(
+                let (sp, inv_speed) = SlicePressure::line_with_speed(
                     self.normal_force_n.max(0.0),
                     length_m,
-                    self.reduced_modulus_pa,
-                    self.reduced_radius_m,
+                    line_stiffness(self.reduced_modulus_pa, self.reduced_radius_m),
+                    rolling_speed,
                 );
-                (HertzContact::line(&sp, length_m), sp)
+                (HertzContact::line(&sp, length_m), sp, inv_speed)
             }
             _ => {
                 let hz = self.hertz();
-                (hz, SlicePressure::of(hz.mean_pressure_pa, hz.half_width_m))
+                let sp = SlicePressure::of(hz.mean_pressure_pa, hz.half_width_m);
+                (hz, sp, 1.0 / rolling_speed)
             }
         }
     }
@@ -158,24 +162,27 @@ pub struct SlicePressure {
 
 impl SlicePressure {
     /// Line contact of load `q` (N) over the length `l` (m) with R' = `r`, E' = `e`:
-    /// [`SlicePressure::line_with`] and [`line_stiffness`].
+    /// [`SlicePressure::line_with_speed`] and [`line_stiffness`].
     #[inline(always)]
     pub fn line(q: f64, l: f64, e: f64, r: f64) -> Self {
-        Self::line_with(q, l, line_stiffness(e, r))
+        Self::line_with_speed(q, l, line_stiffness(e, r), 1.0).0
     }
 
-    /// Line contact with `k` = [`line_stiffness`] (a per-contact constant): with the load per
-    /// length w = Q/l and s = √(k w), p̄ = s/4 is (2.15) and b = 2w/s the load balance
-    /// `Q = 2 b l p̄`, which is (2.16) b = 2 √(2 Q R' / (π l E')). One square root and two
-    /// divisions give all four values (1/s and 1/w from one reciprocal of w s). Without load
-    /// all four are 0.
+    /// Line contact with `k` = [`line_stiffness`] (a per-contact constant), and 1/u of a
+    /// rolling speed `u` > 0: with the load per length w = Q/l and s = √(k w), p̄ = s/4 is
+    /// (2.15) and b = 2w/s the load balance `Q = 2 b l p̄`, which is (2.16)
+    /// b = 2 √(2 Q R' / (π l E')). One square root and two divisions give all five values
+    /// (1/s, 1/w and 1/u from one reciprocal of w s u). Without load the four pressure values
+    /// are 0 and 1/u is meaningless (a caller gives such a slice no traction).
     #[inline(always)]
-    pub fn line_with(q: f64, l: f64, k: f64) -> Self {
+    pub fn line_with_speed(q: f64, l: f64, k: f64, u: f64) -> (Self, f64) {
         let w = q / l;
         let s = (k * w).sqrt();
-        let t = 1.0 / (w * s);
-        let (inv_s, inv_w) = (w * t, s * t);
-        if w > 0.0 {
+        let ws = w * s;
+        let t = 1.0 / (ws * u);
+        let inv_ws = t * u;
+        let (inv_s, inv_w) = (w * inv_ws, s * inv_ws);
+        let pressure = if w > 0.0 {
             Self {
                 mean_pa: 0.25 * s,
                 half_width_m: 2.0 * w * inv_s,
@@ -184,7 +191,8 @@ impl SlicePressure {
             }
         } else {
             Self::UNLOADED
-        }
+        };
+        (pressure, ws * t)
     }
 
     /// Any contact from its p̄ and b (one division each).

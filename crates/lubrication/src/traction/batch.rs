@@ -47,6 +47,8 @@ struct Contact {
 pub struct SliceBatch {
     contacts: Vec<Contact>,
     contact_of: Vec<usize>,
+    /// runs of consecutive slices of one contact: (contact, first slice), in slice order
+    contact_runs: Vec<(usize, usize)>,
     normal_force_n: Vec<f64>,
     length_m: Vec<f64>,
     rolling_speed_m_s: Vec<f64>,
@@ -62,6 +64,7 @@ impl SliceBatch {
         Self {
             contacts: Vec::with_capacity(slices),
             contact_of: Vec::with_capacity(slices),
+            contact_runs: Vec::with_capacity(slices),
             normal_force_n: Vec::with_capacity(slices),
             length_m: Vec::with_capacity(slices),
             rolling_speed_m_s: Vec::with_capacity(slices),
@@ -76,6 +79,7 @@ impl SliceBatch {
     pub fn clear(&mut self) {
         self.contacts.clear();
         self.contact_of.clear();
+        self.contact_runs.clear();
         self.films.clear();
     }
 
@@ -216,6 +220,14 @@ impl SliceBatch {
             self.normal_force_n.len()
         );
         self.contact_of.resize(first + n, contact.0);
+        if n > 0
+            && self
+                .contact_runs
+                .last()
+                .is_none_or(|&(c, _)| c != contact.0)
+        {
+            self.contact_runs.push((contact.0, first));
+        }
         first
     }
 
@@ -303,7 +315,8 @@ impl SliceBatch {
             }
             return;
         };
-        self.lanes.gather(lf, &self.contacts, &self.contact_of);
+        self.lanes
+            .gather(lf, &self.contacts, &self.contact_runs, self.len());
         let slices = Slices {
             lanes: &self.lanes,
             normal_force_n: &self.normal_force_n,
@@ -495,7 +508,15 @@ fn lane_row(line_stiffness: f64, ct: &ContactTraction) -> [f64; LANE_COLUMNS] {
 }
 
 impl ContactLanes {
-    fn gather(&mut self, lf: &LubricatedFriction, contacts: &[Contact], contact_of: &[usize]) {
+    /// Fills the columns for the `n` slices of `contacts`, whose runs of consecutive slices
+    /// are `runs` ((contact, first slice), in slice order).
+    fn gather(
+        &mut self,
+        lf: &LubricatedFriction,
+        contacts: &[Contact],
+        runs: &[(usize, usize)],
+        n: usize,
+    ) {
         self.rows.clear();
         self.rows.extend(contacts.iter().map(|c| {
             let stiffness = line_stiffness(c.reduced_modulus_pa, c.reduced_radius_m);
@@ -521,7 +542,6 @@ impl ContactLanes {
                     && a.reduced_modulus_pa.to_bits() == b.reduced_modulus_pa.to_bits()
             })
         });
-        let n = contact_of.len();
         let room = n + FILL_WIDTH;
         self.prepared.clear();
         self.prepared.resize(room, false);
@@ -543,12 +563,9 @@ impl ContactLanes {
                 (None, _) => *kept = None,
             }
         }
-        // the slices of a contact are consecutive (`push_block`): its values are copied in
-        // whole groups of FILL_WIDTH slices, contact after contact
-        let mut start = 0;
-        while start < n {
-            let k = contact_of[start];
-            let end = start + contact_of[start..].iter().take_while(|&&c| c == k).count();
+        // a run's values are copied in whole groups of FILL_WIDTH slices, run after run
+        for (r, &(k, start)) in runs.iter().enumerate() {
+            let end = runs.get(r + 1).map_or(n, |&(_, next)| next);
             let groups = start..start + (end - start).div_ceil(FILL_WIDTH) * FILL_WIDTH;
             let row = &self.rows[k];
             for group in self.prepared[groups.clone()]
@@ -564,7 +581,6 @@ impl ContactLanes {
                     }
                 }
             }
-            start = end;
         }
     }
 }
@@ -661,10 +677,12 @@ fn evaluate_lubricated(
         let q = normal_force_n[i];
         let v = sliding[i];
         let u_eff = rolling[i].abs().max(cfg.min_rolling_speed_m_s);
+        let (pressure, inv_rolling_speed) =
+            SlicePressure::line_with_speed(q, length_m[i], stiffness[i], u_eff);
         let slice = MurakiSlice {
-            pressure: SlicePressure::line_with(q, length_m[i], stiffness[i]),
+            pressure,
             rolling_speed: u_eff,
-            inv_rolling_speed: 1.0 / u_eff,
+            inv_rolling_speed,
             sliding_speed: v.abs(),
         };
         let parts = lubricated_coefficient(lf, oil, &contact, &slice);

@@ -672,7 +672,7 @@ impl TractionModel {
             return Traction::default();
         };
         let sign = cfg.sliding_sign(v);
-        let (hz, pressure) = state.hertz_and_pressure();
+        let (hz, pressure, inv_rolling_speed) = state.hertz_and_pressure(u_eff);
         let (hc, hm, lambda) = (prep.film_central_m, prep.film_minimum_m, prep.lambda);
         let LubricatedParts {
             mu_hd,
@@ -687,7 +687,7 @@ impl TractionModel {
             &MurakiSlice {
                 pressure,
                 rolling_speed: u_eff,
-                inv_rolling_speed: 1.0 / u_eff,
+                inv_rolling_speed,
                 sliding_speed: v.abs(),
             },
         );

@@ -177,9 +177,10 @@ fn stress_of_products(
     }
     match mode {
         SmallShearRate::Asinh => {
-            // sinh⁻¹σ = ln(1 + σ + σ²/(1 + √(1 + σ²))) (cheaper than std's hypot-based asinh,
-            // no cancellation for small σ)
-            let l = fastmath::ln_1p(sigma + sigma * sigma / (1.0 + (1.0 + sigma * sigma).sqrt()));
+            // sinh⁻¹σ = ln(σ + √(1 + σ²)): no division (the ln_1p form needs two), accurate
+            // to ≈ 1e-16 absolute, which is all S needs: for small σ, S ≈ sinh⁻¹σ/(…) and
+            // μ = τ0 S/p̄, so μ's absolute error stays ≈ 1e-16·τ0/p̄
+            let l = fastmath::ln(sigma + (1.0 + sigma * sigma).sqrt());
             let elastic = d * l >= 2.0 * sigma;
             // both branches share one square root and one division (a vectorised caller
             // evaluates both): the elastic branch 2σ/(D(1 + √(1 + Φ²σ²))), the thermal one
