@@ -1,4 +1,4 @@
-//! Branch-free `exp`, `ln`, `ln_1p` and `sin_cos` (and a fast `cbrt`) for the hot loops of the
+//! Branch-free `exp`, `ln` and `sin_cos` (and a fast `cbrt`) for the hot loops of the
 //! contact and traction kernels and the roller frames.
 //!
 //! The platform `libm` functions are calls the compiler cannot inline or vectorise. These are
@@ -7,9 +7,8 @@
 //! on every x86-64 machine: no fused multiply–add is used, so the result does not depend on the
 //! instruction set.
 //!
-//! Accuracy (tested against `std` over the whole working range): `exp` ≤ 1 ulp, `ln` ≤ 1 ulp,
-//! `ln_1p` ≤ 2 ulp. Range reduction and polynomials follow fdlibm (`e_exp.c`, `e_log.c`,
-//! Sun Microsystems 1993): `exp` reduces by k·ln 2 (split into a high and low part) to
+//! Accuracy (tested against `std` over the whole working range): `exp` ≤ 1 ulp, `ln` ≤ 1 ulp.
+//! Range reduction and polynomials follow fdlibm (`e_exp.c`, `e_log.c`, Sun Microsystems 1993): `exp` reduces by k·ln 2 (split into a high and low part) to
 //! |r| ≤ ½ ln 2 and sums the Taylor series to r¹³ (truncation < 10⁻¹⁷) in Estrin's scheme; `ln` reduces to
 //! m ∈ [√½, √2) and uses fdlibm's minimax polynomial in s = (m−1)/(m+1) (error < 2⁻⁵⁸·⁴⁵).
 //!
@@ -107,16 +106,6 @@ pub fn ln(x: f64) -> f64 {
     } else {
         f64::NAN
     }
-}
-
-/// ln(1 + x) for x > −1, accurate for small x: ln u + (x − (u − 1))/u with u = 1 + x
-/// (Goldberg, "What every computer scientist should know about floating-point arithmetic",
-/// Theorem 4: the correction restores the part of x lost in forming u).
-#[inline(always)]
-pub fn ln_1p(x: f64) -> f64 {
-    let u = 1.0 + x;
-    let correction = if u == 1.0 { x } else { (x - (u - 1.0)) / u };
-    ln(u) + correction
 }
 
 /// ∛x, ≤ 1 ulp (FreeBSD `s_cbrt.c`, B. Evans 2005, after fdlibm): a 5-bit estimate from the
@@ -363,18 +352,5 @@ mod tests {
         assert_eq!(cbrt(f64::INFINITY), f64::INFINITY);
         assert_eq!(cbrt(f64::NEG_INFINITY), f64::NEG_INFINITY);
         assert!(cbrt(f64::NAN).is_nan());
-    }
-
-    #[test]
-    fn ln_1p_within_two_ulp() {
-        let mut worst = 0;
-        for u in uniform(400_000) {
-            let x = (-60.0 + 70.0 * u).exp();
-            worst = worst.max(ulps(ln_1p(x), x.ln_1p()));
-            worst = worst.max(ulps(ln_1p(-0.5 * x.min(1.0)), (-0.5 * x.min(1.0)).ln_1p()));
-        }
-        assert!(worst <= 2, "worst {worst} ulp");
-        assert_eq!(ln_1p(0.0), 0.0);
-        assert_eq!(ln_1p(1e-300), 1e-300);
     }
 }

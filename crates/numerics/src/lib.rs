@@ -5,7 +5,7 @@
 //!   system of two nonlinear equations.
 //! * [`root1d`]: safeguarded Newton (bracket search, Newton/secant steps, bisection) for one
 //!   equation in one unknown.
-//! * [`fastmath`]: branch-free, vectorisable `exp`, `ln`, `ln_1p` for hot loops.
+//! * [`fastmath`]: branch-free, vectorisable `exp`, `ln`, `sin_cos` for hot loops.
 //! * [`avx2_twin!`]: a hot loop and its AVX2 (and optionally AVX-512F) copies from one
 //!   parameter list; [`avx2::LoopCopy`] for callers that dispatch themselves.
 

@@ -177,7 +177,7 @@ fn stress_of_products(
     }
     match mode {
         SmallShearRate::Asinh => {
-            // sinh⁻¹σ = ln(σ + √(1 + σ²)): no division (the ln_1p form needs two), accurate
+            // sinh⁻¹σ = ln(σ + √(1 + σ²)): no division (a ln(1 + x) form needs two), accurate
             // to ≈ 1e-16 absolute, which is all S needs: for small σ, S ≈ sinh⁻¹σ/(…) and
             // μ = τ0 S/p̄, so μ's absolute error stays ≈ 1e-16·τ0/p̄
             let l = fastmath::ln(sigma + (1.0 + sigma * sigma).sqrt());
