@@ -39,6 +39,8 @@ enum Command {
     Simulate(commands::simulate::Args),
     /// Run a table of model variants in parallel (any model key can vary).
     Sweep(commands::sweep::Args),
+    /// Dynamics speed benchmark: simulated time / wall time on one thread, repeated runs.
+    Bench(commands::bench::Args),
     /// Engine start-up: dynamics at the frozen time points of the model's schedules.
     Startup(commands::startup::Args),
     /// Re-run a seed's validation study and write its tables and plots.
@@ -71,6 +73,7 @@ fn main() -> ExitCode {
         Command::Contact(args) => commands::contact::run(args),
         Command::Study(args) => commands::study::run(args),
         Command::Sweep(args) => commands::sweep::run(args),
+        Command::Bench(args) => commands::bench::run(args),
         Command::Startup(args) => commands::startup::run(args),
         Command::Simulate(args) => commands::simulate::run(args),
         Command::Skid(args) => commands::skid::run(args),

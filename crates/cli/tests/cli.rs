@@ -308,6 +308,37 @@ fn skid_point_and_sweep() {
 }
 
 #[test]
+fn bench_reports_each_run_and_identical_results() {
+    let v = json(&rolldyn(&[
+        "bench",
+        "--duration",
+        "0.5ms",
+        "--repeat",
+        "2",
+        "--json",
+    ]));
+    let runs = v["runs"].as_array().unwrap();
+    assert_eq!(runs.len(), 2);
+    for run in runs {
+        for key in [
+            "setup_s",
+            "integration_s",
+            "simulated_over_wall",
+            "simulated_over_wall_with_setup",
+            "rhs_evaluations",
+            "us_per_rhs",
+        ] {
+            assert!(run[key].is_number(), "{key} in bench JSON");
+        }
+    }
+    assert_eq!(runs[0]["rhs_evaluations"], runs[1]["rhs_evaluations"]);
+    assert_eq!(v["deterministic"], true);
+    assert!(v["median_simulated_over_wall"].as_f64().unwrap() > 0.0);
+    let out = rolldyn(&["bench", "--repeat", "0"]);
+    assert_eq!(out.status.code(), Some(2));
+}
+
+#[test]
 fn simulate_short_run_writes_series_and_json() {
     let dir = std::env::temp_dir().join(format!("rolldyn-sim-{}", std::process::id()));
     let out = rolldyn(&[

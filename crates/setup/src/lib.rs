@@ -1,7 +1,10 @@
 //! From a model file to a dynamics run (SPEC §3.7–3.8): the operating conditions of the
 //! `[operating]` section with its schedules, loads and frozen points, the contact parameters of
 //! `[dynamics]` (SPEC Table 2.1), and a [`Simulation`] started at the quasi-static cage speed
-//! with the hydrodynamic cage land. Shared by `rolldyn simulate`, `sweep`, `startup` and `demo`.
+//! with the hydrodynamic cage land. Shared by `rolldyn simulate`, `sweep`, `startup` and `demo`;
+//! [`speed`] times such runs for `rolldyn bench`.
+
+pub mod speed;
 
 use rolldyn_dynamics::conditions::{ContactTemperatures, InnerRingLoad, OperatingConditions};
 use rolldyn_dynamics::parameters::ContactParameters;
