@@ -369,6 +369,16 @@ fn simulate_short_run_writes_series_and_json() {
     }
     // The integrator may finish its last step up to one step (a few µs) past the end time.
     assert!((v["simulated_time_s"].as_f64().unwrap() - 1e-3).abs() < 1e-5);
+    let limits = v["step_limited_by"].as_array().unwrap();
+    assert!(!limits.is_empty() && limits.len() <= 3);
+    assert!(
+        limits[0]["component"]
+            .as_str()
+            .unwrap()
+            .starts_with("roller ")
+    );
+    let shares: f64 = limits.iter().map(|l| l["share"].as_f64().unwrap()).sum();
+    assert!(shares > 0.0 && shares <= 1.0 + 1e-12);
     for file in [
         "bearing.csv",
         "bearing.parquet",

@@ -6,7 +6,6 @@
 
 use rolldyn_dynamics::*;
 use rolldyn_lubrication::{TractionModel, lubricant_by_name};
-use std::collections::BTreeMap;
 
 fn main() {
     let method = |a: &str| match a {
@@ -62,19 +61,7 @@ fn main() {
         wall / stats.rhs_evaluations as f64 * 1e6,
         duration / stats.accepted as f64 * 1e6
     );
-    let layout = sim.layout();
-    let mut by_name: BTreeMap<String, u64> = BTreeMap::new();
-    for (i, &c) in stats.limiting.iter().enumerate() {
-        let name = layout.describe(i);
-        // "roller 7 radius r" → "roller radius r"
-        let key = match name.strip_prefix("roller ") {
-            Some(rest) => format!("roller {}", rest.split_once(' ').map_or(rest, |(_, r)| r)),
-            None => name,
-        };
-        *by_name.entry(key).or_default() += c;
-    }
-    let mut v: Vec<_> = by_name.into_iter().collect();
-    v.sort_by_key(|(_, c)| std::cmp::Reverse(*c));
+    let v = sim.step_limits();
     for (name, c) in v.iter().take(12) {
         println!("{c:8}  {name}");
     }

@@ -18,6 +18,47 @@ pub struct Layout {
     pub rollers: usize,
 }
 
+/// Names of a roller's state components, in layout order.
+const R: [&str; ROLLER_DOF] = [
+    "azimuth θ",
+    "radius r",
+    "axial position z",
+    "axis a_x",
+    "axis a_y",
+    "axis a_z",
+    "orbital speed θ̇",
+    "radial velocity ṙ",
+    "axial velocity ż",
+    "angular momentum L_x",
+    "angular momentum L_y",
+    "angular momentum L_z (spin)",
+];
+/// Names of the cage's state components.
+const C: [&str; CAGE_DOF] = [
+    "centre x",
+    "centre y",
+    "centre z",
+    "angle φ",
+    "axis a_x",
+    "axis a_y",
+    "axis a_z",
+    "velocity v_x",
+    "velocity v_y",
+    "velocity v_z",
+    "angular momentum L_x",
+    "angular momentum L_y",
+    "angular momentum L_z (spin)",
+];
+/// Names of the inner ring's state components.
+const I: [&str; INNER_DOF] = [
+    "centre x",
+    "centre y",
+    "centre z",
+    "velocity v_x",
+    "velocity v_y",
+    "velocity v_z",
+];
+
 impl Layout {
     /// Length of the state vector.
     pub fn len(&self) -> usize {
@@ -45,51 +86,41 @@ impl Layout {
 
     /// Human-readable name of state component `i` (diagnoses).
     pub fn describe(&self, i: usize) -> String {
-        const R: [&str; ROLLER_DOF] = [
-            "azimuth θ",
-            "radius r",
-            "axial position z",
-            "axis a_x",
-            "axis a_y",
-            "axis a_z",
-            "orbital speed θ̇",
-            "radial velocity ṙ",
-            "axial velocity ż",
-            "angular momentum L_x",
-            "angular momentum L_y",
-            "angular momentum L_z (spin)",
-        ];
-        const C: [&str; CAGE_DOF] = [
-            "centre x",
-            "centre y",
-            "centre z",
-            "angle φ",
-            "axis a_x",
-            "axis a_y",
-            "axis a_z",
-            "velocity v_x",
-            "velocity v_y",
-            "velocity v_z",
-            "angular momentum L_x",
-            "angular momentum L_y",
-            "angular momentum L_z (spin)",
-        ];
-        const I: [&str; INNER_DOF] = [
-            "centre x",
-            "centre y",
-            "centre z",
-            "velocity v_x",
-            "velocity v_y",
-            "velocity v_z",
-        ];
-        if i < self.cage() {
-            format!("roller {} {}", i / ROLLER_DOF, R[i % ROLLER_DOF])
-        } else if i < self.inner() {
-            format!("cage {}", C[i - self.cage()])
-        } else if i < self.len() {
-            format!("inner ring {}", I[i - self.inner()])
-        } else {
-            format!("state component {i}")
+        match self.kind(i) {
+            (_, Some(roller)) => format!("roller {roller} {}", R[i % ROLLER_DOF]),
+            (kind, None) => kind,
         }
+    }
+
+    /// Component `i` without the roller number ("roller radius r" for every roller's r), and
+    /// the roller number if it belongs to a roller.
+    pub fn kind(&self, i: usize) -> (String, Option<usize>) {
+        if i < self.cage() {
+            (
+                format!("roller {}", R[i % ROLLER_DOF]),
+                Some(i / ROLLER_DOF),
+            )
+        } else if i < self.inner() {
+            (format!("cage {}", C[i - self.cage()]), None)
+        } else if i < self.len() {
+            (format!("inner ring {}", I[i - self.inner()]), None)
+        } else {
+            (format!("state component {i}"), None)
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_with_and_without_the_roller_number() {
+        let l = Layout { rollers: 2 };
+        assert_eq!(l.describe(13), "roller 1 radius r");
+        assert_eq!(l.kind(13), ("roller radius r".to_string(), Some(1)));
+        assert_eq!(l.describe(l.cage() + 3), "cage angle φ");
+        assert_eq!(l.kind(l.inner()), ("inner ring centre x".to_string(), None));
+        assert_eq!(l.describe(l.len()), format!("state component {}", l.len()));
     }
 }

@@ -256,6 +256,27 @@ impl Simulation {
             .map(|i| self.model.layout.describe(i))
     }
 
+    /// How often each kind of state component limited the step (every roller's radius r
+    /// counted together as "roller radius r", and so on), most frequent first; kinds that never
+    /// limited it are left out.
+    pub fn step_limits(&self) -> Vec<(String, u64)> {
+        let layout = self.model.layout;
+        let mut by_kind: Vec<(String, u64)> = Vec::new();
+        for (i, &count) in self.ig.stats().limiting.iter().enumerate() {
+            if count == 0 {
+                continue;
+            }
+            let (kind, _) = layout.kind(i);
+            match by_kind.iter_mut().find(|(k, _)| *k == kind) {
+                Some((_, c)) => *c += count,
+                None => by_kind.push((kind, count)),
+            }
+        }
+        // stable: equal counts keep the layout order
+        by_kind.sort_by_key(|(_, c)| std::cmp::Reverse(*c));
+        by_kind
+    }
+
     /// Completed cage revolutions.
     pub fn revolutions(&self) -> u64 {
         self.tr.revolutions

@@ -5,7 +5,7 @@
 
 use super::check::{describe, summarise};
 use super::contact::{LawName, Method, solve};
-use super::simulate::print_summary;
+use super::simulate::{print_summary, step_limits};
 use crate::failure::Failure;
 use crate::output::{load_model, print_json};
 use rolldyn_contact::roller_raceway::{ContactReport, RollerRacewayContact};
@@ -108,7 +108,11 @@ pub fn run(args: Args) -> Result<(), Failure> {
             "\nDynamics, {} cage revolutions from the default start:",
             args.revolutions
         );
-        print_summary(model.bearing.name(), &dynamics);
+        print_summary(
+            model.bearing.name(),
+            &dynamics,
+            &step_limits(&sim.step_limits()),
+        );
     }
 
     let roller_load = skid.max_roller_load_n.max(1.0);

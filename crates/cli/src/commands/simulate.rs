@@ -484,11 +484,41 @@ pub(crate) struct Answer<'a> {
     steps: u64,
     rejected_steps: u64,
     rhs_evaluations: u64,
+    /// the kinds of state component that limited the step most often, with their share of the
+    /// steps (`rolldyn simulate` only)
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    step_limited_by: Vec<StepLimit>,
     output_folder: Option<String>,
 }
 
+/// A kind of state component and its share of the steps it limited.
+#[derive(Serialize)]
+pub(crate) struct StepLimit {
+    component: String,
+    share: f64,
+}
+
+/// The three kinds of state component that limited the step most often (of
+/// `Simulation::step_limits`), with their shares of all counted steps.
+pub(crate) fn step_limits(counts: &[(String, u64)]) -> Vec<StepLimit> {
+    let total: u64 = counts.iter().map(|(_, c)| c).sum();
+    counts
+        .iter()
+        .take(3)
+        .map(|(kind, c)| StepLimit {
+            component: kind.clone(),
+            share: *c as f64 / total.max(1) as f64,
+        })
+        .collect()
+}
+
 impl<'a> Answer<'a> {
-    pub(crate) fn new(model: &'a str, s: &RunSummary, output_folder: Option<String>) -> Self {
+    pub(crate) fn new(
+        model: &'a str,
+        s: &RunSummary,
+        step_limited_by: Vec<StepLimit>,
+        output_folder: Option<String>,
+    ) -> Self {
         Self {
             model,
             cage_slip_mean: s.cage_slip_mean,
@@ -511,6 +541,7 @@ impl<'a> Answer<'a> {
             steps: s.steps,
             rejected_steps: s.rejected_steps,
             rhs_evaluations: s.rhs_evaluations,
+            step_limited_by,
             output_folder,
         }
     }
@@ -608,14 +639,16 @@ pub fn run(args: Args) -> Result<(), Failure> {
         ))
     })?;
     written?;
+    let limits = step_limits(&sim.step_limits());
     if args.json {
         return print_json(&Answer::new(
             model.bearing.name(),
             &summary,
+            limits,
             dir.map(|d| d.display().to_string()),
         ));
     }
-    print_summary(model.bearing.name(), &summary);
+    print_summary(model.bearing.name(), &summary, &limits);
     Ok(())
 }
 
@@ -635,7 +668,7 @@ fn progress_bar(quiet: bool, t_end: f64) -> ProgressBar {
     bar
 }
 
-pub fn print_summary(model: &str, s: &RunSummary) {
+pub fn print_summary(model: &str, s: &RunSummary, limits: &[StepLimit]) {
     println!(
         "{model}: dynamics, {:.4} s simulated in {:.2} s",
         s.simulated_time_s, s.wall_time_s
@@ -696,9 +729,16 @@ pub fn print_summary(model: &str, s: &RunSummary) {
         "steps (rejected) / RHS evaluations",
         format!("{} ({}) / {}", s.steps, s.rejected_steps, s.rhs_evaluations),
     );
+    if !limits.is_empty() {
+        let shares: Vec<String> = limits
+            .iter()
+            .map(|l| format!("{} {:.0} %", l.component, 100.0 * l.share))
+            .collect();
+        line("step limited by", shares.join(", "));
+    }
 }
 
 /// The JSON form of a run summary (used by `demo`).
 pub fn summary_json(model: &str, s: &RunSummary) -> serde_json::Value {
-    serde_json::to_value(Answer::new(model, s, None)).unwrap_or_default()
+    serde_json::to_value(Answer::new(model, s, Vec::new(), None)).unwrap_or_default()
 }
