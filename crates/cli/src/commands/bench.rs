@@ -1,12 +1,11 @@
 //! `rolldyn bench [MODEL.toml]`: the dynamics speed benchmark, simulated time over wall time
 //! on one thread, repeated (`rolldyn_setup::speed`; BENCHMARKS.md, "Dynamics").
 
+use super::operating_args::OperatingArgs;
 use super::simulate::Duration;
 use crate::failure::Failure;
 use crate::output::{load_model, print_json};
-use rolldyn_setup::Overrides;
 use rolldyn_setup::speed::{SpeedError, SpeedRun, cpu_name, measure_speed, vector_loops};
-use rolldyn_units::{AngularSpeed, Force, Quantity};
 use serde::Serialize;
 use std::path::PathBuf;
 
@@ -14,12 +13,8 @@ use std::path::PathBuf;
 pub struct Args {
     /// Model file (TOML) with [lubricant] and [operating]; the embedded 2002834 model when omitted.
     pub model: Option<PathBuf>,
-    /// Inner-ring speed (overrides operating.inner_speed).
-    #[arg(long)]
-    pub speed: Option<Quantity<AngularSpeed>>,
-    /// Radial load on the inner ring (overrides operating.radial_load).
-    #[arg(long)]
-    pub radial_load: Option<Quantity<Force>>,
+    #[command(flatten)]
+    pub operating: OperatingArgs,
     /// Simulated duration of each run: cage revolutions (`20rev`) or time (`0.2s`).
     #[arg(long, default_value = "20rev")]
     pub duration: Duration,
@@ -85,11 +80,7 @@ struct Answer<'a> {
 pub fn run(args: Args) -> Result<(), Failure> {
     let model = load_model(args.model.as_deref())?;
     let name = model.bearing.name();
-    let overrides = Overrides {
-        speed: args.speed.map(|q| q.si()),
-        radial_load: args.radial_load.map(|q| q.si()),
-        ..Overrides::default()
-    };
+    let overrides = args.operating.overrides();
     let optimised_build = !cfg!(debug_assertions);
     let talk = !(args.quiet || args.json);
     if talk {

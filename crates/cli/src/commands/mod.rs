@@ -9,6 +9,7 @@ pub mod film;
 pub mod journal;
 mod oil_args;
 pub mod oils;
+mod operating_args;
 mod rig_args;
 pub mod simulate;
 pub mod skid;

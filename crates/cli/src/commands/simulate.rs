@@ -8,12 +8,13 @@ use rolldyn_dynamics::IntegratorMethod;
 use rolldyn_dynamics::output::{OutputSink, RevolutionSummary, RunSummary, Snapshot};
 use rolldyn_output::{Formats, OutputError, TableWriter};
 use rolldyn_plot::{Labels, Series, line_plot};
-use rolldyn_units::{AngularSpeed, Force, Quantity, Temperature, Time};
+use rolldyn_units::{Quantity, Time};
 use serde::Serialize;
 use std::path::{Path, PathBuf};
 use std::str::FromStr;
 
-use rolldyn_setup::{LoadDirection, Overrides, prepare};
+use super::operating_args::OperatingArgs;
+use rolldyn_setup::prepare;
 
 /// How long to simulate: cage revolutions (`20rev`) or a time (`0.2s`, `50ms`).
 #[derive(Clone, Copy, Debug)]
@@ -65,31 +66,12 @@ impl IntegratorArg {
     }
 }
 
-#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
-pub enum LoadDirectionArg {
-    Fixed,
-    Rotating,
-}
-
 #[derive(clap::Args)]
 pub struct Args {
     /// Model file (TOML) with [lubricant] and [operating]; the embedded 2002834 model when omitted.
     pub model: Option<PathBuf>,
-    /// Inner-ring speed (overrides operating.inner_speed).
-    #[arg(long)]
-    pub speed: Option<Quantity<AngularSpeed>>,
-    /// Outer-ring speed (intershaft bearings).
-    #[arg(long)]
-    pub outer_speed: Option<Quantity<AngularSpeed>>,
-    /// Radial load on the inner ring (overrides operating.radial_load).
-    #[arg(long)]
-    pub radial_load: Option<Quantity<Force>>,
-    /// Radial load fixed in space or rotating with the inner ring.
-    #[arg(long, value_enum)]
-    pub load_direction: Option<LoadDirectionArg>,
-    /// Oil temperature of all contacts (overrides operating.temperatures.oil).
-    #[arg(long)]
-    pub oil_temperature: Option<Quantity<Temperature>>,
+    #[command(flatten)]
+    pub operating: OperatingArgs,
     /// Simulated duration: cage revolutions (`20rev`) or time (`0.2s`).
     #[arg(long, default_value = "5rev")]
     pub duration: Duration,
@@ -547,21 +529,6 @@ impl<'a> Answer<'a> {
     }
 }
 
-impl Args {
-    fn overrides(&self) -> Overrides {
-        Overrides {
-            speed: self.speed.map(|q| q.si()),
-            outer_speed: self.outer_speed.map(|q| q.si()),
-            radial_load: self.radial_load.map(|q| q.si()),
-            load_direction: self.load_direction.map(|d| match d {
-                LoadDirectionArg::Fixed => LoadDirection::Fixed,
-                LoadDirectionArg::Rotating => LoadDirection::Rotating,
-            }),
-            oil_temperature: self.oil_temperature.map(|q| q.si()),
-        }
-    }
-}
-
 impl Duration {
     /// The end time for a cage revolution period `revolution` [s].
     pub fn end_time(self, revolution: f64) -> f64 {
@@ -579,7 +546,12 @@ pub fn run(args: Args) -> Result<(), Failure> {
     } else {
         0.0
     };
-    let (mut sim, revolution) = prepare(&model, &args.overrides(), output_step, args.tolerance)?;
+    let (mut sim, revolution) = prepare(
+        &model,
+        &args.operating.overrides(),
+        output_step,
+        args.tolerance,
+    )?;
     if let Some(integrator) = args.integrator {
         sim.set_integrator_method(integrator.method());
     }

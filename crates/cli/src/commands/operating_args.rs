@@ -1,0 +1,46 @@
+//! Command-line overrides of a model's `[operating]` section, shared by the commands that run
+//! the dynamics of one operating point (`simulate`, `bench`).
+
+use rolldyn_setup::{LoadDirection, Overrides};
+use rolldyn_units::{AngularSpeed, Force, Quantity, Temperature};
+
+#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum LoadDirectionArg {
+    Fixed,
+    Rotating,
+}
+
+#[derive(clap::Args)]
+pub struct OperatingArgs {
+    /// Inner-ring speed (overrides operating.inner_speed).
+    #[arg(long)]
+    pub speed: Option<Quantity<AngularSpeed>>,
+    /// Outer-ring speed (intershaft bearings).
+    #[arg(long)]
+    pub outer_speed: Option<Quantity<AngularSpeed>>,
+    /// Radial load on the inner ring (overrides operating.radial_load).
+    #[arg(long)]
+    pub radial_load: Option<Quantity<Force>>,
+    /// Radial load fixed in space or rotating with the inner ring.
+    #[arg(long, value_enum)]
+    pub load_direction: Option<LoadDirectionArg>,
+    /// Oil temperature of all contacts (overrides operating.temperatures.oil).
+    #[arg(long)]
+    pub oil_temperature: Option<Quantity<Temperature>>,
+}
+
+impl OperatingArgs {
+    /// The overrides in SI.
+    pub fn overrides(&self) -> Overrides {
+        Overrides {
+            speed: self.speed.map(|q| q.si()),
+            outer_speed: self.outer_speed.map(|q| q.si()),
+            radial_load: self.radial_load.map(|q| q.si()),
+            load_direction: self.load_direction.map(|d| match d {
+                LoadDirectionArg::Fixed => LoadDirection::Fixed,
+                LoadDirectionArg::Rotating => LoadDirection::Rotating,
+            }),
+            oil_temperature: self.oil_temperature.map(|q| q.si()),
+        }
+    }
+}
