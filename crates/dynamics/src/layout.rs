@@ -19,7 +19,7 @@ pub struct Layout {
 }
 
 /// Names of a roller's state components, in layout order.
-const R: [&str; ROLLER_DOF] = [
+const ROLLER_NAMES: [&str; ROLLER_DOF] = [
     "azimuth θ",
     "radius r",
     "axial position z",
@@ -34,7 +34,7 @@ const R: [&str; ROLLER_DOF] = [
     "angular momentum L_z (spin)",
 ];
 /// Names of the cage's state components.
-const C: [&str; CAGE_DOF] = [
+const CAGE_NAMES: [&str; CAGE_DOF] = [
     "centre x",
     "centre y",
     "centre z",
@@ -50,7 +50,7 @@ const C: [&str; CAGE_DOF] = [
     "angular momentum L_z (spin)",
 ];
 /// Names of the inner ring's state components.
-const I: [&str; INNER_DOF] = [
+const INNER_NAMES: [&str; INNER_DOF] = [
     "centre x",
     "centre y",
     "centre z",
@@ -87,7 +87,7 @@ impl Layout {
     /// Human-readable name of state component `i` (diagnoses).
     pub fn describe(&self, i: usize) -> String {
         match self.kind(i) {
-            (_, Some(roller)) => format!("roller {roller} {}", R[i % ROLLER_DOF]),
+            (_, Some(roller)) => format!("roller {roller} {}", ROLLER_NAMES[i % ROLLER_DOF]),
             (kind, None) => kind,
         }
     }
@@ -97,13 +97,16 @@ impl Layout {
     pub fn kind(&self, i: usize) -> (String, Option<usize>) {
         if i < self.cage() {
             (
-                format!("roller {}", R[i % ROLLER_DOF]),
+                format!("roller {}", ROLLER_NAMES[i % ROLLER_DOF]),
                 Some(i / ROLLER_DOF),
             )
         } else if i < self.inner() {
-            (format!("cage {}", C[i - self.cage()]), None)
+            (format!("cage {}", CAGE_NAMES[i - self.cage()]), None)
         } else if i < self.len() {
-            (format!("inner ring {}", I[i - self.inner()]), None)
+            (
+                format!("inner ring {}", INNER_NAMES[i - self.inner()]),
+                None,
+            )
         } else {
             (format!("state component {i}"), None)
         }
