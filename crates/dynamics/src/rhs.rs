@@ -545,7 +545,7 @@ fn apply_traction(model: &Model, diag: &mut Diagnostics, f_inner: &mut V3, table
     ] {
         let batch = &mut loaded.batch;
         batch.evaluate(tmodel);
-        let (q_all, _, mu_all) = batch.forces_speeds_coefficients();
+        let (q_all, mu_all) = batch.forces_and_coefficients();
         for block in &loaded.blocks {
             let j = block.roller;
             // the block's normal and friction forces and their moment are summed in registers,

@@ -8,8 +8,9 @@
 //! instruction set.
 //!
 //! Accuracy (tested against `std` over the whole working range): `exp` ≤ 1 ulp, `ln` ≤ 1 ulp.
-//! Range reduction and polynomials follow fdlibm (`e_exp.c`, `e_log.c`, Sun Microsystems 1993): `exp` reduces by k·ln 2 (split into a high and low part) to
-//! |r| ≤ ½ ln 2 and sums the Taylor series to r¹³ (truncation < 10⁻¹⁷) in Estrin's scheme; `ln` reduces to
+//! Range reduction and polynomials follow fdlibm (`e_exp.c`, `e_log.c`, Sun Microsystems
+//! 1993): `exp` reduces by k·ln 2 (split into a high and low part) to |r| ≤ ½ ln 2 and sums
+//! the Taylor series to r¹³ (truncation < 10⁻¹⁷) in Estrin's scheme; `ln` reduces to
 //! m ∈ [√½, √2) and uses fdlibm's minimax polynomial in s = (m−1)/(m+1) (error < 2⁻⁵⁸·⁴⁵).
 //!
 //! Special values: `exp` returns +∞ above 1023.5·ln 2 ≈ 709.44 (e^709.44 ≈ 0.7·f64::MAX; the last

@@ -231,15 +231,10 @@ impl SliceBatch {
         first
     }
 
-    /// Normal forces (N), sliding speeds (m/s) and, after [`SliceBatch::evaluate`], traction
-    /// coefficients of all slices, in slice order (for loops over many slices).
-    pub fn forces_speeds_coefficients(&self) -> (&[f64], &[f64], &[f64]) {
-        let n = self.len();
-        (
-            &self.normal_force_n[..n],
-            &self.sliding_speed_m_s[..n],
-            &self.coefficient,
-        )
+    /// Normal forces (N) and, after [`SliceBatch::evaluate`], traction coefficients of all
+    /// slices, in slice order (for loops over many slices).
+    pub fn forces_and_coefficients(&self) -> (&[f64], &[f64]) {
+        (&self.normal_force_n[..self.len()], &self.coefficient)
     }
 
     /// Normal force of slice `i`, N.
