@@ -1,6 +1,6 @@
 //! Contact damping and the regularised two-level friction law (SPEC §2.2, §3.4).
 //!
-//! * [`step`] / [`step_with_derivative`] — the ADAMS cubic STEP function (SPEC §3.4).
+//! * [`step`] / [`step_with_derivative`] — re-exported from `rolldyn_numerics` (SPEC §3.4).
 //! * [`SliceDamping`] — variable damping coefficient `C(δ) = STEP(δ, 0, 0, δ*, C_max)` (seed 000
 //!   eqs. (2.5), (2.6) with the corrections ⚠ F-16, F-17, F-18).
 //! * [`normal_force`] — composition `Q = Q' + C(δ) δ̇` (seed 000 eq. (2.8)), clamped at ≥ 0.
@@ -10,37 +10,7 @@
 //! Sign conventions: `δ > 0` is penetration, `δ̇ > 0` approaching; the viscous force `C(δ) δ̇`
 //! is repulsive while approaching (it opposes the relative normal velocity).
 
-/// ADAMS STEP function (SPEC §3.4, standard ADAMS definition):
-/// `h0` for `x ≤ x0`, `h1` for `x ≥ x1`, and `h0 + (h1−h0) Δ²(3 − 2Δ)`,
-/// `Δ = (x − x0)/(x1 − x0)`, in between. Value and first derivative are continuous; the slope
-/// is zero at both ends. If `x1 < x0` the same formula applies with `Δ` measured from `x0`
-/// (`h0` for `x ≥ x0`, `h1` for `x ≤ x1`). If `x1 = x0` it degenerates to a jump at `x0`
-/// (`h0` below, `h1` at and above) instead of returning NaN.
-#[inline]
-pub fn step(x: f64, x0: f64, h0: f64, x1: f64, h1: f64) -> f64 {
-    step_with_derivative(x, x0, h0, x1, h1).0
-}
-
-/// [`step`] together with its derivative `d STEP/dx`.
-#[inline]
-pub fn step_with_derivative(x: f64, x0: f64, h0: f64, x1: f64, h1: f64) -> (f64, f64) {
-    let span = x1 - x0;
-    if span == 0.0 {
-        return (if x < x0 { h0 } else { h1 }, 0.0);
-    }
-    let d = (x - x0) / span;
-    if d <= 0.0 {
-        (h0, 0.0)
-    } else if d >= 1.0 {
-        (h1, 0.0)
-    } else {
-        let dh = h1 - h0;
-        (
-            h0 + dh * d * d * (3.0 - 2.0 * d),
-            dh * 6.0 * d * (1.0 - d) / span,
-        )
-    }
-}
+pub use rolldyn_numerics::step::{step, step_with_derivative};
 
 /// Variable contact damping of a slice (or any contact), SPEC §2.2:
 /// `C(δ) = STEP(δ, 0, 0, δ*, C_max)` — zero at first touch, full damping `C_max` from the

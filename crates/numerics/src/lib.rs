@@ -5,6 +5,7 @@
 //!   system of two nonlinear equations.
 //! * [`root1d`]: safeguarded Newton (bracket search, Newton/secant steps, bisection) for one
 //!   equation in one unknown.
+//! * [`step`]: the ADAMS cubic STEP ramp (SPEC §3.4), with the degenerate span defined.
 //! * [`fastmath`]: branch-free, vectorisable `exp`, `ln`, `sin_cos` for hot loops.
 //! * [`avx2_twin!`]: a hot loop and its AVX2 (and optionally AVX-512F) copies from one
 //!   parameter list; [`avx2::LoopCopy`] for callers that dispatch themselves.
@@ -13,6 +14,7 @@ pub mod avx2;
 pub mod fastmath;
 pub mod newton2d;
 pub mod root1d;
+pub mod step;
 
 pub use newton2d::{Damping, Newton2dOptions, Newton2dOutcome, Newton2dStatus, Sample, solve_2d};
 pub use root1d::{
