@@ -1,6 +1,6 @@
-//! Cage ↔ guiding-land force models behind a small trait, so that the hydrodynamic cage-land
-//! model of the Reynolds crate can replace the default two-level-friction contact (SPEC §3.3
-//! pair 14; next issue: hydrodynamic land).
+//! Cage ↔ guiding-land force models behind a small trait (SPEC §3.3 pair 14): the two-level
+//! friction contact [`TwoLevelLand`] and the hydrodynamic land [`HydrodynamicLand`] of the
+//! Reynolds crate, whose film force acts together with that contact.
 
 use crate::parameters::PairParameters;
 use crate::vec3::{V3, add, cross, dot, norm, perp, power, scale, sub};

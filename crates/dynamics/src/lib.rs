@@ -71,9 +71,9 @@
 //!   SPEC §6.7 regime (module `ends`, [`RollerEndParameters`]). The ribs bound roller skew to
 //!   the rib clearance (2002834: ≈ 0.0046 rad instead of the cage-bar bound ≈ 0.05 rad).
 //!
-//! ## Not in this crate (yet)
-//! Hydrodynamic cage land (plug in through [`CageLandModel`]), free inner-ring tilt, tabulated
-//! clearance schedules, tabulated (FE) end–rib compliance curves — next issue.
+//! ## Not modelled
+//! The inner ring's tilt is prescribed, not a degree of freedom; end–rib compliance is the power
+//! law `K_p δⁿ` (tabulated FE force–approach curves are not read).
 
 mod checkpoint;
 pub mod conditions;

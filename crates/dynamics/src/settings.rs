@@ -130,8 +130,8 @@ pub struct DynamicsSettings {
     /// divergence, m (default 0.1 mm — a hundred times a working approach).
     pub divergence_penetration_m: f64,
     /// A roller axis tilted (yaw and pitch combined) by more than this from the bearing axis is
-    /// reported as a divergence, rad (default 0.1 rad ≈ 5.7°). Without the roller-end ↔ rib and
-    /// pocket-face contacts (next issue) only the cage bars bound roller skew: a roller whose
+    /// reported as a divergence, rad (default 0.1 rad ≈ 5.7°). With the roller-end ↔ rib and
+    /// pocket-face contacts switched off only the cage bars bound roller skew: a roller whose
     /// bar-contact points sit at `±h` along its axis in a pocket with play `p` per side can skew
     /// by at most `ψ = p/h` before both ends touch opposite bars — 2002834 with the Ø190.2 mm
     /// bar contact: `p = (11.25 − 11.00)/2 = 0.125 mm`, `h = 2.5 mm` → 0.05 rad (0.08/0.11/0.16

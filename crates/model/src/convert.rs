@@ -351,7 +351,7 @@ fn design_contact(file: &ModelFile, materials: &Materials) -> Result<DesignConta
     })
 }
 
-/// Builds the geometry a model file describes (not yet cross-validated).
+/// Builds the geometry a model file describes.
 pub(crate) fn build(file: &ModelFile) -> Result<BearingModel> {
     let materials = Materials::new(&file.materials)?;
     let design = design_contact(file, &materials)?;
