@@ -38,6 +38,17 @@ pub fn epicyclic_roller_speed(
         / ((inner_raceway_diameter + outer_raceway_diameter) * roller_diameter)
 }
 
+/// Cage slip ε₀ = 1 − ω_c/ω_epicyclic (SPEC §5.3, seed 001: ω₀ = ω₀₀(1 − ε₀)), negative when the
+/// cage runs faster than epicyclic; 0 when the epicyclic speed is 0.
+#[inline]
+pub fn cage_slip(cage_speed: f64, epicyclic_cage_speed: f64) -> f64 {
+    if epicyclic_cage_speed != 0.0 {
+        1.0 - cage_speed / epicyclic_cage_speed
+    } else {
+        0.0
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -20,6 +20,8 @@
 //! Cage slip: ω₀ = ω₀₀(1 − ε₀) (SPEC §5.3), negative when the cage runs faster than epicyclic.
 
 use crate::options::SlipReference;
+/// Cage slip ε₀ (SPEC §5.3): the geometry crate's definition.
+pub use rolldyn_geometry::cage_slip;
 use serde::Serialize;
 
 /// Which ring rotates (reported).
@@ -126,15 +128,6 @@ impl Kinematics {
             let v = -self.inner_surface_speed();
             if v.abs() > 0.0 { 1.0 - vw / v } else { 0.0 }
         }
-    }
-}
-
-/// Cage slip ε₀ = 1 − ω₀/ω₀₀ (SPEC §5.3); 0 when ω₀₀ = 0.
-pub fn cage_slip(cage_speed: f64, epicyclic: f64) -> f64 {
-    if epicyclic != 0.0 {
-        1.0 - cage_speed / epicyclic
-    } else {
-        0.0
     }
 }
 
