@@ -5,7 +5,7 @@
 //! the *reduced modulus* `E'` with `1/E' = ½[(1−ν₁²)/E₁ + (1−ν₂²)/E₂]`, i.e. `E' = 2E*` where
 //! `E*` is Johnson's contact modulus (for identical steels `E' = E/(1−ν²)`).
 //!
-//! * Line contact: [`reduced_radius`], [`reduced_modulus`], [`LineContact`].
+//! * Line contact: [`reduced_radius`], [`reduced_modulus`], [`line_half_width`], [`LineContact`].
 //! * Point / elliptical contact: [`ContactCurvatures`], [`elliptical_contact`],
 //!   [`point_contact_sphere_flat`], [`EllipticalStiffness`] (`Q = K δ^1.5`).
 //! * Complete elliptic integrals by the arithmetic–geometric mean: [`elliptic_ke`].
@@ -107,6 +107,14 @@ pub enum LineApproachModel {
 /// Reference reduced modulus of Palmgren's steel law: `207 GPa / (1 − 0.3²)`.
 pub const PALMGREN_E_REDUCED_REF: f64 = 207.0e9 / (1.0 - 0.09);
 
+/// Hertz line-contact **half**-width `b = 2 √(2 Q R' / (π l E')) = √(8 w R' / (π E'))` (m) for
+/// the load per length w = Q/l (N/m), reduced radius R' (m) and reduced modulus E' (Pa), seed 000
+/// eq. (2.16).
+#[inline]
+pub fn line_half_width(load_per_length: f64, reduced_radius: f64, reduced_modulus: f64) -> f64 {
+    (8.0 * load_per_length * reduced_radius / (PI * reduced_modulus)).sqrt()
+}
+
 /// Hertz line contact of a cylinder (roller) on a raceway over a working length `l`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LineContact {
@@ -131,10 +139,13 @@ impl LineContact {
         (q * self.reduced_modulus / (2.0 * PI * self.length * self.reduced_radius)).sqrt()
     }
 
-    /// Contact **half**-width `b = 2 √(2 Q R' / (π l E'))` (m), seed 000 eq. (2.16).
+    /// Contact **half**-width of the load `q` (N) over the length: [`line_half_width`].
     pub fn half_width(&self, q: f64) -> f64 {
-        let q = q.max(0.0);
-        2.0 * (2.0 * q * self.reduced_radius / (PI * self.length * self.reduced_modulus)).sqrt()
+        line_half_width(
+            q.max(0.0) / self.length,
+            self.reduced_radius,
+            self.reduced_modulus,
+        )
     }
 
     /// Approach of the roller with **one** raceway (m) for force `q` (N) with the chosen model

@@ -186,8 +186,8 @@ pub(crate) struct Model {
     pub params: ContactParameters,
     /// pitch radius d_m/2, m
     pub rm: f64,
-    /// γ = D_w/d_m
-    pub gamma: f64,
+    /// nominal raceway diameters (d_i, D_o) of the epicyclic cage speed, m
+    pub raceway_diameters: (f64, f64),
     /// penetration reported as divergence, m
     pub div_limit: f64,
     /// roller ends ↔ ribs and cage pocket faces
@@ -427,15 +427,19 @@ impl Model {
             conditions,
             params,
             rm,
-            gamma: roller.diameter / bearing.pitch_diameter(),
+            raceway_diameters: (
+                bearing.inner_ring.raceway_diameter,
+                bearing.outer_ring.raceway_diameter,
+            ),
             div_limit: 1e-4,
             ends,
         })
     }
 
-    /// Epicyclic cage speed for ring speeds (ω_i, ω_o).
+    /// Epicyclic cage speed for ring speeds (ω_i, ω_o): [`rolldyn_geometry::epicyclic_cage_speed`].
     #[inline]
     pub fn epicyclic(&self, wi: f64, wo: f64) -> f64 {
-        0.5 * (wi * (1.0 - self.gamma) + wo * (1.0 + self.gamma))
+        let (di, do_) = self.raceway_diameters;
+        rolldyn_geometry::epicyclic_cage_speed(di, do_, wi, wo)
     }
 }

@@ -410,7 +410,7 @@ impl Simulation {
         let thresh = self.settings.slip_load_fraction * max_fi;
         let mut v = StepValues {
             cage_speed: w,
-            slip: if w0 != 0.0 { 1.0 - w / w0 } else { 0.0 },
+            slip: rolldyn_geometry::cage_slip(w, w0),
             max_fi,
             max_fo: d.outer.force.iter().fold(0.0_f64, |a, &b| a.max(b)),
             max_bar: d.bar.iter().fold(0.0_f64, |a, &b| a.max(b)),
@@ -602,7 +602,7 @@ impl Simulation {
             cage_angle_rad: y[ci + 3],
             cage_speed_rad_s: wc,
             epicyclic_cage_speed_rad_s: w0,
-            cage_slip: if w0 != 0.0 { 1.0 - wc / w0 } else { 0.0 },
+            cage_slip: rolldyn_geometry::cage_slip(wc, w0),
             cage_land_force_n: d.land_force,
             cage_land_power_w: d.land_power,
             rollers: RollerSnapshot {

@@ -56,18 +56,27 @@ impl CylindricalRollerBearing {
             - 2.0 * self.roller.diameter
     }
 
-    /// Epicyclic (pure-rolling) cage speed for inner/outer ring speeds [rad/s]:
-    /// ω_c = ½[ω_i (1 − D_w/d_m) + ω_o (1 + D_w/d_m)].
+    /// Epicyclic (pure-rolling) cage speed for inner/outer ring speeds [rad/s], on the nominal
+    /// raceway diameters: [`crate::epicyclic_cage_speed`].
     pub fn epicyclic_cage_speed(&self, inner_speed: f64, outer_speed: f64) -> f64 {
-        let gamma = self.roller.diameter / self.pitch_diameter();
-        0.5 * (inner_speed * (1.0 - gamma) + outer_speed * (1.0 + gamma))
+        crate::epicyclic_cage_speed(
+            self.inner_ring.raceway_diameter,
+            self.outer_ring.raceway_diameter,
+            inner_speed,
+            outer_speed,
+        )
     }
 
     /// Roller spin speed about its own axis under pure rolling [rad/s] (positive opposite to
-    /// the inner ring): ω_r = (d_m/D_w)(1 − γ²)(ω_i − ω_o)/2 with γ = D_w/d_m.
+    /// the inner ring), on the nominal raceway diameters: [`crate::epicyclic_roller_speed`].
     pub fn epicyclic_roller_speed(&self, inner_speed: f64, outer_speed: f64) -> f64 {
-        let gamma = self.roller.diameter / self.pitch_diameter();
-        0.5 * (inner_speed - outer_speed) * (1.0 - gamma * gamma) / gamma
+        crate::epicyclic_roller_speed(
+            self.inner_ring.raceway_diameter,
+            self.outer_ring.raceway_diameter,
+            self.roller.diameter,
+            inner_speed,
+            outer_speed,
+        )
     }
 
     /// Total roller–rib axial clearance: from `clearance.roller_rib_axial`, else from the rib

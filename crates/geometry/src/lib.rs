@@ -9,6 +9,7 @@
 mod bearing;
 mod cage;
 mod error;
+mod kinematics;
 mod mass;
 mod material;
 mod model;
@@ -19,6 +20,7 @@ mod roller;
 pub use bearing::{Clearance, CylindricalRollerBearing, Misalignment};
 pub use cage::{Cage, CageGuidance};
 pub use error::{GeometryError, require_positive};
+pub use kinematics::{cage_slip, epicyclic_cage_speed, epicyclic_roller_speed};
 pub use mass::MassProperties;
 pub use material::Material;
 pub use model::{BearingModel, RollerRacewayPair};

@@ -245,8 +245,59 @@ pub fn piezoviscous_elastic_point(
 /// 1 − e^{−0.68} (circular contact, k = 1).
 const ONE_MINUS_EXP_068: f64 = 0.493_383_007_634_410_45;
 
-/// Pan–Hamrock line contact (standard form, not in the seeds): H_c = 2.922 W'^−0.166 U^0.692 G^0.470,
-/// H_min = 1.714 W'^−0.128 U^0.694 G^0.568, H = h/R_x, W' = (Q/l)/(E'R_x). Returns (h_c, h_min).
+/// A power-law film fit H = c W'^a U^b G^d, H = h/R_x, W' = (Q/l)/(E'R_x), U = η0 u/(E'R_x),
+/// G = ᾱE'.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FilmFit {
+    /// c
+    pub coefficient: f64,
+    /// a (of W')
+    pub load_exponent: f64,
+    /// b (of U)
+    pub speed_exponent: f64,
+    /// d (of G)
+    pub material_exponent: f64,
+}
+
+impl FilmFit {
+    /// Dimensionless film H = c W'^a U^b G^d.
+    #[inline]
+    pub fn film(&self, w: f64, u: f64, g: f64) -> f64 {
+        self.coefficient
+            * w.powf(self.load_exponent)
+            * u.powf(self.speed_exponent)
+            * g.powf(self.material_exponent)
+    }
+
+    /// Dimensionless load W' giving the film H (the fit inverted).
+    #[inline]
+    pub fn load(&self, h: f64, u: f64, g: f64) -> f64 {
+        (h / (self.coefficient * u.powf(self.speed_exponent) * g.powf(self.material_exponent)))
+            .powf(1.0 / self.load_exponent)
+    }
+}
+
+/// Pan–Hamrock line-contact central film H_c = 2.922 W'^−0.166 U^0.692 G^0.470 (standard form,
+/// not in the seeds).
+pub const PAN_HAMROCK_CENTRAL: FilmFit = FilmFit {
+    coefficient: 2.922,
+    load_exponent: -0.166,
+    speed_exponent: 0.692,
+    material_exponent: 0.470,
+};
+
+/// Pan–Hamrock line-contact minimum film H_min = 1.714 W'^−0.128 U^0.694 G^0.568 (standard
+/// form, not in the seeds).
+pub const PAN_HAMROCK_MINIMUM: FilmFit = FilmFit {
+    coefficient: 1.714,
+    load_exponent: -0.128,
+    speed_exponent: 0.694,
+    material_exponent: 0.568,
+};
+
+/// Pan–Hamrock line contact ([`PAN_HAMROCK_CENTRAL`], [`PAN_HAMROCK_MINIMUM`]) for viscosity
+/// η0, pressure–viscosity coefficient ᾱ, rolling speed u, load Q over length l, E' and R_x.
+/// Returns (h_c, h_min).
 pub fn pan_hamrock_line(
     eta0: f64,
     alpha: f64,
@@ -262,8 +313,8 @@ pub fn pan_hamrock_line(
     let u_dim = eta0 * u / (e * rx);
     let w = q / (l * e * rx);
     let g = alpha * e;
-    let hc = 2.922 * w.powf(-0.166) * u_dim.powf(0.692) * g.powf(0.470) * rx;
-    let hm = 1.714 * w.powf(-0.128) * u_dim.powf(0.694) * g.powf(0.568) * rx;
+    let hc = PAN_HAMROCK_CENTRAL.film(w, u_dim, g) * rx;
+    let hm = PAN_HAMROCK_MINIMUM.film(w, u_dim, g) * rx;
     (hc, hm)
 }
 

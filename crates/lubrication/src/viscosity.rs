@@ -31,7 +31,7 @@ pub enum PiezoViscosity {
     #[default]
     Barus,
     /// Roelands η = η0 exp{(ln η0 + 9.67)[(1 + p/1.96×10⁸)^Z − 1]} (standard form, not in the
-    /// seeds); Z from the oil or from ᾱ = 5.1×10⁻⁹ (ln η0 + 9.67) Z.
+    /// seeds); Z from the oil or from ᾱ = (ln η0 + 9.67) Z / 1.96×10⁸ ([`roelands`]).
     Roelands,
 }
 
@@ -41,17 +41,31 @@ pub fn barus(eta0: f64, alpha: f64, p: f64) -> f64 {
     eta0 * fastmath::exp(alpha * p)
 }
 
-/// Roelands index Z matching the initial slope ᾱ: Z = ᾱ / (5.1×10⁻⁹ (ln η0 + 9.67)).
+/// Roelands reference pressure p_r = 1.96×10⁸ Pa.
+pub const ROELANDS_P_REF: f64 = 1.96e8;
+
+/// Roelands' −ln η∞ = 9.67 (η∞ = 6.31×10⁻⁵ Pa·s).
+const ROELANDS_LN_ETA_INF: f64 = 9.67;
+
+/// Roelands index Z matching the initial slope ᾱ: Z = ᾱ p_r / (ln η0 + 9.67) (the often
+/// printed 5.1×10⁻⁹ is 1/p_r rounded).
 #[inline]
 pub fn roelands_z_from_alpha(eta0: f64, alpha: f64) -> f64 {
-    alpha / (5.1e-9 * (eta0.ln() + 9.67))
+    alpha * ROELANDS_P_REF / (eta0.ln() + ROELANDS_LN_ETA_INF)
 }
 
-/// Roelands viscosity (η0 in Pa·s, p in Pa).
+/// Roelands viscosity η = η0 exp{(ln η0 + 9.67)[(1 + p/p_r)^Z − 1]} (η0 in Pa·s, p in Pa).
 #[inline]
 pub fn roelands(eta0: f64, z: f64, p: f64) -> f64 {
-    let ln_eta0 = eta0.ln();
-    (ln_eta0 + (ln_eta0 + 9.67) * ((1.0 + p / 1.96e8).powf(z) - 1.0)).exp()
+    let s = (1.0 + p / ROELANDS_P_REF).powf(z) - 1.0;
+    eta0 * ((eta0.ln() + ROELANDS_LN_ETA_INF) * s).exp()
+}
+
+/// ∂ ln η/∂p of [`roelands`] = (ln η0 + 9.67) Z (1 + p/p_r)^(Z−1) / p_r, 1/Pa.
+#[inline]
+pub fn roelands_dln_dp(eta0: f64, z: f64, p: f64) -> f64 {
+    (eta0.ln() + ROELANDS_LN_ETA_INF) * z * (1.0 + p / ROELANDS_P_REF).powf(z - 1.0)
+        / ROELANDS_P_REF
 }
 
 /// Viscosity at pressure `p` with the selected law (`z` = Roelands index, used only for Roelands).
@@ -98,6 +112,7 @@ mod tests {
         let p = 1e5;
         let slope = (roelands(eta0, z, p) / eta0).ln() / p;
         assert!((slope / alpha - 1.0).abs() < 1e-3);
+        assert!((roelands_dln_dp(eta0, z, 0.0) / alpha - 1.0).abs() < 1e-14);
         assert!(roelands(eta0, z, 1e9) < barus(eta0, alpha, 1e9));
     }
 }

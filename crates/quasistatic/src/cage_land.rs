@@ -4,6 +4,7 @@
 //! The model sits behind the small trait [`CageLandModel`] so that a finite journal-bearing
 //! solver (the Reynolds crate, SPEC §8.6) can replace the default [`ShortBearing`] later.
 
+use rolldyn_reynolds::cage_land::couette_land_torque;
 use std::f64::consts::PI;
 
 /// Inputs of a cage–land evaluation (SI).
@@ -125,8 +126,7 @@ impl CageLandModel for ShortBearing {
         let (eps, saturated) =
             film_equilibrium(&capacity, kc, f_ext, e_max, f_ext == 0.0 && k * PI >= kc);
         let dw = inp.cage_speed_rad_s - inp.land_speed_rad_s;
-        let film_torque =
-            -rails * 2.0 * PI * eta * r * r * r * l * dw / (c * (1.0 - eps * eps).sqrt());
+        let film_torque = -rails * couette_land_torque(eta, dw, r, l, c, eps);
         land_output(
             inp,
             eps,

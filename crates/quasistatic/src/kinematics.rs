@@ -12,14 +12,16 @@
 //!   V_sв = V_w − V_в = v_i, V_sн = V_н − V_w = v_o with V_w = ω_w R_w);
 //! * rolling (entrainment) speeds `u_i = (U_i − ω_w R_w)/2`, `u_o = (U_o + ω_w R_w)/2`.
 //!
-//! Epicyclic (no-slip) cage speed ω₀₀: both contacts roll without sliding when
-//! `d_вр(ω₀₀ − ω_в) = D_нр(ω_н − ω₀₀)`, i.e. ω₀₀ = (d_вр ω_в + D_нр ω_н)/(d_вр + D_нр). This
-//! is seed 001's (d_вр ω_в + D_нр ω_н)/(2(D_нр − D_wp)) with the roller touching both raceways
-//! (they differ by G/(2 d_m) ≈ 10⁻⁴ with clearance G; the exact form makes ε₀ = 0 the pure
-//! rolling state). Cage slip: ω₀ = ω₀₀(1 − ε₀) (SPEC §5.3), negative when the cage runs faster
-//! than epicyclic.
+//! Epicyclic (no-slip) cage speed ω₀₀ = (d_вр ω_в + D_нр ω_н)/(d_вр + D_нр)
+//! ([`rolldyn_geometry::epicyclic_cage_speed`], on the operating raceway diameters): both
+//! contacts roll without sliding, d_вр(ω₀₀ − ω_в) = D_нр(ω_н − ω₀₀). This is seed 001's
+//! (d_вр ω_в + D_нр ω_н)/(2(D_нр − D_wp)) with the roller touching both raceways (they differ
+//! by G/(2 d_m) ≈ 10⁻⁴ with clearance G; the exact form makes ε₀ = 0 the pure rolling state).
+//! Cage slip: ω₀ = ω₀₀(1 − ε₀) (SPEC §5.3), negative when the cage runs faster than epicyclic.
 
 use crate::options::SlipReference;
+/// Cage slip ε₀ (SPEC §5.3): the geometry crate's definition.
+pub use rolldyn_geometry::cage_slip;
 use serde::Serialize;
 
 /// Which ring rotates (reported).
@@ -66,11 +68,6 @@ pub struct Kinematics {
 }
 
 impl Kinematics {
-    /// Epicyclic cage speed ω₀₀ (see module docs), rad/s.
-    pub fn epicyclic(inner_diameter: f64, outer_diameter: f64, inner: f64, outer: f64) -> f64 {
-        (inner_diameter * inner + outer_diameter * outer) / (inner_diameter + outer_diameter)
-    }
-
     /// Inner-ring surface speed in the cage frame U_i = (ω_в − ω₀) r_i (= −V_в), m/s.
     pub fn inner_surface_speed(&self) -> f64 {
         (self.inner_speed - self.cage_speed) * self.inner_radius
@@ -134,24 +131,16 @@ impl Kinematics {
     }
 }
 
-/// Cage slip ε₀ = 1 − ω₀/ω₀₀ (SPEC §5.3); 0 when ω₀₀ = 0.
-pub fn cage_slip(cage_speed: f64, epicyclic: f64) -> f64 {
-    if epicyclic != 0.0 {
-        1.0 - cage_speed / epicyclic
-    } else {
-        0.0
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use rolldyn_geometry::epicyclic_cage_speed;
 
     #[test]
     fn epicyclic_state_has_no_sliding() {
         let (di, do_) = (0.065, 0.095);
         for (wi, wo) in [(300.0, 0.0), (0.0, 250.0), (850.0, 1370.0), (500.0, -200.0)] {
-            let w0 = Kinematics::epicyclic(di, do_, wi, wo);
+            let w0 = epicyclic_cage_speed(di, do_, wi, wo);
             let k = Kinematics {
                 inner_speed: wi,
                 outer_speed: wo,
@@ -175,6 +164,6 @@ mod tests {
         let do_ = di + 2.0 * dw;
         let (wi, wo) = (853.7, 1368.4);
         let seed = (di * wi + do_ * wo) / (2.0 * (do_ - dw));
-        assert!((Kinematics::epicyclic(di, do_, wi, wo) - seed).abs() < 1e-12 * seed);
+        assert!((epicyclic_cage_speed(di, do_, wi, wo) - seed).abs() < 1e-12 * seed);
     }
 }

@@ -153,12 +153,7 @@ impl<'a> Setup<'a> {
         }
         let mut warnings = Vec::new();
 
-        let nominal_epicyclic = Kinematics::epicyclic(
-            bearing.inner_ring.raceway_diameter,
-            bearing.outer_ring.raceway_diameter,
-            wi,
-            wo,
-        );
+        let nominal_epicyclic = bearing.epicyclic_cage_speed(wi, wo);
         let geometry = operating_geometry(bearing, cond, nominal_epicyclic);
         warnings.extend(geometry.warnings.iter().cloned());
         let g = geometry.clearance.operating_m;
@@ -346,7 +341,7 @@ impl<'a> Setup<'a> {
         } else {
             roller.computed_mass_properties().mass
         };
-        let epicyclic = Kinematics::epicyclic(2.0 * r_i, 2.0 * r_o, wi, wo);
+        let epicyclic = rolldyn_geometry::epicyclic_cage_speed(2.0 * r_i, 2.0 * r_o, wi, wo);
         Ok(Self {
             bearing,
             cond,

@@ -150,6 +150,7 @@ pub struct StudyRow {
 }
 
 fn row(
+    bearing: &CylindricalRollerBearing,
     n_i: f64,
     n_o: f64,
     load: f64,
@@ -157,7 +158,6 @@ fn row(
     t_c: f64,
     r: Result<crate::SkidResult, crate::QsError>,
 ) -> StudyRow {
-    let eps = crate::kinematics::Kinematics::epicyclic;
     match r {
         Ok(r) => StudyRow {
             inner_speed_rpm: n_i,
@@ -194,7 +194,7 @@ fn row(
             temperature_c: t_c,
             cage_slip: None,
             cage_speed_rad_s: None,
-            epicyclic_cage_speed_rad_s: eps(1.0, 1.0, rpm(n_i), rpm(n_o)),
+            epicyclic_cage_speed_rad_s: bearing.epicyclic_cage_speed(rpm(n_i), rpm(n_o)),
             max_roller_load_n: None,
             max_inner_slide_roll: None,
             max_outer_slide_roll: None,
@@ -227,7 +227,7 @@ pub fn obrien_taylor(
             if let Ok(r) = &r {
                 opts.initial_cage_slip = r.cage_slip;
             }
-            rows.push(row(n, 0.0, load, 0.0, t_c, r));
+            rows.push(row(&b, n, 0.0, load, 0.0, t_c, r));
         }
         let mut opts = options.clone();
         for &m in &OBRIEN_TAYLOR_MISALIGNMENTS_ARCMIN {
@@ -236,7 +236,7 @@ pub fn obrien_taylor(
             if let Ok(r) = &r {
                 opts.initial_cage_slip = r.cage_slip;
             }
-            rows.push(row(n, 0.0, 201.0, m, t_c, r));
+            rows.push(row(&b, n, 0.0, 201.0, m, t_c, r));
         }
     }
     rows
@@ -425,7 +425,7 @@ pub fn intershaft_rotor_slip(
             if let Ok(r) = &r {
                 opts.initial_cage_slip = r.cage_slip;
             }
-            row(n_i, n_o, radial_load_n, 0.0, 45.15, r)
+            row(bearing, n_i, n_o, radial_load_n, 0.0, 45.15, r)
         })
         .collect()
 }
@@ -447,7 +447,7 @@ pub fn intershaft_load(
             if let Ok(r) = &r {
                 opts.initial_cage_slip = r.cage_slip;
             }
-            row(5180.0, 11_313.0, f, 0.0, 40.15, r)
+            row(bearing, 5180.0, 11_313.0, f, 0.0, 40.15, r)
         })
         .collect()
 }

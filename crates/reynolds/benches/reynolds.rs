@@ -13,7 +13,7 @@ use rolldyn_reynolds::journal::{
     JournalBearing, JournalOperating, JournalOptions, solve_eccentricity, solve_load, study,
 };
 use rolldyn_reynolds::line_contact::{
-    self, Compliance, Constraint, LineContact, LineContactOptions,
+    self, Compliance, Constraint, LineContactOptions, LubricatedLineContact,
 };
 use rolldyn_reynolds::{Cavitation, Density, Isoviscous, Roelands};
 use std::hint::black_box;
@@ -105,7 +105,7 @@ fn journal(c: &mut Criterion) {
 }
 
 fn ehl(c: &mut Criterion) {
-    let mut ct = LineContact::new(0.01, 2.0);
+    let mut ct = LubricatedLineContact::new(0.01, 2.0);
     ct.compliance = Compliance::HalfSpace(HalfSpace::pair(2.06e11, 0.3, 2.06e11, 0.3, 1.0));
     ct.density = Density::DowsonHigginson;
     let vis = Roelands::from_alpha(0.04, 2e-8);
@@ -124,7 +124,7 @@ fn ehl(c: &mut Criterion) {
             )
         })
     });
-    let rigid = LineContact::new(0.005, 7.0);
+    let rigid = LubricatedLineContact::new(0.005, 7.0);
     g.bench_function("rigid_1000_nodes_with_damping", |bch| {
         bch.iter(|| {
             black_box(

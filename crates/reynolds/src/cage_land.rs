@@ -24,6 +24,23 @@ use crate::journal::{
 };
 use crate::viscosity::Isoviscous;
 
+/// Couette shear torque of a full (flooded) film between a journal and its bush turning
+/// `relative_speed` ω_j − ω_b apart, μ Δω R³ B·2π/(c√(1−ε²)) [N·m] (radius R, width B, radial
+/// clearance c, eccentricity ratio ε); ε = 0 is Petroff's 2πμωR³B/c.
+#[inline]
+pub fn couette_land_torque(
+    viscosity: f64,
+    relative_speed: f64,
+    radius: f64,
+    width: f64,
+    clearance: f64,
+    eccentricity_ratio: f64,
+) -> f64 {
+    let eps = eccentricity_ratio;
+    viscosity * relative_speed * radius.powi(3) * width * std::f64::consts::TAU
+        / (clearance * (1.0 - eps * eps).sqrt())
+}
+
 /// Which ring carries the guiding land.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum LandPosition {
@@ -406,8 +423,7 @@ impl CageLand {
         // force on the journal in the input frame
         let fj = [fr * ca - ft * sa, fr * sa + ft * ca];
         // torques: Couette of a full film + pressure couple ∓ e F_t / 2
-        let couette = viscosity * (wj - wb) * g.radius.powi(3) * g.width * std::f64::consts::TAU
-            / (c * (1.0 - eps * eps).sqrt());
+        let couette = couette_land_torque(viscosity, wj - wb, g.radius, g.width, c, eps);
         let e_used = eps * c;
         let m_journal = -couette - 0.5 * e_used * ft;
         let m_bearing = couette - 0.5 * e_used * ft;

@@ -1,8 +1,12 @@
 //! Viscosity and density laws used by the solvers (SPEC §8.2 / §4.1).
 //!
 //! The solvers take any [`Viscosity`]: the structs below (Barus, Petrusevich, Roelands,
-//! isoviscous) or a closure `|pressure_pa, temperature_k| viscosity_pa_s`. They are written here
-//! rather than imported so that this crate stays independent of the lubrication crate.
+//! isoviscous) or a closure `|pressure_pa, temperature_k| viscosity_pa_s`. The Roelands formulas
+//! are the lubrication crate's ([`rolldyn_lubrication::viscosity::roelands`]).
+
+use rolldyn_lubrication::viscosity::{
+    ROELANDS_P_REF, roelands, roelands_dln_dp, roelands_z_from_alpha,
+};
 
 /// Dynamic viscosity as a function of gauge pressure (Pa) and absolute temperature (K), Pa·s.
 pub trait Viscosity {
@@ -108,25 +112,23 @@ pub struct Roelands {
 
 impl Roelands {
     /// Reference pressure p_r, Pa.
-    pub const P_REF: f64 = 1.96e8;
+    pub const P_REF: f64 = ROELANDS_P_REF;
 
     /// Roelands law with the same initial slope as Barus with coefficient `alpha`.
     pub fn from_alpha(mu0: f64, alpha: f64) -> Self {
         Self {
             mu0,
-            z: alpha * Self::P_REF / (mu0.ln() + 9.67),
+            z: roelands_z_from_alpha(mu0, alpha),
         }
     }
 }
 
 impl Viscosity for Roelands {
     fn viscosity(&self, p: f64, _: f64) -> f64 {
-        let s = (1.0 + p.max(0.0) / Self::P_REF).powf(self.z) - 1.0;
-        self.mu0 * ((self.mu0.ln() + 9.67) * s).exp()
+        roelands(self.mu0, self.z, p.max(0.0))
     }
     fn dln_viscosity_dp(&self, p: f64, _: f64) -> f64 {
-        let p = p.max(0.0);
-        (self.mu0.ln() + 9.67) * self.z * (1.0 + p / Self::P_REF).powf(self.z - 1.0) / Self::P_REF
+        roelands_dln_dp(self.mu0, self.z, p.max(0.0))
     }
 }
 

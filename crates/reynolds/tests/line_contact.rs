@@ -5,7 +5,7 @@ use rolldyn_reynolds::compliance::half_space::HalfSpace;
 use rolldyn_reynolds::compliance::layer::ElasticLayer;
 use rolldyn_reynolds::line_contact::analytic;
 use rolldyn_reynolds::line_contact::{
-    Compliance, Constraint, LineContact, LineContactOptions, solve,
+    Compliance, Constraint, LineContactOptions, LubricatedLineContact, solve,
 };
 use rolldyn_reynolds::{Barus, Density, Isoviscous, ReynoldsError, Roelands};
 use std::sync::Arc;
@@ -15,8 +15,8 @@ const MU: f64 = 0.024;
 const V: f64 = 7.0;
 const R: f64 = 0.005;
 
-fn rigid() -> LineContact {
-    LineContact::new(R, V)
+fn rigid() -> LubricatedLineContact {
+    LubricatedLineContact::new(R, V)
 }
 
 /// Rigid isoviscous contact against the analytic (Martin) solution of seed (3.15)/(3.66):
@@ -222,8 +222,8 @@ fn seed_tables_with_deformation() {
     }
 }
 
-fn ehl_contact(um: f64) -> LineContact {
-    let mut c = LineContact::new(0.01, 2.0 * um);
+fn ehl_contact(um: f64) -> LubricatedLineContact {
+    let mut c = LubricatedLineContact::new(0.01, 2.0 * um);
     c.compliance = Compliance::HalfSpace(HalfSpace::pair(2.06e11, 0.3, 2.06e11, 0.3, 1.0));
     c.density = Density::DowsonHigginson;
     c
@@ -390,7 +390,7 @@ fn inverse_and_direct_modes_agree() {
 /// Bad input gives errors, not NaN.
 #[test]
 fn bad_input_is_rejected() {
-    let still = LineContact::new(R, 0.0);
+    let still = LubricatedLineContact::new(R, 0.0);
     let e = solve(
         &still,
         &Isoviscous { mu: MU },

@@ -8,7 +8,7 @@ use rolldyn_reynolds::line_contact::transient::{
     RigidIsoviscous, TransientOptions, composite, dimensionless, load_step_pressure_ratio,
     outer_h0, rigid_scales, simulate,
 };
-use rolldyn_reynolds::line_contact::{LineContact, LineContactOptions};
+use rolldyn_reynolds::line_contact::{LineContactOptions, LubricatedLineContact};
 
 /// Matched asymptotics of (3.25) with the corrected first-order terms (F-67): at ε = 10⁻³,
 /// h* = 2, t′ = 0.5 the composite h̄₀ + ε(h̄₁ + h̃₁) differs from the stiff numerical solution by
@@ -136,7 +136,7 @@ use rolldyn_reynolds::line_contact::transient::FilmReaction;
 /// and the monotone interpolation between the nodes stays within 0.5 % as well.
 #[test]
 fn load_damping_table_from_the_solver() {
-    let c = LineContact::new(0.005, 7.0);
+    let c = LubricatedLineContact::new(0.005, 7.0);
     let v = Isoviscous { mu: 0.024 };
     let opt = LineContactOptions {
         nodes: 500,

@@ -14,7 +14,7 @@ use rolldyn_reynolds::line_contact::transient::{
     Tabulated, TransientOptions, TransientSample, simulate,
 };
 use rolldyn_reynolds::line_contact::{
-    Compliance, Constraint, LineContact, LineContactOptions, LineContactResult, solve,
+    Compliance, Constraint, LineContactOptions, LineContactResult, LubricatedLineContact, solve,
 };
 use rolldyn_reynolds::{Barus, Density, Isoviscous, Roelands, Viscosity as ViscosityLaw};
 use rolldyn_units::{DynamicViscosity, Length, Mass, Pressure, Quantity, Speed, Time};
@@ -284,7 +284,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
             ));
         }
     };
-    let mut contact = LineContact::new(r, 2.0 * um);
+    let mut contact = LubricatedLineContact::new(r, 2.0 * um);
     contact.compliance = compliance(&args, r)?;
     contact.density = match args.density {
         DensityName::Incompressible => Density::Incompressible,
@@ -365,7 +365,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
 
 fn run_transient(
     args: &Args,
-    contact: &LineContact,
+    contact: &LubricatedLineContact,
     visc: &dyn ViscosityLaw,
     options: &LineContactOptions,
     start: &LineContactResult,

@@ -31,7 +31,8 @@ pub fn short_ocvirk(mu: f64, omega: f64, r: f64, l: f64, c: f64, eps: f64) -> (f
     )
 }
 
-/// Petroff friction torque of a concentric full film, 2πμωR³L/c, N·m.
+/// Petroff friction torque of a concentric full film, 2πμωR³L/c, N·m: the
+/// [`crate::cage_land::couette_land_torque`] at ε = 0.
 pub fn petroff_torque(mu: f64, omega: f64, r: f64, l: f64, c: f64) -> f64 {
-    std::f64::consts::TAU * mu * omega * r.powi(3) * l / c
+    crate::cage_land::couette_land_torque(mu, omega, r, l, c, 0.0)
 }

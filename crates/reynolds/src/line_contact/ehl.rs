@@ -2,12 +2,14 @@
 //! documentation of [`super`] for the method.
 
 use super::analytic;
-use super::{Constraint, LineContact, LineContactOptions, LineContactResult, LineGrid};
+use super::{Constraint, LineContactOptions, LineContactResult, LineGrid, LubricatedLineContact};
 use crate::banded::{BandMatrix, Bordered};
 use crate::compliance::Influence;
 use crate::error::{Result, ReynoldsError, finite, positive};
 use crate::grid::Grid1d;
 use crate::viscosity::Viscosity;
+use rolldyn_contact::hertz::line_half_width;
+use rolldyn_lubrication::film::{PAN_HAMROCK_CENTRAL, PAN_HAMROCK_MINIMUM};
 use std::time::Instant;
 
 /// Per-node lubricant quantities and their derivatives.
@@ -25,7 +27,7 @@ struct NodeQ {
 
 /// Discrete problem on a fixed grid.
 struct Ehl<'a> {
-    c: &'a LineContact,
+    c: &'a LubricatedLineContact,
     visc: &'a dyn Viscosity,
     x: Vec<f64>,
     cell: Vec<f64>,
@@ -586,12 +588,12 @@ fn film_estimate(mu0: f64, alpha: f64, um: f64, w: f64, ep: f64, r: f64) -> f64 
     let u = mu0 * um.abs() / (ep * r);
     let wd = w / (ep * r);
     let g = (alpha * ep).max(100.0);
-    2.922 * wd.powf(-0.166) * u.powf(0.692) * g.powf(0.470) * r
+    PAN_HAMROCK_CENTRAL.film(wd, u, g) * r
 }
 
 /// Solves the line contact for the given constraint.
 pub fn solve(
-    contact: &LineContact,
+    contact: &LubricatedLineContact,
     viscosity: &dyn Viscosity,
     constraint: Constraint,
     options: &LineContactOptions,
@@ -608,7 +610,7 @@ pub fn solve(
 /// solution (h_min decreases monotonically with W; a direct Newton on the discrete minimum can
 /// settle on spurious constricted states), on a domain fixed from the largest load bracketed.
 fn solve_min_film_elastic(
-    contact: &LineContact,
+    contact: &LubricatedLineContact,
     viscosity: &dyn Viscosity,
     h_target: f64,
     options: &LineContactOptions,
@@ -634,7 +636,7 @@ fn solve_min_film_elastic(
     let ep = contact.compliance.e_prime().unwrap_or(2.3e11);
     // fixed domain from a generous load bound (16× the start)
     let domain = |w: f64| {
-        let b = (8.0 * w * contact.radius / (std::f64::consts::PI * ep)).sqrt();
+        let b = line_half_width(w, contact.radius, ep);
         let lh = (contact.radius * h_target).sqrt();
         (-(4.5 * b).max(30.0 * lh), (1.5 * b).max(5.0 * lh))
     };
@@ -717,7 +719,7 @@ fn solve_min_film_elastic(
 }
 
 fn solve_direct(
-    contact: &LineContact,
+    contact: &LubricatedLineContact,
     viscosity: &dyn Viscosity,
     constraint: Constraint,
     options: &LineContactOptions,
@@ -762,7 +764,7 @@ fn solve_direct(
                 // automatic domain covers the Hertzian zone at heavy loads
                 let u = mu0 * 0.5 * vabs / (ep * r);
                 let g = alpha0 * ep;
-                let wd = (h / r / (1.714 * u.powf(0.694) * g.powf(0.568))).powf(-1.0 / 0.128);
+                let wd = PAN_HAMROCK_MINIMUM.load(h / r, u, g);
                 w = w.max(wd * ep * r);
             }
             (h, w)
@@ -778,7 +780,7 @@ fn solve_direct(
         }
     };
     let b = if elastic {
-        (8.0 * w_est * r / (std::f64::consts::PI * ep)).sqrt()
+        line_half_width(w_est, r, ep)
     } else {
         0.0
     };
@@ -902,7 +904,7 @@ fn solve_direct(
 
 /// Builds the discrete problem on `grid` with scales (p_s, h_s, l_s, V_ref).
 fn build<'a>(
-    contact: &'a LineContact,
+    contact: &'a LubricatedLineContact,
     viscosity: &'a dyn Viscosity,
     grid: &Grid1d,
     options: &LineContactOptions,

@@ -4,7 +4,7 @@
 //! ln λ, i.e. exact for power laws such as the rigid isoviscous W₀ ∝ h⁻¹, λ ∝ h^{−3/2}).
 
 use super::analytic;
-use super::{Constraint, LineContact, LineContactOptions, solve};
+use super::{Constraint, LineContactOptions, LubricatedLineContact, solve};
 use crate::error::{Result, ReynoldsError};
 use crate::viscosity::Viscosity;
 
@@ -115,7 +115,7 @@ impl LoadDampingTable {
     /// Solves the contact at each h (as the rigid approach, seed's h_m) with the damping
     /// perturbation and tabulates W₀, λ and p_max.
     pub fn build(
-        contact: &LineContact,
+        contact: &LubricatedLineContact,
         viscosity: &dyn Viscosity,
         h_values: &[f64],
         options: &LineContactOptions,

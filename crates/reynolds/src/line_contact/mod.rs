@@ -99,9 +99,11 @@ impl LineKernel for Compliance {
     }
 }
 
-/// The contact: a cylinder of (reduced) radius R on a plate, per unit length.
+/// The lubricated problem: a cylinder of (reduced) radius R on a plate, per unit length, with
+/// its surface speeds, lubricant, compliance and wall slip (the dry Hertz line contact is
+/// `rolldyn_contact::hertz::LineContact`).
 #[derive(Debug, Clone)]
-pub struct LineContact {
+pub struct LubricatedLineContact {
     /// Reduced radius R, m.
     pub radius: f64,
     /// Surface speeds along x of the plate (u₁) and the roller (u₂), m/s; the seed's V = u₁ + u₂.
@@ -119,7 +121,7 @@ pub struct LineContact {
     pub waviness: Waviness,
 }
 
-impl LineContact {
+impl LubricatedLineContact {
     /// Rigid, incompressible contact with sum speed V shared equally by both surfaces.
     pub fn new(radius: f64, sum_speed: f64) -> Self {
         Self {

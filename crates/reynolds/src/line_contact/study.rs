@@ -1,7 +1,7 @@
 //! Grid-convergence study of the line-contact solver (callable from a CLI `study` command).
 
 use super::analytic;
-use super::{Compliance, Constraint, LineContact, LineContactOptions, solve};
+use super::{Compliance, Constraint, LineContactOptions, LubricatedLineContact, solve};
 use crate::compliance::half_space::HalfSpace;
 use crate::error::Result;
 use crate::viscosity::{Density, Isoviscous, Roelands};
@@ -36,11 +36,11 @@ pub struct LineStudyRow {
 /// each node count in `nodes`.
 pub fn grid_convergence(nodes: &[usize]) -> Result<Vec<LineStudyRow>> {
     let mut rows = Vec::new();
-    let rigid = LineContact::new(0.005, 7.0);
+    let rigid = LubricatedLineContact::new(0.005, 7.0);
     let (w0, _) = analytic::load_coefficients()?;
     let h = 1e-6;
     let wref = w0 * analytic::pressure_scale(0.024, 7.0, 0.005, h) * (0.005 * h).sqrt();
-    let mut ehl = LineContact::new(0.01, 2.0);
+    let mut ehl = LubricatedLineContact::new(0.01, 2.0);
     ehl.compliance = Compliance::HalfSpace(HalfSpace::pair(2.06e11, 0.3, 2.06e11, 0.3, 1.0));
     ehl.density = Density::DowsonHigginson;
     let vis = Roelands::from_alpha(0.04, 2e-8);
