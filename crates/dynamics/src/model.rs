@@ -186,7 +186,8 @@ pub(crate) struct Model {
     pub params: ContactParameters,
     /// pitch radius d_m/2, m
     pub rm: f64,
-    /// nominal raceway diameters (d_i, D_o) of the epicyclic cage speed, m
+    /// diameters (d_i, D_o) of the raceways the rollers roll on (the contact geometry, with the
+    /// radial clearance), the epicyclic cage speed's reference, m
     pub raceway_diameters: (f64, f64),
     /// penetration reported as divergence, m
     pub div_limit: f64,
@@ -214,8 +215,8 @@ impl Model {
         let z = bearing.roller_count;
         let roller = &bearing.roller;
         let rw = 0.5 * roller.diameter;
-        let ri = 0.5 * bearing.inner_ring.raceway_diameter;
-        let ro = ri + roller.diameter + 0.5 * bearing.clearance.radial;
+        let raceway_diameters = bearing.rolling_raceway_diameters();
+        let (ri, ro) = (0.5 * raceway_diameters.0, 0.5 * raceway_diameters.1);
         let stack = roller.slices();
         let mp = roller.mass_properties;
         if !(mp.mass > 0.0 && mp.axial_inertia > 0.0 && mp.transverse_inertia > 0.0) {
@@ -427,10 +428,7 @@ impl Model {
             conditions,
             params,
             rm,
-            raceway_diameters: (
-                bearing.inner_ring.raceway_diameter,
-                bearing.outer_ring.raceway_diameter,
-            ),
+            raceway_diameters,
             div_limit: 1e-4,
             ends,
         })

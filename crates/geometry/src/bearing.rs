@@ -56,27 +56,32 @@ impl CylindricalRollerBearing {
             - 2.0 * self.roller.diameter
     }
 
-    /// Epicyclic (pure-rolling) cage speed for inner/outer ring speeds [rad/s], on the nominal
-    /// raceway diameters: [`crate::epicyclic_cage_speed`].
-    pub fn epicyclic_cage_speed(&self, inner_speed: f64, outer_speed: f64) -> f64 {
-        crate::epicyclic_cage_speed(
-            self.inner_ring.raceway_diameter,
-            self.outer_ring.raceway_diameter,
-            inner_speed,
-            outer_speed,
+    /// Diameters (d_i, D_o) of the raceways the rollers roll on [m]: the inner raceway as given
+    /// and the outer raceway placed by the radial clearance, D_o = d_i + 2 D_w + G_r. This is the
+    /// contact geometry of the dynamics (a roller touching both raceways once the clearance is
+    /// taken up at the outer one); the given outer raceway diameter may differ from it by the
+    /// tolerated annulus mismatch.
+    pub fn rolling_raceway_diameters(&self) -> (f64, f64) {
+        let d_i = self.inner_ring.raceway_diameter;
+        (
+            d_i,
+            d_i + 2.0 * self.roller.diameter + self.clearance.radial,
         )
     }
 
+    /// Epicyclic (pure-rolling) cage speed for inner/outer ring speeds [rad/s] on the
+    /// [`Self::rolling_raceway_diameters`]: [`crate::epicyclic_cage_speed`].
+    pub fn epicyclic_cage_speed(&self, inner_speed: f64, outer_speed: f64) -> f64 {
+        let (d_i, d_o) = self.rolling_raceway_diameters();
+        crate::epicyclic_cage_speed(d_i, d_o, inner_speed, outer_speed)
+    }
+
     /// Roller spin speed about its own axis under pure rolling [rad/s] (positive opposite to
-    /// the inner ring), on the nominal raceway diameters: [`crate::epicyclic_roller_speed`].
+    /// the inner ring) on the [`Self::rolling_raceway_diameters`]:
+    /// [`crate::epicyclic_roller_speed`].
     pub fn epicyclic_roller_speed(&self, inner_speed: f64, outer_speed: f64) -> f64 {
-        crate::epicyclic_roller_speed(
-            self.inner_ring.raceway_diameter,
-            self.outer_ring.raceway_diameter,
-            self.roller.diameter,
-            inner_speed,
-            outer_speed,
-        )
+        let (d_i, d_o) = self.rolling_raceway_diameters();
+        crate::epicyclic_roller_speed(d_i, d_o, self.roller.diameter, inner_speed, outer_speed)
     }
 
     /// Total roller–rib axial clearance: from `clearance.roller_rib_axial`, else from the rib

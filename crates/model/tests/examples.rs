@@ -37,9 +37,12 @@ fn default_model_is_2002834_per_spec_f02() {
     assert!(b.geometric_clearance().abs() < 1e-12);
     assert!((b.clearance.radial - 9e-6).abs() < 1e-15);
     assert!((b.roller_rib_axial_clearance().unwrap() - 0.0505e-3).abs() < 1e-12);
-    // Epicyclic cage speed at 6371 rpm: ω_i/2 (1 − 15/180) = 305.8 rad/s.
+    // Epicyclic cage speed at 6371 rpm on the rolling diameters d_i = 165 mm and
+    // D_o = d_i + 2 D_w + G_r = 195.009 mm: ω_i d_i/(d_i + D_o) = 305.79 rad/s (the
+    // pitch-diameter form ω_i/2 (1 − 15/180) = 305.80 rad/s ignores the 9 µm clearance).
     let wi = 6371.0 * std::f64::consts::PI / 30.0;
-    assert!((b.epicyclic_cage_speed(wi, 0.0) - 0.5 * wi * (1.0 - 15.0 / 180.0)).abs() < 1e-9);
+    let expected = wi * 0.165 / (0.165 + 0.195009);
+    assert!((b.epicyclic_cage_speed(wi, 0.0) - expected).abs() < 1e-9);
     // Guiding land from the cage bore and floating clearance.
     let land = b.inner_ring.guiding_land.unwrap();
     assert!((land.diameter - 0.173).abs() < 1e-12);
