@@ -63,6 +63,7 @@ use crate::options::QuasiStaticOptions;
 use rolldyn_contact::roller_raceway::{RollerRacewayContact, SliceLawChoice};
 use rolldyn_contact::slices::{SliceLoad, SlicedRoller, SolveOptions};
 use rolldyn_geometry::{BearingModel, CylindricalRollerBearing};
+use rolldyn_numerics::maximize1d::{GoldenSectionOptions, golden_section_max};
 use rolldyn_numerics::{
     Bracket, Damping, Derivative, Newton2dOptions, Newton2dOutcome, Newton2dStatus, Point,
     Root1dOptions, Root1dStatus, Sample, find_root, solve_2d,
@@ -684,29 +685,14 @@ impl RollerContext<'_> {
     /// the case to the Newton solve).
     fn free_position(&self, e: f64, theta: f64) -> Option<(f64, f64)> {
         let w = theta.abs();
-        let (mut a, mut b) = (theta.min(0.0) - w, theta.max(0.0) + w);
         let play = |beta: f64| self.play(e, theta, beta).1;
-        let r = 0.5 * (5.0_f64.sqrt() - 1.0);
-        let mut c = b - r * (b - a);
-        let mut d = a + r * (b - a);
-        let (mut fc_, mut fd) = (play(c), play(d));
         // the bracket shrinks by 0.618 per step: 1e-9 |θ| after ≈ 45 steps
-        while b - a > 1e-9 * w {
-            if fc_ >= fd {
-                b = d;
-                d = c;
-                fd = fc_;
-                c = b - r * (b - a);
-                fc_ = play(c);
-            } else {
-                a = c;
-                c = d;
-                fc_ = fd;
-                d = a + r * (b - a);
-                fd = play(d);
-            }
-        }
-        let beta = if fc_ >= fd { c } else { d };
+        let options = GoldenSectionOptions {
+            max_iterations: 200,
+            x_tolerance: 1e-9 * w,
+        };
+        let search = golden_section_max(play, theta.min(0.0) - w, theta.max(0.0) + w, &options);
+        let beta = search.best.0;
         let (u, p) = self.play(e, theta, beta);
         (p >= 0.0).then_some((u, beta))
     }
