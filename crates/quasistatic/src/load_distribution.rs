@@ -283,35 +283,7 @@ impl LoadModel {
             |psi: f64| case.misalignment_rad * (psi - case.misalignment_azimuth_rad).cos();
         let half_g = 0.5 * case.diametral_clearance_m;
 
-        // initial ring displacement
-        let delta = match warm {
-            Some(w) if w.rollers.len() == z => w.ring_displacement_m,
-            _ => {
-                if fr > 0.0 {
-                    let c_min = angles
-                        .iter()
-                        .map(|p| p.cos())
-                        .fold(f64::NEG_INFINITY, f64::max)
-                        .max(0.1);
-                    let e1 = self.interference_for_load(fr / c_min, fc, tol)?;
-                    [0.0, (e1 + half_g) / c_min]
-                } else {
-                    [0.0, 0.0]
-                }
-            }
-        };
-        let states: Vec<RollerState> = match warm {
-            Some(w) if w.rollers.len() == z => w
-                .rollers
-                .iter()
-                .map(|r| RollerState {
-                    u: r.outer_approach_m,
-                    beta: r.roller_tilt_rad,
-                    ..RollerState::default()
-                })
-                .collect(),
-            _ => vec![RollerState::default(); z],
-        };
+        let (delta, states) = self.start_point(case, warm, &angles, tol)?;
 
         // nothing loaded: the fallback step moves the ring towards the load by the clearance
         let dead_zone_step = case.diametral_clearance_m.abs().max(1e-6);
@@ -404,6 +376,70 @@ impl LoadModel {
             ));
         }
 
+        Ok(self.distribution(case, &angles, states, delta, (r, it)))
+    }
+
+    /// Start of the ring iteration: the displacement and roller states of `warm` (same
+    /// roller count), else the displacement at which the most loaded roller alone carries
+    /// the radial load, rollers untilted.
+    fn start_point(
+        &self,
+        case: &LoadCase,
+        warm: Option<&LoadDistribution>,
+        angles: &[f64],
+        tol: f64,
+    ) -> Result<([f64; 2], Vec<RollerState>), QsError> {
+        let (fr, z) = (case.radial_load_n, self.roller_count);
+        let fc = case.centrifugal_force_n.max(0.0);
+        let half_g = 0.5 * case.diametral_clearance_m;
+        // initial ring displacement
+        let delta = match warm {
+            Some(w) if w.rollers.len() == z => w.ring_displacement_m,
+            _ => {
+                if fr > 0.0 {
+                    let c_min = angles
+                        .iter()
+                        .map(|p| p.cos())
+                        .fold(f64::NEG_INFINITY, f64::max)
+                        .max(0.1);
+                    let e1 = self.interference_for_load(fr / c_min, fc, tol)?;
+                    [0.0, (e1 + half_g) / c_min]
+                } else {
+                    [0.0, 0.0]
+                }
+            }
+        };
+        let states: Vec<RollerState> = match warm {
+            Some(w) if w.rollers.len() == z => w
+                .rollers
+                .iter()
+                .map(|r| RollerState {
+                    u: r.outer_approach_m,
+                    beta: r.roller_tilt_rad,
+                    ..RollerState::default()
+                })
+                .collect(),
+            _ => vec![RollerState::default(); z],
+        };
+        Ok((delta, states))
+    }
+
+    /// Loads, effective lengths and moments of every roller at the converged ring
+    /// displacement `delta` with roller `states`; `(r, it)` are the ring residual and the
+    /// iterations.
+    fn distribution(
+        &self,
+        case: &LoadCase,
+        angles: &[f64],
+        states: &[RollerState],
+        delta: [f64; 2],
+        (r, it): ([f64; 2], usize),
+    ) -> LoadDistribution {
+        let z = self.roller_count;
+        let fc = case.centrifugal_force_n.max(0.0);
+        let half_g = 0.5 * case.diametral_clearance_m;
+        let tilt_of =
+            |psi: f64| case.misalignment_rad * (psi - case.misalignment_azimuth_rad).cos();
         // final pass: effective lengths, moments, residuals
         let mut fi = vec![0.0; self.inner.len()];
         let mut fo = vec![0.0; self.outer.len()];
@@ -453,7 +489,7 @@ impl LoadModel {
         } else {
             0.0
         };
-        Ok(LoadDistribution {
+        LoadDistribution {
             rollers,
             ring_displacement_m: delta,
             force_residual_n: [r[0], r[1]],
@@ -464,7 +500,7 @@ impl LoadModel {
             max_outer_load_n: max_outer,
             loaded_rollers: loaded,
             load_zone_half_angle_rad: zone,
-        })
+        }
     }
 }
 
