@@ -8,6 +8,8 @@
 //!
 //! (A minimum of `g` is the maximum of `−g`.)
 
+use std::cmp::Ordering;
+
 /// `1/φ = (√5 − 1)/2`, the golden-section ratio (correctly rounded).
 pub const INVERSE_GOLDEN_RATIO: f64 = 0.618_033_988_749_894_8;
 
@@ -57,8 +59,9 @@ pub fn golden_section_max(
     let mut f1 = f(x1);
     let mut f2 = f(x2);
     for _ in 0..options.max_iterations {
-        // written as `!(… > …)` so that a NaN width ends the search
-        if !(hi - lo > options.x_tolerance) {
+        // a NaN width or tolerance ends the search
+        let wider = (hi - lo).partial_cmp(&options.x_tolerance) == Some(Ordering::Greater);
+        if !wider {
             break;
         }
         if f1 < f2 {

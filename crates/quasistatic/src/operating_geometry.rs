@@ -312,21 +312,16 @@ fn inner_ring_fit(
     let op = m.shaft_interference_m + thermal + centrifugal;
     let p = fit_pressure(op, a_s, b_s, c_s, part(sm), (ei, nui));
     let growth = 4.0 * p * b_s * b_s * c_s / (ei * (c_s * c_s - b_s * b_s));
-    if m.shaft_interference_m > 0.0 && op <= 0.0 {
-        warnings.push(format!(
-            "inner-ring fit lost in operation: interference {:.1} µm → {:.1} µm",
-            m.shaft_interference_m * 1e6,
-            op * 1e6
-        ));
-    }
-    FitState {
+    let fit = FitState {
         mounting_interference_m: m.shaft_interference_m,
         thermal_change_m: thermal,
         centrifugal_change_m: centrifugal,
         operating_interference_m: op,
         pressure_pa: p,
         raceway_change_m: growth,
-    }
+    };
+    warn_if_fit_lost(&fit, "inner", warnings);
+    fit
 }
 
 /// Outer-ring fit in the housing at the operating temperatures and speed (module docs, Lamé).
@@ -367,20 +362,26 @@ fn outer_ring_fit(
     let op = m.housing_interference_m + thermal + centrifugal;
     let p = fit_pressure(op, a_h, b_h, c_h, (eo, nuo), part(hm));
     let change = -4.0 * p * b_h * b_h * a_h / (eo * (b_h * b_h - a_h * a_h));
-    if m.housing_interference_m > 0.0 && op <= 0.0 {
-        warnings.push(format!(
-            "outer-ring fit lost in operation: interference {:.1} µm → {:.1} µm",
-            m.housing_interference_m * 1e6,
-            op * 1e6
-        ));
-    }
-    FitState {
+    let fit = FitState {
         mounting_interference_m: m.housing_interference_m,
         thermal_change_m: thermal,
         centrifugal_change_m: centrifugal,
         operating_interference_m: op,
         pressure_pa: p,
         raceway_change_m: change,
+    };
+    warn_if_fit_lost(&fit, "outer", warnings);
+    fit
+}
+
+/// Warns when a mounting interference is lost in operation.
+fn warn_if_fit_lost(fit: &FitState, ring: &str, warnings: &mut Vec<String>) {
+    if fit.mounting_interference_m > 0.0 && fit.operating_interference_m <= 0.0 {
+        warnings.push(format!(
+            "{ring}-ring fit lost in operation: interference {:.1} µm → {:.1} µm",
+            fit.mounting_interference_m * 1e6,
+            fit.operating_interference_m * 1e6
+        ));
     }
 }
 
