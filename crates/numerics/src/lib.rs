@@ -6,7 +6,8 @@
 //! * [`root1d`]: safeguarded Newton (bracket search, Newton/secant steps, bisection) for one
 //!   equation in one unknown.
 //! * [`dense_lu`]: dense LU factorisation with partial pivoting for small systems.
-//! * [`brent`]: Brent's root finder inside a sign-change bracket.
+//! * [`brent`]: Brent's root finder for a caller that already holds a sign-change bracket
+//!   and its end values ([`root1d`] searches the bracket itself and can use slopes).
 //! * [`maximize1d`]: golden-section search and Brent's method for the maximum of a function
 //!   of one variable.
 //! * [`step`]: the ADAMS cubic STEP ramp (SPEC §3.4), with the degenerate span defined.
