@@ -1,6 +1,6 @@
-//! Contact damping and the regularised two-level friction law (SPEC §2.2, §3.4).
+//! Contact damping and the regularised two-level friction law (SPEC §2.2, §3.4), both built on
+//! the STEP ramp of [`rolldyn_numerics::step`].
 //!
-//! * [`step`] / [`step_with_derivative`] — re-exported from `rolldyn_numerics` (SPEC §3.4).
 //! * [`SliceDamping`] — variable damping coefficient `C(δ) = STEP(δ, 0, 0, δ*, C_max)` (seed 000
 //!   eqs. (2.5), (2.6) with the corrections ⚠ F-16, F-17, F-18).
 //! * [`normal_force`] — composition `Q = Q' + C(δ) δ̇` (seed 000 eq. (2.8)), clamped at ≥ 0.
@@ -10,7 +10,7 @@
 //! Sign conventions: `δ > 0` is penetration, `δ̇ > 0` approaching; the viscous force `C(δ) δ̇`
 //! is repulsive while approaching (it opposes the relative normal velocity).
 
-pub use rolldyn_numerics::step::{step, step_with_derivative};
+use rolldyn_numerics::step::{step, step_with_derivative};
 
 /// Variable contact damping of a slice (or any contact), SPEC §2.2:
 /// `C(δ) = STEP(δ, 0, 0, δ*, C_max)` — zero at first touch, full damping `C_max` from the

@@ -4,9 +4,7 @@
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
 
-use rolldyn_contact::damping::{
-    SliceDamping, TwoLevelFriction, normal_force, step, step_with_derivative,
-};
+use rolldyn_contact::damping::{SliceDamping, TwoLevelFriction, normal_force};
 use rolldyn_contact::hertz::{
     self, Conformity, ContactCurvatures, EllipticalMethod, EllipticalStiffness, LineApproachModel,
     LineContact,
@@ -14,6 +12,7 @@ use rolldyn_contact::hertz::{
 use rolldyn_contact::slices::{
     SliceError, SliceLaw, SlicedRoller, SolveOptions, seed_eq_2_3_approach, seed_eq_2_4_approach,
 };
+use rolldyn_numerics::step::{step, step_with_derivative};
 
 // ---------------------------------------------------------------------------------------------
 // allocation counter (per thread) to prove the evaluation path does not allocate

@@ -42,6 +42,7 @@ use crate::vec3::{V3, add, axpy, cross, dot, norm, perp, power, scale, sub};
 use rolldyn_contact::damping::SliceDamping;
 use rolldyn_lubrication::traction::kragelsky;
 use rolldyn_lubrication::{ContactGeometry, ContactState, TractionModel, traction};
+use rolldyn_numerics::maximize1d::{GoldenSectionOptions, golden_section_max};
 
 /// Friction regime of a roller-end contact (SPEC §6.7), reported per roller.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -121,8 +122,6 @@ pub(crate) struct Deepest {
     /// distance of the point from the end disc rim and from the band edges (min), m
     pub margin: f64,
 }
-
-const GOLDEN_ITERATIONS: usize = 40;
 
 /// Axial position and tilt of a roller relative to the axis of a body that carries end faces.
 /// It is the same for every face of that body, so the right-hand side computes it once per
@@ -363,28 +362,10 @@ pub(crate) fn deepest_within(
             best = k;
         }
     }
-    let mut lo = xa + h * best.saturating_sub(1) as f64;
-    let mut hi = (xa + h * (best + 1) as f64).min(xb);
-    const G: f64 = 0.618_033_988_749_894_8;
-    let mut x1 = hi - G * (hi - lo);
-    let mut x2 = lo + G * (hi - lo);
-    let mut f1 = eval(x1).0;
-    let mut f2 = eval(x2).0;
-    for _ in 0..GOLDEN_ITERATIONS {
-        if f1 < f2 {
-            lo = x1;
-            x1 = x2;
-            f1 = f2;
-            x2 = lo + G * (hi - lo);
-            f2 = eval(x2).0;
-        } else {
-            hi = x2;
-            x2 = x1;
-            f2 = f1;
-            x1 = hi - G * (hi - lo);
-            f1 = eval(x1).0;
-        }
-    }
+    let lo = xa + h * best.saturating_sub(1) as f64;
+    let hi = (xa + h * (best + 1) as f64).min(xb);
+    let search = golden_section_max(|x| eval(x).0, lo, hi, &GoldenSectionOptions::default());
+    let (lo, hi) = search.bracket;
     let mut x = 0.5 * (lo + hi);
     let (mut d, mut y) = eval(x);
     // the bracket ends themselves (a maximum on the band edge)

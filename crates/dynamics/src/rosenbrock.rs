@@ -44,6 +44,7 @@
 
 use crate::integrator::{OdeSystem, StepError, StepStats};
 use crate::settings::IntegratorSettings;
+use rolldyn_numerics::dense_lu;
 
 const STAGES: usize = 4;
 /// Diagonal γ of ROS34PW2.
@@ -196,65 +197,6 @@ pub struct RosenbrockW {
     pub(crate) dense_f0: Vec<f64>,
 }
 
-/// LU factorisation with partial pivoting of the row-major `n × n` matrix `a` in place.
-/// Returns false for a singular or non-finite matrix.
-fn lu_factor(a: &mut [f64], piv: &mut [usize], n: usize) -> bool {
-    for k in 0..n {
-        let mut p = k;
-        let mut mx = a[k * n + k].abs();
-        for i in k + 1..n {
-            let v = a[i * n + k].abs();
-            if v > mx {
-                mx = v;
-                p = i;
-            }
-        }
-        if !(mx > 0.0 && mx.is_finite()) {
-            return false;
-        }
-        piv[k] = p;
-        if p != k {
-            for j in 0..n {
-                a.swap(k * n + j, p * n + j);
-            }
-        }
-        let inv = 1.0 / a[k * n + k];
-        for i in k + 1..n {
-            let l = a[i * n + k] * inv;
-            a[i * n + k] = l;
-            if l != 0.0 {
-                for j in k + 1..n {
-                    a[i * n + j] -= l * a[k * n + j];
-                }
-            }
-        }
-    }
-    true
-}
-
-/// Solves `LU x = P b` in place (factors of [`lu_factor`]).
-fn lu_solve(a: &[f64], piv: &[usize], n: usize, x: &mut [f64]) {
-    for (k, &p) in piv.iter().enumerate().take(n) {
-        if p != k {
-            x.swap(k, p);
-        }
-    }
-    for i in 0..n {
-        let mut s = x[i];
-        for j in 0..i {
-            s -= a[i * n + j] * x[j];
-        }
-        x[i] = s;
-    }
-    for i in (0..n).rev() {
-        let mut s = x[i];
-        for j in i + 1..n {
-            s -= a[i * n + j] * x[j];
-        }
-        x[i] = s / a[i * n + i];
-    }
-}
-
 impl RosenbrockW {
     /// New integrator at `(t, y)` with error scales and the block structure of the approximate
     /// Jacobian: `groups` lists colour groups of blocks; all blocks of a group must have the
@@ -397,7 +339,7 @@ impl RosenbrockW {
             for r in 0..n {
                 lu[r * n + r] += d;
             }
-            if !lu_factor(lu, &mut self.piv[p..p + n], n) {
+            if dense_lu::factor_in_place(lu, &mut self.piv[p..p + n]).is_err() {
                 jac.fill(0.0);
                 lu.fill(0.0);
                 for r in 0..n {
@@ -414,10 +356,9 @@ impl RosenbrockW {
         for (b, blk) in self.blocks.iter().enumerate() {
             let n = blk.n;
             let (o, p) = (self.off[b], self.poff[b]);
-            lu_solve(
+            dense_lu::solve_in_place(
                 &self.lu[o..o + n * n],
                 &self.piv[p..p + n],
-                n,
                 &mut x[blk.start..blk.start + n],
             );
         }

@@ -50,7 +50,6 @@ pub mod mixture;
 pub mod regime;
 pub mod scuffing;
 mod special;
-mod step;
 pub mod traction;
 pub mod viscosity;
 

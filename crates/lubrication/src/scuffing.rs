@@ -6,13 +6,15 @@
 //! seed's wording is reversed); the margin is s_cr/s.
 //!
 //! The maximum is found robustly in x = ln s: a geometric **bracketing walk** (growing steps) from
-//! s_min until μ decreases, then **Brent's** parabolic/golden-section maximisation inside the bracket.
+//! s_min until μ decreases, then **Brent's** parabolic/golden-section maximisation inside the bracket
+//! ([`rolldyn_numerics::maximize1d::brent_max`]).
 //! No grid scan. If μ is still increasing at s_max, or already decreasing at s_min, the outcome is
 //! [`CriticalSlip::NoMaximumInRange`].
 
 use crate::contact_state::ContactState;
 use crate::error::LubError;
 use crate::traction::{TractionModel, traction};
+use rolldyn_numerics::maximize1d::{BrentMaxOptions, brent_max};
 
 /// Search range and tolerances for [`critical_slip`].
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -173,107 +175,16 @@ pub fn critical_slip(
         }
     };
     let _ = f0;
-    let (xs, fs) = brent_max(
-        &mut f,
-        a,
-        b,
-        xm,
-        fm,
-        search.tolerance,
-        search.max_evaluations,
-    );
+    let options = BrentMaxOptions {
+        tolerance: search.tolerance,
+        max_iterations: search.max_evaluations,
+    };
+    let (xs, fs) = brent_max(&mut f, (a, b), (xm, fm), &options);
     Ok(CriticalSlip::Maximum {
         slip: xs.exp(),
         coefficient: fs,
         evaluations: n.get(),
     })
-}
-
-/// Brent's method (parabolic interpolation + golden section) maximising `f` on [a, b] with an
-/// interior point `x` whose value `fx` exceeds both ends. Absolute tolerance `tol` in x.
-fn brent_max(
-    f: &mut impl FnMut(f64) -> f64,
-    mut a: f64,
-    mut b: f64,
-    x: f64,
-    fx: f64,
-    tol: f64,
-    max_iter: u32,
-) -> (f64, f64) {
-    const CGOLD: f64 = 0.381_966_011_250_105_1;
-    // minimise g = −f
-    let (mut x, mut w, mut v) = (x, x, x);
-    let (mut gx, mut gw, mut gv) = (-fx, -fx, -fx);
-    let mut d: f64 = 0.0;
-    let mut e: f64 = 0.0;
-    for _ in 0..max_iter {
-        let xm = 0.5 * (a + b);
-        let tol1 = tol * x.abs().max(1.0) + 1e-12;
-        let tol2 = 2.0 * tol1;
-        if (x - xm).abs() <= tol2 - 0.5 * (b - a) {
-            break;
-        }
-        let mut golden = true;
-        if e.abs() > tol1 {
-            let r = (x - w) * (gx - gv);
-            let mut q = (x - v) * (gx - gw);
-            let mut p = (x - v) * q - (x - w) * r;
-            q = 2.0 * (q - r);
-            if q > 0.0 {
-                p = -p;
-            }
-            q = q.abs();
-            let etemp = e;
-            e = d;
-            if !(p.abs() >= (0.5 * q * etemp).abs() || p <= q * (a - x) || p >= q * (b - x)) {
-                d = p / q;
-                let u = x + d;
-                if u - a < tol2 || b - u < tol2 {
-                    d = tol1.copysign(xm - x);
-                }
-                golden = false;
-            }
-        }
-        if golden {
-            e = if x >= xm { a - x } else { b - x };
-            d = CGOLD * e;
-        }
-        let u = if d.abs() >= tol1 {
-            x + d
-        } else {
-            x + tol1.copysign(d)
-        };
-        let gu = -f(u);
-        if gu <= gx {
-            if u >= x {
-                a = x;
-            } else {
-                b = x;
-            }
-            v = w;
-            gv = gw;
-            w = x;
-            gw = gx;
-            x = u;
-            gx = gu;
-        } else {
-            if u < x {
-                a = u;
-            } else {
-                b = u;
-            }
-            if gu <= gw || w == x {
-                v = w;
-                gv = gw;
-                w = u;
-                gw = gu;
-            } else if gu <= gv || v == x || v == w {
-                v = u;
-                gv = gu;
-            }
-        }
-    }
-    (x, -gx)
 }
 
 /// Result of [`scuffing_check`].

@@ -5,13 +5,21 @@
 //!   system of two nonlinear equations.
 //! * [`root1d`]: safeguarded Newton (bracket search, Newton/secant steps, bisection) for one
 //!   equation in one unknown.
+//! * [`dense_lu`]: dense LU factorisation with partial pivoting for small systems.
+//! * [`brent`]: Brent's root finder for a caller that already holds a sign-change bracket
+//!   and its end values ([`root1d`] searches the bracket itself and can use slopes).
+//! * [`maximize1d`]: golden-section search and Brent's method for the maximum of a function
+//!   of one variable.
 //! * [`step`]: the ADAMS cubic STEP ramp (SPEC §3.4), with the degenerate span defined.
 //! * [`fastmath`]: branch-free, vectorisable `exp`, `ln`, `sin_cos` for hot loops.
 //! * [`avx2_twin!`]: a hot loop and its AVX2 (and optionally AVX-512F) copies from one
 //!   parameter list; [`avx2::LoopCopy`] for callers that dispatch themselves.
 
 pub mod avx2;
+pub mod brent;
+pub mod dense_lu;
 pub mod fastmath;
+pub mod maximize1d;
 pub mod newton2d;
 pub mod root1d;
 pub mod step;

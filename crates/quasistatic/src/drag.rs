@@ -12,6 +12,7 @@ use crate::conditions::{DragCoefficient, DragInputs, MixtureDensity};
 use rolldyn_lubrication::mixture::{
     air_oil_density_seed001, mixture_density_linear, mixture_viscosity,
 };
+use rolldyn_numerics::step::step;
 use serde::Serialize;
 
 /// Cage dimensions used by the drag formula.
@@ -40,12 +41,6 @@ pub struct CageDrag {
     pub coefficient: f64,
     /// Dissipated power |T ω₀|, W.
     pub power_w: f64,
-}
-
-/// Cubic STEP (ADAMS form, SPEC §3.4) used for the laminar–turbulent blend.
-fn step(x: f64, x0: f64, h0: f64, x1: f64, h1: f64) -> f64 {
-    let d = ((x - x0) / (x1 - x0)).clamp(0.0, 1.0);
-    h0 + (h1 - h0) * d * d * (3.0 - 2.0 * d)
 }
 
 impl DragCoefficient {

@@ -63,6 +63,7 @@ use crate::options::QuasiStaticOptions;
 use rolldyn_contact::roller_raceway::{RollerRacewayContact, SliceLawChoice};
 use rolldyn_contact::slices::{SliceLoad, SlicedRoller, SolveOptions};
 use rolldyn_geometry::{BearingModel, CylindricalRollerBearing};
+use rolldyn_numerics::maximize1d::{GoldenSectionOptions, golden_section_max};
 use rolldyn_numerics::{
     Bracket, Damping, Derivative, Newton2dOptions, Newton2dOutcome, Newton2dStatus, Point,
     Root1dOptions, Root1dStatus, Sample, find_root, solve_2d,
@@ -282,35 +283,7 @@ impl LoadModel {
             |psi: f64| case.misalignment_rad * (psi - case.misalignment_azimuth_rad).cos();
         let half_g = 0.5 * case.diametral_clearance_m;
 
-        // initial ring displacement
-        let delta = match warm {
-            Some(w) if w.rollers.len() == z => w.ring_displacement_m,
-            _ => {
-                if fr > 0.0 {
-                    let c_min = angles
-                        .iter()
-                        .map(|p| p.cos())
-                        .fold(f64::NEG_INFINITY, f64::max)
-                        .max(0.1);
-                    let e1 = self.interference_for_load(fr / c_min, fc, tol)?;
-                    [0.0, (e1 + half_g) / c_min]
-                } else {
-                    [0.0, 0.0]
-                }
-            }
-        };
-        let states: Vec<RollerState> = match warm {
-            Some(w) if w.rollers.len() == z => w
-                .rollers
-                .iter()
-                .map(|r| RollerState {
-                    u: r.outer_approach_m,
-                    beta: r.roller_tilt_rad,
-                    ..RollerState::default()
-                })
-                .collect(),
-            _ => vec![RollerState::default(); z],
-        };
+        let (delta, states) = self.start_point(case, warm, &angles, tol)?;
 
         // nothing loaded: the fallback step moves the ring towards the load by the clearance
         let dead_zone_step = case.diametral_clearance_m.abs().max(1e-6);
@@ -403,6 +376,70 @@ impl LoadModel {
             ));
         }
 
+        Ok(self.distribution(case, &angles, states, delta, (r, it)))
+    }
+
+    /// Start of the ring iteration: the displacement and roller states of `warm` (same
+    /// roller count), else the displacement at which the most loaded roller alone carries
+    /// the radial load, rollers untilted.
+    fn start_point(
+        &self,
+        case: &LoadCase,
+        warm: Option<&LoadDistribution>,
+        angles: &[f64],
+        tol: f64,
+    ) -> Result<([f64; 2], Vec<RollerState>), QsError> {
+        let (fr, z) = (case.radial_load_n, self.roller_count);
+        let fc = case.centrifugal_force_n.max(0.0);
+        let half_g = 0.5 * case.diametral_clearance_m;
+        // initial ring displacement
+        let delta = match warm {
+            Some(w) if w.rollers.len() == z => w.ring_displacement_m,
+            _ => {
+                if fr > 0.0 {
+                    let c_min = angles
+                        .iter()
+                        .map(|p| p.cos())
+                        .fold(f64::NEG_INFINITY, f64::max)
+                        .max(0.1);
+                    let e1 = self.interference_for_load(fr / c_min, fc, tol)?;
+                    [0.0, (e1 + half_g) / c_min]
+                } else {
+                    [0.0, 0.0]
+                }
+            }
+        };
+        let states: Vec<RollerState> = match warm {
+            Some(w) if w.rollers.len() == z => w
+                .rollers
+                .iter()
+                .map(|r| RollerState {
+                    u: r.outer_approach_m,
+                    beta: r.roller_tilt_rad,
+                    ..RollerState::default()
+                })
+                .collect(),
+            _ => vec![RollerState::default(); z],
+        };
+        Ok((delta, states))
+    }
+
+    /// Loads, effective lengths and moments of every roller at the converged ring
+    /// displacement `delta` with roller `states`; `(r, it)` are the ring residual and the
+    /// iterations.
+    fn distribution(
+        &self,
+        case: &LoadCase,
+        angles: &[f64],
+        states: &[RollerState],
+        delta: [f64; 2],
+        (r, it): ([f64; 2], usize),
+    ) -> LoadDistribution {
+        let z = self.roller_count;
+        let fc = case.centrifugal_force_n.max(0.0);
+        let half_g = 0.5 * case.diametral_clearance_m;
+        let tilt_of =
+            |psi: f64| case.misalignment_rad * (psi - case.misalignment_azimuth_rad).cos();
         // final pass: effective lengths, moments, residuals
         let mut fi = vec![0.0; self.inner.len()];
         let mut fo = vec![0.0; self.outer.len()];
@@ -452,7 +489,7 @@ impl LoadModel {
         } else {
             0.0
         };
-        Ok(LoadDistribution {
+        LoadDistribution {
             rollers,
             ring_displacement_m: delta,
             force_residual_n: [r[0], r[1]],
@@ -463,7 +500,7 @@ impl LoadModel {
             max_outer_load_n: max_outer,
             loaded_rollers: loaded,
             load_zone_half_angle_rad: zone,
-        })
+        }
     }
 }
 
@@ -684,29 +721,14 @@ impl RollerContext<'_> {
     /// the case to the Newton solve).
     fn free_position(&self, e: f64, theta: f64) -> Option<(f64, f64)> {
         let w = theta.abs();
-        let (mut a, mut b) = (theta.min(0.0) - w, theta.max(0.0) + w);
         let play = |beta: f64| self.play(e, theta, beta).1;
-        let r = 0.5 * (5.0_f64.sqrt() - 1.0);
-        let mut c = b - r * (b - a);
-        let mut d = a + r * (b - a);
-        let (mut fc_, mut fd) = (play(c), play(d));
         // the bracket shrinks by 0.618 per step: 1e-9 |θ| after ≈ 45 steps
-        while b - a > 1e-9 * w {
-            if fc_ >= fd {
-                b = d;
-                d = c;
-                fd = fc_;
-                c = b - r * (b - a);
-                fc_ = play(c);
-            } else {
-                a = c;
-                c = d;
-                fc_ = fd;
-                d = a + r * (b - a);
-                fd = play(d);
-            }
-        }
-        let beta = if fc_ >= fd { c } else { d };
+        let options = GoldenSectionOptions {
+            max_iterations: 200,
+            x_tolerance: 1e-9 * w,
+        };
+        let search = golden_section_max(play, theta.min(0.0) - w, theta.max(0.0) + w, &options);
+        let beta = search.best.0;
         let (u, p) = self.play(e, theta, beta);
         (p >= 0.0).then_some((u, beta))
     }

@@ -79,6 +79,175 @@ struct Workspace {
     roller_evaluations: usize,
 }
 
+/// Checked speeds `(ω_i, ω_o)` and ring misalignment of the operating conditions (finite
+/// values, non-negative radial load, absolute temperatures, misalignment ≤ 1°).
+fn checked_inputs(
+    bearing: &CylindricalRollerBearing,
+    cond: &OperatingConditions,
+) -> Result<(f64, f64, f64), QsError> {
+    let wi = finite("inner_speed_rad_s", cond.inner_speed_rad_s)?;
+    let wo = finite("outer_speed_rad_s", cond.outer_speed_rad_s)?;
+    let fr = finite("radial_load_n", cond.radial_load_n)?;
+    if fr < 0.0 {
+        return Err(QsError::InvalidInput(format!(
+            "radial_load_n must be ≥ 0 (its direction is the reference), got {fr}"
+        )));
+    }
+    let t = &cond.temperatures;
+    for (n, v) in [
+        ("temperatures.inner_ring", t.inner_ring),
+        ("temperatures.outer_ring", t.outer_ring),
+        ("temperatures.rollers", t.rollers),
+        ("temperatures.cage", t.cage),
+        ("temperatures.shaft", t.shaft),
+        ("temperatures.housing", t.housing),
+        ("temperatures.assembly", t.assembly),
+    ] {
+        if !(v.is_finite() && v > 0.0) {
+            return Err(QsError::InvalidInput(format!(
+                "{n} must be a positive absolute temperature in K, got {v}"
+            )));
+        }
+    }
+    let misalignment = finite(
+        "misalignment_rad",
+        cond.misalignment_rad
+            .unwrap_or(bearing.misalignment.inner_ring_tilt),
+    )?;
+    if misalignment.abs() > 1f64.to_radians() {
+        return Err(QsError::InvalidInput(format!(
+            "misalignment {:.1}′ exceeds 1°",
+            misalignment.to_degrees() * 60.0
+        )));
+    }
+    if !(cond.rolling_friction_m.is_finite() && cond.rolling_friction_m >= 0.0) {
+        return Err(QsError::InvalidInput(
+            "rolling_friction_m must be ≥ 0".into(),
+        ));
+    }
+    Ok((wi, wo, misalignment))
+}
+
+/// Viscous film between the roller end faces and the ribs of the guiding ring (the one with
+/// the rib spacing, else the one with two ribs); `None` without such a ring or with the rib
+/// drag switched off. `r_e` is the end-face radius, `(r_w, r_c)` the roller and pitch radii.
+fn rib_film(
+    bearing: &CylindricalRollerBearing,
+    cond: &OperatingConditions,
+    geometry: &OperatingGeometry,
+    r_e: f64,
+    (r_w, r_c): (f64, f64),
+) -> Result<Option<RibFilm>, QsError> {
+    if !cond.end_friction.ribs {
+        return Ok(None);
+    }
+    let (inner, outer) = (&bearing.inner_ring, &bearing.outer_ring);
+    let guiding_outer = match (inner.rib_spacing.is_some(), outer.rib_spacing.is_some()) {
+        (false, true) => Some(true),
+        (true, _) => Some(false),
+        (false, false) if outer.ribs.len() >= 2 => Some(true),
+        (false, false) if inner.ribs.len() >= 2 => Some(false),
+        (false, false) => None,
+    };
+    let (Some(outer_ring), Some(axial)) = (guiding_outer, &geometry.roller_rib) else {
+        return Ok(None);
+    };
+    let ring = if outer_ring { outer } else { inner };
+    if ring.ribs.is_empty() {
+        return Ok(None);
+    }
+    let rim = ring.ribs.iter().map(|r| r.diameter).sum::<f64>() / ring.ribs.len() as f64;
+    let h_rib = 0.5 * (rim - ring.raceway_diameter).abs();
+    let rw0 = 0.5 * bearing.roller.diameter;
+    let area = circular_segment_area(r_e, r_e - (rw0 - h_rib));
+    let ring_t = if outer_ring {
+        cond.temperatures.outer_ring
+    } else {
+        cond.temperatures.inner_ring
+    };
+    let eta = viscosity(cond, ring_t)?;
+    let h = 0.5 * axial.operating_m;
+    let lever_mag = r_w - 0.5 * h_rib;
+    let lever = if outer_ring { lever_mag } else { -lever_mag };
+    Ok(Some(RibFilm {
+        outer_ring,
+        radius_m: r_c + lever,
+        lever_m: lever,
+        coefficient: 2.0 * eta * area / h,
+    }))
+}
+
+/// Drag coefficient of the two roller end faces in their pockets, `T = π μ ω r_e⁴/(2h)` each
+/// (0 when switched off or without a cage).
+fn pocket_coefficient(
+    cond: &OperatingConditions,
+    geometry: &OperatingGeometry,
+    r_e: f64,
+) -> Result<f64, QsError> {
+    let mean_t = cond.temperatures.mean_rings();
+    let coefficient = match (&geometry.pocket_end, cond.end_friction.pocket) {
+        (Some(p), true) => {
+            let eta = viscosity(cond, mean_t)?;
+            let h = 0.5 * p.operating_m;
+            // two end faces, each T = π μ ω r_e⁴ /(2h)
+            std::f64::consts::PI * eta * r_e.powi(4) / h
+        }
+        _ => 0.0,
+    };
+    Ok(coefficient)
+}
+
+/// Guiding land of a land-guided cage and the speed of its ring, rad/s (`(None, 0)` for a
+/// roller-guided cage or with the land model switched off).
+fn land_setup(
+    bearing: &CylindricalRollerBearing,
+    cond: &OperatingConditions,
+    geometry: &OperatingGeometry,
+    cage_mass: f64,
+) -> Result<(Option<LandSetup>, f64), QsError> {
+    let Some(cage) = bearing.cage.as_ref() else {
+        return Ok((None, 0.0));
+    };
+    let (wi, wo) = (cond.inner_speed_rad_s, cond.outer_speed_rad_s);
+    let setup = match (cage.guidance, &geometry.cage, cond.cage_land.enabled) {
+        (CageGuidance::Rollers, _, _) | (_, None, _) | (_, _, false) => (None, 0.0),
+        (guidance, Some(cc), true) => {
+            let outer_ring = guidance == CageGuidance::OuterLand;
+            let ring = if outer_ring {
+                &bearing.outer_ring
+            } else {
+                &bearing.inner_ring
+            };
+            let rail = cond
+                .cage_land
+                .rail_width_m
+                .or(ring.guiding_land.map(|l| l.width))
+                .unwrap_or_else(|| {
+                    let w = 0.5 * (cage.width - cage.pocket_axial);
+                    if w > 0.0 { w } else { 0.25 * cage.width }
+                });
+            let t_land = if outer_ring {
+                cond.temperatures.outer_ring
+            } else {
+                cond.temperatures.inner_ring
+            };
+            (
+                Some(LandSetup {
+                    radius_m: 0.5 * cc.land_diameter_m,
+                    rail_width_m: rail,
+                    rails: cond.cage_land.rails.max(1),
+                    radial_clearance_m: 0.5 * cc.operating_m,
+                    viscosity_pa_s: viscosity(cond, t_land)?,
+                    outer_ring,
+                    cage_mass_kg: cage_mass,
+                }),
+                if outer_ring { wo } else { wi },
+            )
+        }
+    };
+    Ok(setup)
+}
+
 fn finite(name: &str, v: f64) -> Result<f64, QsError> {
     if v.is_finite() {
         Ok(v)
@@ -111,46 +280,7 @@ impl<'a> Setup<'a> {
                     .into(),
             )
         })?;
-        let wi = finite("inner_speed_rad_s", cond.inner_speed_rad_s)?;
-        let wo = finite("outer_speed_rad_s", cond.outer_speed_rad_s)?;
-        let fr = finite("radial_load_n", cond.radial_load_n)?;
-        if fr < 0.0 {
-            return Err(QsError::InvalidInput(format!(
-                "radial_load_n must be ≥ 0 (its direction is the reference), got {fr}"
-            )));
-        }
-        let t = &cond.temperatures;
-        for (n, v) in [
-            ("temperatures.inner_ring", t.inner_ring),
-            ("temperatures.outer_ring", t.outer_ring),
-            ("temperatures.rollers", t.rollers),
-            ("temperatures.cage", t.cage),
-            ("temperatures.shaft", t.shaft),
-            ("temperatures.housing", t.housing),
-            ("temperatures.assembly", t.assembly),
-        ] {
-            if !(v.is_finite() && v > 0.0) {
-                return Err(QsError::InvalidInput(format!(
-                    "{n} must be a positive absolute temperature in K, got {v}"
-                )));
-            }
-        }
-        let misalignment = finite(
-            "misalignment_rad",
-            cond.misalignment_rad
-                .unwrap_or(bearing.misalignment.inner_ring_tilt),
-        )?;
-        if misalignment.abs() > 1f64.to_radians() {
-            return Err(QsError::InvalidInput(format!(
-                "misalignment {:.1}′ exceeds 1°",
-                misalignment.to_degrees() * 60.0
-            )));
-        }
-        if !(cond.rolling_friction_m.is_finite() && cond.rolling_friction_m >= 0.0) {
-            return Err(QsError::InvalidInput(
-                "rolling_friction_m must be ≥ 0".into(),
-            ));
-        }
+        let (wi, wo, misalignment) = checked_inputs(bearing, cond)?;
         let mut warnings = Vec::new();
 
         let nominal_epicyclic = bearing.epicyclic_cage_speed(wi, wo);
@@ -207,72 +337,10 @@ impl<'a> Setup<'a> {
         });
         let r_e = (0.5 * roller.diameter - end_break).max(0.25 * roller.diameter);
 
-        // rib films on the guiding ring (the one with the rib spacing, else the one with ribs)
-        let rib = if cond.end_friction.ribs {
-            let guiding = match (
-                bearing.inner_ring.rib_spacing.is_some(),
-                bearing.outer_ring.rib_spacing.is_some(),
-            ) {
-                (false, true) => Some(true),
-                (true, _) => Some(false),
-                (false, false) => {
-                    if bearing.outer_ring.ribs.len() >= 2 {
-                        Some(true)
-                    } else if bearing.inner_ring.ribs.len() >= 2 {
-                        Some(false)
-                    } else {
-                        None
-                    }
-                }
-            };
-            match (guiding, &geometry.roller_rib) {
-                (Some(outer_ring), Some(axial)) => {
-                    let ring = if outer_ring {
-                        &bearing.outer_ring
-                    } else {
-                        &bearing.inner_ring
-                    };
-                    let rim = ring.ribs.iter().map(|r| r.diameter).sum::<f64>()
-                        / ring.ribs.len().max(1) as f64;
-                    if ring.ribs.is_empty() {
-                        None
-                    } else {
-                        let h_rib = 0.5 * (rim - ring.raceway_diameter).abs();
-                        let rw0 = 0.5 * roller.diameter;
-                        let area = circular_segment_area(r_e, r_e - (rw0 - h_rib));
-                        let ring_t = if outer_ring {
-                            cond.temperatures.outer_ring
-                        } else {
-                            cond.temperatures.inner_ring
-                        };
-                        let eta = viscosity(cond, ring_t)?;
-                        let h = 0.5 * axial.operating_m;
-                        let lever_mag = r_w - 0.5 * h_rib;
-                        let lever = if outer_ring { lever_mag } else { -lever_mag };
-                        Some(RibFilm {
-                            outer_ring,
-                            radius_m: r_c + lever,
-                            lever_m: lever,
-                            coefficient: 2.0 * eta * area / h,
-                        })
-                    }
-                }
-                _ => None,
-            }
-        } else {
-            None
-        };
+        let rib = rib_film(bearing, cond, &geometry, r_e, (r_w, r_c))?;
 
         let mean_t = cond.temperatures.mean_rings();
-        let pocket_coefficient = match (&geometry.pocket_end, cond.end_friction.pocket) {
-            (Some(p), true) => {
-                let eta = viscosity(cond, mean_t)?;
-                let h = 0.5 * p.operating_m;
-                // two end faces, each T = π μ ω r_e⁴ /(2h)
-                std::f64::consts::PI * eta * r_e.powi(4) / h
-            }
-            _ => 0.0,
-        };
+        let pocket_coefficient = pocket_coefficient(cond, &geometry, r_e)?;
 
         // cage
         let cage_mass = if cage.mass_properties.mass > 0.0 {
@@ -280,42 +348,7 @@ impl<'a> Setup<'a> {
         } else {
             cage.computed_mass_properties(bearing.roller_count).mass
         };
-        let (land, land_speed) = match (cage.guidance, &geometry.cage, cond.cage_land.enabled) {
-            (CageGuidance::Rollers, _, _) | (_, None, _) | (_, _, false) => (None, 0.0),
-            (guidance, Some(cc), true) => {
-                let outer_ring = guidance == CageGuidance::OuterLand;
-                let ring = if outer_ring {
-                    &bearing.outer_ring
-                } else {
-                    &bearing.inner_ring
-                };
-                let rail = cond
-                    .cage_land
-                    .rail_width_m
-                    .or(ring.guiding_land.map(|l| l.width))
-                    .unwrap_or_else(|| {
-                        let w = 0.5 * (cage.width - cage.pocket_axial);
-                        if w > 0.0 { w } else { 0.25 * cage.width }
-                    });
-                let t_land = if outer_ring {
-                    cond.temperatures.outer_ring
-                } else {
-                    cond.temperatures.inner_ring
-                };
-                (
-                    Some(LandSetup {
-                        radius_m: 0.5 * cc.land_diameter_m,
-                        rail_width_m: rail,
-                        rails: cond.cage_land.rails.max(1),
-                        radial_clearance_m: 0.5 * cc.operating_m,
-                        viscosity_pa_s: viscosity(cond, t_land)?,
-                        outer_ring,
-                        cage_mass_kg: cage_mass,
-                    }),
-                    if outer_ring { wo } else { wi },
-                )
-            }
-        };
+        let (land, land_speed) = land_setup(bearing, cond, &geometry, cage_mass)?;
         let oil_density = cond
             .lubricant
             .density(mean_t)

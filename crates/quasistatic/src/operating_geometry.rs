@@ -228,87 +228,8 @@ pub fn operating_geometry(
             nuo,
         );
 
-    // --- inner-ring fit on the shaft
-    let m = &cond.mounting;
-    let sm = &m.shaft_material;
-    let (a_s, b_s, c_s) = (0.5 * m.shaft_bore_diameter_m, 0.5 * d_bore, 0.5 * d_i);
-    let inner_fit = {
-        let thermal =
-            d_bore * (sm.thermal_expansion * (t.shaft - ta) - ax.inner_ring * (t.inner_ring - ta));
-        let u_ring = centrifugal_displacement(b_s, b_s, c_s, wi, ir.material.density, ei, nui);
-        let u_shaft = centrifugal_displacement(
-            b_s,
-            a_s,
-            b_s,
-            wi,
-            sm.density,
-            sm.youngs_modulus,
-            sm.poisson_ratio,
-        );
-        let centrifugal = -2.0 * (u_ring - u_shaft);
-        let op = m.shaft_interference_m + thermal + centrifugal;
-        let p = fit_pressure(op, a_s, b_s, c_s, part(sm), (ei, nui));
-        let growth = 4.0 * p * b_s * b_s * c_s / (ei * (c_s * c_s - b_s * b_s));
-        if m.shaft_interference_m > 0.0 && op <= 0.0 {
-            warnings.push(format!(
-                "inner-ring fit lost in operation: interference {:.1} µm → {:.1} µm",
-                m.shaft_interference_m * 1e6,
-                op * 1e6
-            ));
-        }
-        FitState {
-            mounting_interference_m: m.shaft_interference_m,
-            thermal_change_m: thermal,
-            centrifugal_change_m: centrifugal,
-            operating_interference_m: op,
-            pressure_pa: p,
-            raceway_change_m: growth,
-        }
-    };
-
-    // --- outer-ring fit in the housing
-    let hm = &m.housing_material;
-    let (a_h, b_h) = (0.5 * d_o, 0.5 * d_out);
-    let c_h = m
-        .housing_outside_diameter_m
-        .map_or(f64::INFINITY, |d| 0.5 * d);
-    let outer_fit = {
-        let thermal =
-            d_out * (ax.outer_ring * (t.outer_ring - ta) - hm.thermal_expansion * (t.housing - ta));
-        let u_ring = centrifugal_displacement(b_h, a_h, b_h, wo, or.material.density, eo, nuo);
-        let u_housing = if c_h.is_finite() {
-            centrifugal_displacement(
-                b_h,
-                b_h,
-                c_h,
-                wo,
-                hm.density,
-                hm.youngs_modulus,
-                hm.poisson_ratio,
-            )
-        } else {
-            0.0
-        };
-        let centrifugal = -2.0 * (u_housing - u_ring);
-        let op = m.housing_interference_m + thermal + centrifugal;
-        let p = fit_pressure(op, a_h, b_h, c_h, (eo, nuo), part(hm));
-        let change = -4.0 * p * b_h * b_h * a_h / (eo * (b_h * b_h - a_h * a_h));
-        if m.housing_interference_m > 0.0 && op <= 0.0 {
-            warnings.push(format!(
-                "outer-ring fit lost in operation: interference {:.1} µm → {:.1} µm",
-                m.housing_interference_m * 1e6,
-                op * 1e6
-            ));
-        }
-        FitState {
-            mounting_interference_m: m.housing_interference_m,
-            thermal_change_m: thermal,
-            centrifugal_change_m: centrifugal,
-            operating_interference_m: op,
-            pressure_pa: p,
-            raceway_change_m: change,
-        }
-    };
+    let inner_fit = inner_ring_fit(bearing, cond, &mut warnings);
+    let outer_fit = outer_ring_fit(bearing, cond, &mut warnings);
 
     let g0 = bearing.clearance.radial;
     let contributions = ClearanceContributions {
@@ -330,12 +251,160 @@ pub fn operating_geometry(
     let d_w_op = d_w + th_w;
     let l_op = bearing.roller.length * (1.0 + ax.rollers * (t.rollers - ta));
 
-    // --- cage floating clearance
-    let cage = bearing.cage.as_ref().and_then(|c| {
+    let cage = cage_clearance(
+        bearing,
+        cond,
+        (d_i_op - d_i, d_o_op - d_o),
+        cage_speed_rad_s,
+        &mut warnings,
+    );
+    let roller_rib = roller_rib_clearance(bearing, cond, &mut warnings);
+    let pocket_end = pocket_end_clearance(bearing, cond);
+
+    OperatingGeometry {
+        clearance: contributions,
+        inner_raceway_diameter_m: d_i_op,
+        outer_raceway_diameter_m: d_o_op,
+        roller_diameter_m: d_w_op,
+        roller_length_m: l_op,
+        pitch_diameter_m: 0.5 * (d_i_op + d_o_op),
+        inner_fit,
+        outer_fit,
+        cage,
+        roller_rib,
+        pocket_end,
+        warnings,
+    }
+}
+
+/// Inner-ring fit on the shaft at the operating temperatures and speed (module docs, Lamé).
+fn inner_ring_fit(
+    bearing: &CylindricalRollerBearing,
+    cond: &OperatingConditions,
+    warnings: &mut Vec<String>,
+) -> FitState {
+    let (t, ax, m) = (&cond.temperatures, &cond.thermal_expansion, &cond.mounting);
+    let ta = t.assembly;
+    let wi = cond.inner_speed_rad_s;
+    let ir = &bearing.inner_ring;
+    let (ei, nui) = ring_material(&ir.material);
+    let d_bore = ir.body_diameter;
+    let sm = &m.shaft_material;
+    let (a_s, b_s, c_s) = (
+        0.5 * m.shaft_bore_diameter_m,
+        0.5 * d_bore,
+        0.5 * ir.raceway_diameter,
+    );
+
+    let thermal =
+        d_bore * (sm.thermal_expansion * (t.shaft - ta) - ax.inner_ring * (t.inner_ring - ta));
+    let u_ring = centrifugal_displacement(b_s, b_s, c_s, wi, ir.material.density, ei, nui);
+    let u_shaft = centrifugal_displacement(
+        b_s,
+        a_s,
+        b_s,
+        wi,
+        sm.density,
+        sm.youngs_modulus,
+        sm.poisson_ratio,
+    );
+    let centrifugal = -2.0 * (u_ring - u_shaft);
+    let op = m.shaft_interference_m + thermal + centrifugal;
+    let p = fit_pressure(op, a_s, b_s, c_s, part(sm), (ei, nui));
+    let growth = 4.0 * p * b_s * b_s * c_s / (ei * (c_s * c_s - b_s * b_s));
+    let fit = FitState {
+        mounting_interference_m: m.shaft_interference_m,
+        thermal_change_m: thermal,
+        centrifugal_change_m: centrifugal,
+        operating_interference_m: op,
+        pressure_pa: p,
+        raceway_change_m: growth,
+    };
+    warn_if_fit_lost(&fit, "inner", warnings);
+    fit
+}
+
+/// Outer-ring fit in the housing at the operating temperatures and speed (module docs, Lamé).
+fn outer_ring_fit(
+    bearing: &CylindricalRollerBearing,
+    cond: &OperatingConditions,
+    warnings: &mut Vec<String>,
+) -> FitState {
+    let (t, ax, m) = (&cond.temperatures, &cond.thermal_expansion, &cond.mounting);
+    let ta = t.assembly;
+    let wo = cond.outer_speed_rad_s;
+    let or = &bearing.outer_ring;
+    let (eo, nuo) = ring_material(&or.material);
+    let d_out = or.body_diameter;
+    let hm = &m.housing_material;
+    let (a_h, b_h) = (0.5 * or.raceway_diameter, 0.5 * d_out);
+    let c_h = m
+        .housing_outside_diameter_m
+        .map_or(f64::INFINITY, |d| 0.5 * d);
+
+    let thermal =
+        d_out * (ax.outer_ring * (t.outer_ring - ta) - hm.thermal_expansion * (t.housing - ta));
+    let u_ring = centrifugal_displacement(b_h, a_h, b_h, wo, or.material.density, eo, nuo);
+    let u_housing = if c_h.is_finite() {
+        centrifugal_displacement(
+            b_h,
+            b_h,
+            c_h,
+            wo,
+            hm.density,
+            hm.youngs_modulus,
+            hm.poisson_ratio,
+        )
+    } else {
+        0.0
+    };
+    let centrifugal = -2.0 * (u_housing - u_ring);
+    let op = m.housing_interference_m + thermal + centrifugal;
+    let p = fit_pressure(op, a_h, b_h, c_h, (eo, nuo), part(hm));
+    let change = -4.0 * p * b_h * b_h * a_h / (eo * (b_h * b_h - a_h * a_h));
+    let fit = FitState {
+        mounting_interference_m: m.housing_interference_m,
+        thermal_change_m: thermal,
+        centrifugal_change_m: centrifugal,
+        operating_interference_m: op,
+        pressure_pa: p,
+        raceway_change_m: change,
+    };
+    warn_if_fit_lost(&fit, "outer", warnings);
+    fit
+}
+
+/// Warns when a mounting interference is lost in operation.
+fn warn_if_fit_lost(fit: &FitState, ring: &str, warnings: &mut Vec<String>) {
+    if fit.mounting_interference_m > 0.0 && fit.operating_interference_m <= 0.0 {
+        warnings.push(format!(
+            "{ring}-ring fit lost in operation: interference {:.1} µm → {:.1} µm",
+            fit.mounting_interference_m * 1e6,
+            fit.operating_interference_m * 1e6
+        ));
+    }
+}
+
+/// Operating cage floating clearance; `raceway_growth` is the operating growth of the inner
+/// and outer raceway diameters, m.
+fn cage_clearance(
+    bearing: &CylindricalRollerBearing,
+    cond: &OperatingConditions,
+    raceway_growth: (f64, f64),
+    cage_speed_rad_s: f64,
+    warnings: &mut Vec<String>,
+) -> Option<CageClearance> {
+    let (t, ax) = (&cond.temperatures, &cond.thermal_expansion);
+    let ta = t.assembly;
+    let (d_i, d_o) = (
+        bearing.inner_ring.raceway_diameter,
+        bearing.outer_ring.raceway_diameter,
+    );
+    bearing.cage.as_ref().and_then(|c| {
         let land = c.land_diameter()?;
         let (ring_growth, ring_d) = match c.guidance {
-            CageGuidance::InnerLand => (d_i_op - d_i, d_i),
-            _ => (d_o_op - d_o, d_o),
+            CageGuidance::InnerLand => (raceway_growth.0, d_i),
+            _ => (raceway_growth.1, d_o),
         };
         // land on the same ring: its diameter grows in proportion to the raceway's
         let land_growth = ring_growth * land / ring_d;
@@ -374,10 +443,19 @@ pub fn operating_geometry(
             operating_m: op,
             land_diameter_m: land + land_growth,
         })
-    });
+    })
+}
 
-    // --- roller–rib axial clearance: on the ring that carries two ribs
-    let roller_rib = bearing.roller_rib_axial_clearance().map(|c0| {
+/// Roller–rib axial clearance in operation, on the ring that carries two ribs.
+fn roller_rib_clearance(
+    bearing: &CylindricalRollerBearing,
+    cond: &OperatingConditions,
+    warnings: &mut Vec<String>,
+) -> Option<AxialClearance> {
+    let (t, ax) = (&cond.temperatures, &cond.thermal_expansion);
+    let ta = t.assembly;
+    let (ir, or) = (&bearing.inner_ring, &bearing.outer_ring);
+    bearing.roller_rib_axial_clearance().map(|c0| {
         let (ring_alpha, ring_t) = if or.rib_spacing.is_some() && ir.rib_spacing.is_none() {
             (ax.outer_ring, t.outer_ring)
         } else {
@@ -400,9 +478,17 @@ pub fn operating_geometry(
             roller_thermal_m: roller_th,
             operating_m: op,
         }
-    });
+    })
+}
 
-    let pocket_end = bearing.cage.as_ref().map(|c| {
+/// Roller–pocket axial clearance in operation (at least 1 µm).
+fn pocket_end_clearance(
+    bearing: &CylindricalRollerBearing,
+    cond: &OperatingConditions,
+) -> Option<AxialClearance> {
+    let (t, ax) = (&cond.temperatures, &cond.thermal_expansion);
+    let ta = t.assembly;
+    bearing.cage.as_ref().map(|c| {
         let c0 = c.pocket_axial - bearing.roller.length;
         let cage_th = ax.cage * c.pocket_axial * (t.cage - ta);
         let roller_th = ax.rollers * bearing.roller.length * (t.rollers - ta);
@@ -412,22 +498,7 @@ pub fn operating_geometry(
             roller_thermal_m: roller_th,
             operating_m: (c0 + cage_th - roller_th).max(1e-6),
         }
-    });
-
-    OperatingGeometry {
-        clearance: contributions,
-        inner_raceway_diameter_m: d_i_op,
-        outer_raceway_diameter_m: d_o_op,
-        roller_diameter_m: d_w_op,
-        roller_length_m: l_op,
-        pitch_diameter_m: 0.5 * (d_i_op + d_o_op),
-        inner_fit,
-        outer_fit,
-        cage,
-        roller_rib,
-        pocket_end,
-        warnings,
-    }
+    })
 }
 
 #[cfg(test)]

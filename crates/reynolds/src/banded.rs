@@ -1,11 +1,13 @@
 //! Banded direct solvers: LU with partial pivoting for general band matrices and Cholesky for
 //! symmetric positive definite ones, plus the Schur-complement (bordered) solve used for periodic
-//! wrap-around couplings and a few dense rows. Hand-written to keep the crate dependency-free.
+//! wrap-around couplings and a few dense rows; the Schur complement is factorised by
+//! [`rolldyn_numerics::dense_lu`].
 //!
 //! Unknowns of the 2-D Reynolds solver are ordered axial-fastest, so the bandwidth equals the
 //! number of axial nodes and a factorisation costs n·b²/2 (Cholesky) or n·kl·(kl+ku) (LU).
 
 use crate::error::{Result, ReynoldsError};
+use rolldyn_numerics::dense_lu::DenseLu;
 
 /// General band matrix with `kl` sub- and `ku` super-diagonals, stored by rows with room for the
 /// fill-in of partial pivoting (row i holds columns i−kl … i+kl+ku).
@@ -348,73 +350,6 @@ impl Factor for BandCholesky {
     }
 }
 
-/// Dense LU with partial pivoting for small systems (Schur complements, 2×2…100×100).
-#[derive(Debug, Clone)]
-pub struct DenseLu {
-    n: usize,
-    a: Vec<f64>,
-    piv: Vec<usize>,
-}
-
-impl DenseLu {
-    /// Factorises the row-major n×n matrix `a`.
-    pub fn new(n: usize, mut a: Vec<f64>) -> Result<Self> {
-        let mut piv = vec![0; n];
-        for k in 0..n {
-            let mut p = k;
-            let mut best = a[k * n + k].abs();
-            for i in k + 1..n {
-                if a[i * n + k].abs() > best {
-                    best = a[i * n + k].abs();
-                    p = i;
-                }
-            }
-            if best == 0.0 || !best.is_finite() {
-                return Err(ReynoldsError::Singular("dense LU"));
-            }
-            piv[k] = p;
-            if p != k {
-                for j in 0..n {
-                    a.swap(k * n + j, p * n + j);
-                }
-            }
-            let inv = 1.0 / a[k * n + k];
-            for i in k + 1..n {
-                let m = a[i * n + k] * inv;
-                a[i * n + k] = m;
-                if m != 0.0 {
-                    for j in k + 1..n {
-                        a[i * n + j] -= m * a[k * n + j];
-                    }
-                }
-            }
-        }
-        Ok(Self { n, a, piv })
-    }
-
-    /// Solves in place.
-    pub fn solve(&self, b: &mut [f64]) {
-        let n = self.n;
-        for k in 0..n {
-            b.swap(k, self.piv[k]);
-        }
-        for i in 0..n {
-            let mut s = b[i];
-            for j in 0..i {
-                s -= self.a[i * n + j] * b[j];
-            }
-            b[i] = s;
-        }
-        for i in (0..n).rev() {
-            let mut s = b[i];
-            for j in i + 1..n {
-                s -= self.a[i * n + j] * b[j];
-            }
-            b[i] = s / self.a[i * n + i];
-        }
-    }
-}
-
 /// Bordered system [[A, E], [F, G]] [x; z] = [r; s] with A factorised (band) and a small border
 /// of size m: E is n×m (column-major: `e[c]` is column c), F is m×n (row-major: `f[r]` is row r),
 /// G is m×m row-major. Solved by the Schur complement S = G − F A⁻¹ E.
@@ -454,7 +389,7 @@ impl<'a, A: Factor> Bordered<'a, A> {
                 s[r * m + c] -= d;
             }
         }
-        let schur = DenseLu::new(m, s)?;
+        let schur = DenseLu::new(m, s).map_err(|_| ReynoldsError::Singular("dense LU"))?;
         Ok(BorderedFactor {
             sys: self,
             aie,

@@ -1,103 +1,90 @@
-//! Minimal radix-2 complex FFT for Toeplitz (convolution) matrix–vector products of the elastic
-//! influence matrices (O(n log n) instead of O(n²)).
+//! Toeplitz matrix–vector products by FFT (`rustfft`) for the elastic influence matrices:
+//! O(n log n) instead of O(n²). The n × n Toeplitz matrix `Dᵢⱼ = d(i − j)` is embedded in a
+//! circulant of length `N ≥ 2n`, whose product is a cyclic convolution: `D p = IFFT(FFT(c) ·
+//! FFT(p))`, first n entries, with `p` zero-padded.
 
-/// Precomputed plan for transforms of length `n` (a power of two).
-#[derive(Debug, Clone)]
-pub struct Fft {
+use rustfft::num_complex::Complex;
+use rustfft::{Fft, FftPlanner};
+use std::sync::Arc;
+
+/// Planned FFT product with a fixed Toeplitz matrix.
+#[derive(Clone)]
+pub struct ToeplitzFft {
     n: usize,
-    /// Twiddles e^{−2πik/n}, k < n/2 (re, im).
-    tw: Vec<(f64, f64)>,
-    rev: Vec<usize>,
+    forward: Arc<dyn Fft<f64>>,
+    inverse: Arc<dyn Fft<f64>>,
+    /// FFT of the circulant's first column, scaled by 1/N (the inverse transform is unscaled).
+    kernel: Vec<Complex<f64>>,
 }
 
-impl Fft {
-    /// Plan for length `n` (must be a power of two ≥ 2).
-    pub fn new(n: usize) -> Self {
-        assert!(n.is_power_of_two() && n >= 2);
-        let bits = n.trailing_zeros();
-        let rev = (0..n)
-            .map(|i| i.reverse_bits() >> (usize::BITS - bits))
-            .collect();
-        let tw = (0..n / 2)
-            .map(|k| {
-                let a = -std::f64::consts::TAU * k as f64 / n as f64;
-                (a.cos(), a.sin())
-            })
-            .collect();
-        Self { n, tw, rev }
+impl std::fmt::Debug for ToeplitzFft {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("ToeplitzFft")
+            .field("n", &self.n)
+            .field("len", &self.kernel.len())
+            .finish()
+    }
+}
+
+impl ToeplitzFft {
+    /// Plan for the n × n Toeplitz matrix with `lags[(i − j) + n − 1] = Dᵢⱼ` (2n − 1 values).
+    pub fn new(lags: &[f64]) -> Self {
+        let n = lags.len().div_ceil(2);
+        let big = (2 * n).next_power_of_two();
+        let mut planner = FftPlanner::new();
+        let forward = planner.plan_fft_forward(big);
+        let inverse = planner.plan_fft_inverse(big);
+        // circulant column: c[m] = d for lag m (i − j = m mod N)
+        let mut kernel = vec![Complex::new(0.0, 0.0); big];
+        for m in 0..n {
+            kernel[m].re = lags[m + n - 1];
+            if m > 0 {
+                kernel[big - m].re = lags[n - 1 - m];
+            }
+        }
+        forward.process(&mut kernel);
+        let scale = 1.0 / big as f64;
+        kernel.iter_mut().for_each(|k| *k *= scale);
+        Self {
+            n,
+            forward,
+            inverse,
+            kernel,
+        }
     }
 
-    /// Length.
-    pub fn len(&self) -> usize {
-        self.n
-    }
-
-    /// True for a zero-length plan (never: lengths are ≥ 2).
-    pub fn is_empty(&self) -> bool {
-        self.n == 0
-    }
-
-    /// In-place transform; `inverse` uses e^{+…} and scales by 1/n.
-    pub fn transform(&self, re: &mut [f64], im: &mut [f64], inverse: bool) {
+    /// `out = D p` (first n entries of `p` and `out`).
+    pub fn apply(&self, p: &[f64], out: &mut [f64]) {
         let n = self.n;
-        for i in 0..n {
-            let j = self.rev[i];
-            if j > i {
-                re.swap(i, j);
-                im.swap(i, j);
-            }
+        let mut work = vec![Complex::new(0.0, 0.0); self.kernel.len()];
+        for (w, &pj) in work.iter_mut().zip(&p[..n]) {
+            w.re = pj;
         }
-        let mut len = 2;
-        while len <= n {
-            let half = len / 2;
-            let step = n / len;
-            for start in (0..n).step_by(len) {
-                for k in 0..half {
-                    let (wr, wi0) = self.tw[k * step];
-                    let wi = if inverse { -wi0 } else { wi0 };
-                    let (a, b) = (start + k, start + k + half);
-                    let (xr, xi) = (re[b] * wr - im[b] * wi, re[b] * wi + im[b] * wr);
-                    re[b] = re[a] - xr;
-                    im[b] = im[a] - xi;
-                    re[a] += xr;
-                    im[a] += xi;
-                }
-            }
-            len *= 2;
+        self.forward.process(&mut work);
+        for (w, k) in work.iter_mut().zip(&self.kernel) {
+            *w *= k;
         }
-        if inverse {
-            let s = 1.0 / n as f64;
-            re.iter_mut().for_each(|v| *v *= s);
-            im.iter_mut().for_each(|v| *v *= s);
+        self.inverse.process(&mut work);
+        for (o, w) in out[..n].iter_mut().zip(&work) {
+            *o = w.re;
         }
     }
 }
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use super::ToeplitzFft;
 
     #[test]
-    fn fft_round_trip_and_dft() {
-        let n = 16;
-        let f = Fft::new(n);
-        let x: Vec<f64> = (0..n)
-            .map(|i| (i as f64 * 0.7).sin() + 0.1 * i as f64)
-            .collect();
-        let (mut re, mut im) = (x.clone(), vec![0.0; n]);
-        f.transform(&mut re, &mut im, false);
-        for k in 0..n {
-            let (mut a, mut b) = (0.0, 0.0);
-            for (j, xj) in x.iter().enumerate() {
-                let t = -std::f64::consts::TAU * (k * j) as f64 / n as f64;
-                a += xj * t.cos();
-                b += xj * t.sin();
-            }
-            assert!((a - re[k]).abs() < 1e-12 && (b - im[k]).abs() < 1e-12);
-        }
-        f.transform(&mut re, &mut im, true);
-        for j in 0..n {
-            assert!((re[j] - x[j]).abs() < 1e-12 && im[j].abs() < 1e-12);
+    fn matches_the_direct_toeplitz_product() {
+        let n = 13;
+        let lags: Vec<f64> = (0..2 * n - 1).map(|m| 1.0 / (1.0 + m as f64)).collect();
+        let p: Vec<f64> = (0..n).map(|i| (i as f64 * 0.7).sin() + 0.1).collect();
+        let mut out = vec![0.0; n];
+        ToeplitzFft::new(&lags).apply(&p, &mut out);
+        for (i, oi) in out.iter().enumerate() {
+            let direct: f64 = (0..n).map(|j| lags[i + n - 1 - j] * p[j]).sum();
+            assert!((oi - direct).abs() < 1e-13, "{i}: {oi} vs {direct}");
         }
     }
 }

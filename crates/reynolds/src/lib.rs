@@ -32,7 +32,6 @@ pub mod reynolds2d;
 pub mod roots;
 pub mod slip;
 pub mod thermal;
-pub mod tridiagonal;
 pub mod viscosity;
 pub mod waviness;
 

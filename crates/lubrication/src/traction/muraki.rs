@@ -26,9 +26,9 @@
 
 use crate::contact_state::SlicePressure;
 use crate::lubricant::SolidThermal;
-use crate::step::step;
 use crate::viscosity::{PiezoViscosity, viscosity_at_pressure};
 use rolldyn_numerics::fastmath;
+use rolldyn_numerics::step::step;
 
 /// How (1.8) is continued to small dimensionless shear rates (F-34). See the module docs.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]

@@ -1,6 +1,6 @@
 //! Two-level regularised friction law with the cubic STEP (SPEC §3.4, seed 000 Fig. 2.6, F-19).
 
-use crate::step::step;
+use rolldyn_numerics::step::step;
 
 /// Parameters μ_s, μ_d, v_s, v_d of the two-level law (0 < v_s < v_d).
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -15,6 +15,7 @@ pub mod half_space;
 pub mod layer;
 pub mod liner;
 
+use crate::fft::ToeplitzFft;
 use crate::grid::Grid1d;
 
 /// A plane-strain line compliance kernel K(u) (m of deflection per Pa of pressure per m of
@@ -101,8 +102,8 @@ pub struct Influence {
     toeplitz: bool,
     /// Toeplitz: d[(i − j) + n − 1]; dense: row-major n×n.
     d: Vec<f64>,
-    /// FFT plan and transformed kernel for Toeplitz products (n ≥ 64).
-    fft: Option<(crate::fft::Fft, Vec<f64>, Vec<f64>)>,
+    /// FFT product for Toeplitz matrices (n ≥ 64).
+    fft: Option<ToeplitzFft>,
 }
 
 impl Influence {
@@ -117,21 +118,7 @@ impl Influence {
                     kernel.integral(k * h - 0.5 * h, k * h + 0.5 * h)
                 })
                 .collect::<Vec<f64>>();
-            let fft = (n >= 64).then(|| {
-                // circulant embedding of length N ≥ 2n: c[m] = d for lag m (i − j = m mod N)
-                let big = (2 * n).next_power_of_two();
-                let plan = crate::fft::Fft::new(big);
-                let mut re = vec![0.0; big];
-                let mut im = vec![0.0; big];
-                for m in 0..n {
-                    re[m] = d[m + n - 1];
-                    if m > 0 {
-                        re[big - m] = d[n - 1 - m];
-                    }
-                }
-                plan.transform(&mut re, &mut im, false);
-                (plan, re, im)
-            });
+            let fft = (n >= 64).then(|| ToeplitzFft::new(&d));
             Self {
                 n,
                 toeplitz: true,
@@ -173,19 +160,8 @@ impl Influence {
     /// δ = D p.
     pub fn apply(&self, p: &[f64], out: &mut [f64]) {
         let n = self.n;
-        if let Some((plan, kr, ki)) = &self.fft {
-            let big = plan.len();
-            let mut re = vec![0.0; big];
-            let mut im = vec![0.0; big];
-            re[..n].copy_from_slice(&p[..n]);
-            plan.transform(&mut re, &mut im, false);
-            for k in 0..big {
-                let (a, b) = (re[k], im[k]);
-                re[k] = a * kr[k] - b * ki[k];
-                im[k] = a * ki[k] + b * kr[k];
-            }
-            plan.transform(&mut re, &mut im, true);
-            out[..n].copy_from_slice(&re[..n]);
+        if let Some(fft) = &self.fft {
+            fft.apply(p, out);
             return;
         }
         for i in 0..n {
