@@ -8,6 +8,7 @@ use crate::error::DynError;
 use crate::land::{CageLandModel, TwoLevelLand};
 use crate::layout::Layout;
 use crate::parameters::ContactParameters;
+use crate::settings::DynamicsSettings;
 use crate::slice_kernel::SliceConstants;
 use rolldyn_contact::damping::SliceDamping;
 use rolldyn_geometry::{
@@ -188,8 +189,11 @@ pub(crate) struct Model {
     pub rm: f64,
     /// γ = D_w/d_m
     pub gamma: f64,
-    /// penetration reported as divergence, m
+    /// penetration reported as divergence, m ([`DynamicsSettings::divergence_penetration_m`])
     pub div_limit: f64,
+    /// share of the bar stiffness and damping per evaluation point
+    /// ([`DynamicsSettings::bar_point_share`])
+    pub bar_share: f64,
     /// roller ends ↔ ribs and cage pocket faces
     pub ends: EndContacts,
 }
@@ -392,6 +396,7 @@ impl Model {
             rib_reduced_modulus: inner.reduced_modulus,
             rib_roughness: inner.roughness,
         };
+        let defaults = DynamicsSettings::default();
         Ok(Self {
             layout: Layout { rollers: z },
             z,
@@ -428,9 +433,16 @@ impl Model {
             params,
             rm,
             gamma: roller.diameter / bearing.pitch_diameter(),
-            div_limit: 1e-4,
+            div_limit: defaults.divergence_penetration_m,
+            bar_share: defaults.bar_point_share,
             ends,
         })
+    }
+
+    /// Takes the run settings that enter the right-hand side.
+    pub fn apply(&mut self, settings: &DynamicsSettings) {
+        self.div_limit = settings.divergence_penetration_m;
+        self.bar_share = settings.bar_point_share;
     }
 
     /// Epicyclic cage speed for ring speeds (ω_i, ω_o).

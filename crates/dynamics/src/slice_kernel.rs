@@ -22,6 +22,7 @@ use rolldyn_contact::damping::SliceDamping;
 use rolldyn_lubrication::SliceColumnsMut;
 use rolldyn_numerics::avx2::LoopCopy;
 use rolldyn_numerics::fastmath;
+use rolldyn_numerics::step::step;
 use std::ops::Range;
 
 /// Vector width of the widest loop copy (AVX-512F: eight `f64`): the slot arrays have this
@@ -445,14 +446,14 @@ rolldyn_numerics::avx2_twin! {
             let v_normal = dot(vrel, n);
             let delta_dot = -v_normal;
             // slice law k_s δⁿ (exp(n ln δ)); the damping ramp STEP(δ, 0, 0, δ*, C_max) of
-            // rolldyn_contact::damping with Δ = δ·(1/δ*) clamped to [0, 1]
+            // rolldyn_contact::damping, written in the normalised approach δ·(1/δ*) (a
+            // multiplication instead of a division per slot): STEP(δ/δ*, 0, 0, 1, C_max)
             let elastic = if touching {
                 stiff[s] * fastmath::exp(ring.exponent * fastmath::ln(delta))
             } else {
                 0.0
             };
-            let ramp = (delta * inv_delta_star[s]).clamp(0.0, 1.0);
-            let damping = c_max[s] * ramp * ramp * (3.0 - 2.0 * ramp);
+            let damping = step(delta * inv_delta_star[s], 0.0, 0.0, 1.0, c_max[s]);
             let pressing = elastic + damping * delta_dot;
             let q = if touching && pressing > 0.0 {
                 pressing
