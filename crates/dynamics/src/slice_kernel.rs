@@ -11,8 +11,8 @@
 //! collects the loaded slices of each roller in slice order into the traction batch
 //! ([`SliceOutputs::collect_loaded`], used by [`crate::rhs`]) and later sums each slice's normal
 //! and friction force in that order.
-//! On x86-64 the loop is also compiled for AVX2 (four lanes) and AVX-512F (eight lanes) and the
-//! widest copy the CPU supports is chosen at run time; all versions give the same bits (no
+//! The loop is compiled for the build's target (AVX2, four lanes, in the x86-64-v3 build) and,
+//! on x86-64, also for AVX-512F (eight lanes), chosen at run time; both give the same bits (no
 //! fused multiply–add: Rust never contracts on its own, and `rolldyn_numerics::fastmath` is
 //! written for that).
 
@@ -149,7 +149,7 @@ impl RollerLanes {
     }
 }
 
-rolldyn_numerics::avx2_twin! {
+rolldyn_numerics::avx512_twin! {
     /// Writes `values[i]` into `vectors` whole vectors of [`LANES`] slots of `columns[i]` from
     /// slot `start` on (`VECTORS` of them when it is not 0): one vector store per [`LANES`]
     /// slots in the AVX-512F copy.
@@ -158,7 +158,7 @@ rolldyn_numerics::avx2_twin! {
         start: usize,
         vectors: usize,
         values: &[f64; ROLLER_COLUMNS],
-    ) = fill_columns_portable / fill_columns_avx2 / fill_columns_avx512 {
+    ) = fill_columns_portable / fill_columns_avx512 {
         let vectors = if VECTORS > 0 { VECTORS } else { vectors };
         for (column, &value) in columns.iter_mut().zip(values) {
             let slots = &mut column[start..start + vectors * LANES];
@@ -293,7 +293,8 @@ pub(crate) fn evaluate<const INNER: bool>(
     slots: Range<usize>,
     out: &mut SliceOutputs,
 ) {
-    evaluate_with::<INNER>(sc, rollers, race_drop, ring, slots, out, LoopCopy::detect());
+    // SAFETY: `LoopCopy::detect` names the widest copy this CPU supports.
+    unsafe { evaluate_with::<INNER>(sc, rollers, race_drop, ring, slots, out, LoopCopy::detect()) };
 }
 
 /// The inputs of the slot loop, each cut to the loop's slots.
@@ -308,9 +309,12 @@ struct SlotInputs<'a> {
     roller: [&'a [f64]; ROLLER_COLUMNS],
 }
 
-/// [`evaluate`] with the compiled copy of the loop chosen by the caller (only one that the CPU
-/// supports: [`LoopCopy::detect`] or narrower).
-fn evaluate_with<'a, const INNER: bool>(
+/// [`evaluate`] with the compiled copy of the loop chosen by the caller.
+///
+/// # Safety
+/// `copy` must be a copy this CPU supports: [`LoopCopy::detect`] or narrower (the AVX-512F
+/// copy executes AVX-512F instructions).
+unsafe fn evaluate_with<'a, const INNER: bool>(
     sc: &'a SliceConstants,
     rollers: &'a RollerLanes,
     race_drop: &'a [f64],
@@ -363,16 +367,14 @@ fn evaluate_with<'a, const INNER: bool>(
         };
     }
     match copy {
-        // SAFETY: `copy` names only copies the CPU supports ([`evaluate`], the tests below).
+        // SAFETY: the CPU supports AVX-512F (the caller's contract).
         #[cfg(target_arch = "x86_64")]
         LoopCopy::Avx512 => unsafe { call!(slots_avx512) },
-        #[cfg(target_arch = "x86_64")]
-        LoopCopy::Avx2 => unsafe { call!(slots_avx2) },
         _ => call!(slots),
     }
 }
 
-rolldyn_numerics::avx2_twin! {
+rolldyn_numerics::avx512_twin! {
     /// The loop over the slots. Per slot (SPEC §2.1–2.2): slice centre `p = c + x a`, its
     /// distance `ρ` from the ring axis, approach `δ = R_i + R_w − ρ − z_s −
     /// z_race` (inner) or `ρ + R_w − R_o − z_s − z_race` (outer, seed 000 (2.5)),
@@ -395,7 +397,7 @@ rolldyn_numerics::avx2_twin! {
         tz: &mut [f64],
         vs_out: &mut [f64],
         u_out: &mut [f64],
-    ) / slots_avx2 / slots_avx512 {
+    ) / slots_avx512 {
         // equal lengths, known to the compiler: no bounds checks in the loop
         let n = inputs.x.len();
         let (x, drop, stiff, c_max, inv_delta_star, race_drop) = (
@@ -528,7 +530,8 @@ mod tests {
         }
     }
 
-    /// Evaluates every slot of `sc` for the rollers `rollers` with the loop copy `copy`.
+    /// Evaluates every slot of `sc` for the rollers `rollers` with the loop copy `copy` (one
+    /// this CPU supports).
     fn run(
         sc: &SliceConstants,
         rollers: &[RollerKinematics],
@@ -542,10 +545,14 @@ mod tests {
         let mut out = SliceOutputs::new(sc.x.len());
         let all = 0..rollers.len() * sc.slices;
         let race_drop = vec![0.0; sc.x.len()];
-        if inner {
-            evaluate_with::<true>(sc, &lanes, &race_drop, &ring(true), all, &mut out, copy);
-        } else {
-            evaluate_with::<false>(sc, &lanes, &race_drop, &ring(false), all, &mut out, copy);
+        assert!(copy <= LoopCopy::detect(), "{copy:?} on this CPU");
+        // SAFETY: the CPU supports `copy` (asserted just above).
+        unsafe {
+            if inner {
+                evaluate_with::<true>(sc, &lanes, &race_drop, &ring(true), all, &mut out, copy);
+            } else {
+                evaluate_with::<false>(sc, &lanes, &race_drop, &ring(false), all, &mut out, copy);
+            }
         }
         out
     }
@@ -639,7 +646,7 @@ mod tests {
     }
 
     /// Rollers evaluated back to back in one loop give each roller's own results, bit for bit,
-    /// and the AVX2 and AVX-512F copies (those this CPU supports) give the bits of the portable
+    /// and the AVX-512F copy (if this CPU supports it) gives the bits of the portable
     /// loop.
     #[test]
     fn packed_rollers_and_loop_copies_agree() {
@@ -656,7 +663,7 @@ mod tests {
                     "roller {j}, inner {inner}"
                 );
             }
-            for copy in [LoopCopy::Avx2, LoopCopy::Avx512] {
+            for copy in [LoopCopy::Avx512] {
                 if copy > LoopCopy::detect() {
                     continue;
                 }
