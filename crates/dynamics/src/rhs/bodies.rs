@@ -156,7 +156,7 @@ pub(super) fn roller_columns(model: &Model, y: &[f64], cols: &mut RollerColumns)
 
 /// Roller `j`'s centre, axis, velocity `(ṙ cos θ − r θ̇ sin θ, ṙ sin θ + r θ̇ cos θ, ż)` and
 /// angular velocity `ω(L, a)`; records its frame in `cols.frame[j]`.
-#[inline]
+#[inline(always)]
 pub(super) fn roller_kinematics(
     model: &Model,
     y: &[f64],

@@ -97,6 +97,7 @@ pub(super) fn detect(
 /// [`Model::bar_share`] of the pair's `K_p` and `C_h`: `Q = K_p' δⁿ + C(δ) δ̇` (seed 000 (2.5)–
 /// (2.8)), friction `μ(v_s) Q` against the sliding velocity. Adds the forces to the roller and
 /// their reaction to the cage; returns the normal force and the friction power.
+#[inline(always)]
 pub(super) fn bar_contacts(
     model: &Model,
     cage: &CageKin,

@@ -134,7 +134,7 @@ pub(crate) fn rhs(
 /// and pocket-face contacts. Gravity and these forces go into its wrench, their reactions into
 /// the cage's (`cage_wrench`) and the inner ring's (`f_inner`).
 #[allow(clippy::too_many_arguments)]
-#[inline]
+#[inline(always)]
 fn roller_contacts(
     model: &Model,
     y: &[f64],

@@ -137,7 +137,7 @@ pub(super) fn detect(
 
 /// Prepares the slots of roller `j` for the slot loop: the raceway drop under them and its
 /// kinematics repeated over them, on the raceways it may touch.
-#[inline]
+#[inline(always)]
 pub(super) fn prepare_slots(
     model: &Model,
     bodies: &Bodies,

@@ -107,6 +107,7 @@ pub(super) struct RibSums {
 }
 
 impl RibSums {
+    #[inline(always)]
     fn add(&mut self, ef: &EndForce) {
         self.normal += ef.normal;
         self.sliding += ef.normal * ef.sliding;
@@ -129,6 +130,7 @@ fn apply(ef: &EndForce, roller: &mut Wrench) {
 
 /// Roller `j`'s ends ↔ the ribs of both rings: adds the forces to the roller and the reaction
 /// to the inner ring (`f_inner`).
+#[inline(always)]
 pub(super) fn rib_contacts(
     model: &Model,
     faces: &FaceBodies,
@@ -178,6 +180,7 @@ pub(super) fn rib_contacts(
 
 /// Roller `j`'s ends ↔ the faces of its cage pocket: adds the forces to the roller and their
 /// reaction to the cage; returns the normal force and the friction power.
+#[inline(always)]
 pub(super) fn pocket_contacts(
     model: &Model,
     faces: &FaceBodies,

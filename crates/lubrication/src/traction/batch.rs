@@ -546,6 +546,53 @@ impl<T> LaneValues<T> {
     }
 }
 
+impl LaneValues<Vec<f64>> {
+    /// Copies each value of `row` into the slots `groups` (whole groups of [`FILL_WIDTH`]) of
+    /// its column, unless the column is kept. One line per column: the compiler sees thirteen
+    /// independent fills with their value in a register.
+    fn fill_groups(
+        &mut self,
+        kept: &LaneValues<Option<(u64, usize)>>,
+        groups: std::ops::Range<usize>,
+        row: &LaneValues<f64>,
+    ) {
+        let fill = |column: &mut Vec<f64>, kept: Option<(u64, usize)>, value: f64| {
+            if kept.is_none() {
+                for group in column[groups.clone()].as_chunks_mut::<FILL_WIDTH>().0 {
+                    *group = [value; FILL_WIDTH];
+                }
+            }
+        };
+        fill(&mut self.stiffness, kept.stiffness, row.stiffness);
+        fill(&mut self.lambda, kept.lambda, row.lambda);
+        fill(&mut self.mixed_weight, kept.mixed_weight, row.mixed_weight);
+        fill(&mut self.eta0, kept.eta0, row.eta0);
+        fill(&mut self.alpha, kept.alpha, row.alpha);
+        fill(
+            &mut self.shear_modulus,
+            kept.shear_modulus,
+            row.shear_modulus,
+        );
+        let inv_shear_modulus = row.inv_shear_modulus;
+        fill(
+            &mut self.inv_shear_modulus,
+            kept.inv_shear_modulus,
+            inv_shear_modulus,
+        );
+        fill(&mut self.tau0, kept.tau0, row.tau0);
+        fill(&mut self.beta0, kept.beta0, row.beta0);
+        fill(&mut self.film, kept.film, row.film);
+        fill(
+            &mut self.inv_tau0_film,
+            kept.inv_tau0_film,
+            row.inv_tau0_film,
+        );
+        fill(&mut self.tau0_sq_film, kept.tau0_sq_film, row.tau0_sq_film);
+        let conduction = row.film_conduction;
+        fill(&mut self.film_conduction, kept.film_conduction, conduction);
+    }
+}
+
 /// Slices written per store when a contact's value is copied to its slices: whole groups of
 /// this many, so that a copy may run up to `FILL_WIDTH − 1` slices into the next contact's,
 /// which are written afterwards.
@@ -645,14 +692,7 @@ impl ContactLanes {
             {
                 *group = [contacts[k].prepared.is_some(); FILL_WIDTH];
             }
-            let columns = self.columns.each_mut().into_iter();
-            for ((column, kept), &value) in columns.zip(self.kept.each()).zip(row.each()) {
-                if kept.is_none() {
-                    for group in column[groups.clone()].as_chunks_mut::<FILL_WIDTH>().0 {
-                        *group = [value; FILL_WIDTH];
-                    }
-                }
-            }
+            self.columns.fill_groups(&self.kept, groups, row);
         }
     }
 }
