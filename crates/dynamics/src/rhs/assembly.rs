@@ -19,17 +19,16 @@ pub(super) fn roller_equations(
     wrench: &[Wrench],
 ) {
     let inv_mr = 1.0 / model.m_r;
-    for j in 0..model.z {
+    for (j, (&(s, c, a, w), wrench)) in rollers.frame.iter().zip(wrench).enumerate() {
         let b = model.layout.roller(j);
         let r = y[b + roller::RADIUS];
         let thd = y[b + roller::ORBITAL_SPEED];
         let rdot = y[b + roller::RADIAL_VELOCITY];
         let zd = y[b + roller::AXIAL_VELOCITY];
-        let (s, c, a, w) = rollers.frame[j];
         let Wrench {
             force: f,
             moment: m,
-        } = wrench[j];
+        } = *wrench;
         let f_radial = dot(f, [c, s, 0.0]);
         let f_tangential = dot(f, [-s, c, 0.0]);
         dy[b + roller::AZIMUTH] = thd;
