@@ -55,11 +55,8 @@ fn main() {
         for j in 0..lay.rollers {
             let b = lay.roller(j);
             let y = s.state();
-            max_tilt = max_tilt.max(
-                (y[b + 3] * y[b + 3] + y[b + 4] * y[b + 4])
-                    .sqrt()
-                    .atan2(y[b + 5]),
-            );
+            let a = &y[b + roller::AXIS..b + roller::AXIS + 3];
+            max_tilt = max_tilt.max((a[0] * a[0] + a[1] * a[1]).sqrt().atan2(a[2]));
         }
         if r.is_err() || t >= dur {
             break r;

@@ -11,6 +11,60 @@ pub const CAGE_DOF: usize = 13;
 /// Values of the inner ring.
 pub const INNER_DOF: usize = 6;
 
+/// Offsets of a roller's components from its first index ([`Layout::roller`]).
+pub mod roller {
+    /// azimuth θ of the centre, rad
+    pub const AZIMUTH: usize = 0;
+    /// radius r of the centre, m
+    pub const RADIUS: usize = 1;
+    /// axial position z of the centre, m
+    pub const AXIAL: usize = 2;
+    /// axis a (3 values, unit up to integration error)
+    pub const AXIS: usize = 3;
+    /// orbital speed θ̇, rad/s
+    pub const ORBITAL_SPEED: usize = 6;
+    /// radial velocity ṙ, m/s
+    pub const RADIAL_VELOCITY: usize = 7;
+    /// axial velocity ż, m/s
+    pub const AXIAL_VELOCITY: usize = 8;
+    /// angular momentum L (3 values), inertial frame, N·m·s
+    pub const MOMENTUM: usize = 9;
+}
+
+/// Offsets of the cage's components from its first index ([`Layout::cage`]).
+pub mod cage {
+    /// centre (3 values), m
+    pub const CENTRE: usize = 0;
+    /// angle φ about its axis, rad
+    pub const ANGLE: usize = 3;
+    /// axis (3 values, unit up to integration error)
+    pub const AXIS: usize = 4;
+    /// velocity of the centre (3 values), m/s
+    pub const VELOCITY: usize = 7;
+    /// angular momentum L (3 values), inertial frame, N·m·s
+    pub const MOMENTUM: usize = 10;
+}
+
+/// Offsets of the inner ring's components from its first index ([`Layout::inner`]).
+pub mod inner_ring {
+    /// centre (3 values), m
+    pub const CENTRE: usize = 0;
+    /// velocity of the centre (3 values), m/s
+    pub const VELOCITY: usize = 3;
+}
+
+/// The 3-vector of `y` from index `i`.
+#[inline]
+pub(crate) fn read3(y: &[f64], i: usize) -> [f64; 3] {
+    [y[i], y[i + 1], y[i + 2]]
+}
+
+/// Writes the 3-vector `v` into `y` from index `i`.
+#[inline]
+pub(crate) fn write3(y: &mut [f64], i: usize, v: [f64; 3]) {
+    y[i..i + 3].copy_from_slice(&v);
+}
+
 /// Index arithmetic of the state vector.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Layout {

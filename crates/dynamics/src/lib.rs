@@ -106,7 +106,7 @@ pub use error::DynError;
 pub use initial::{InitialState, RollerStart, StaticRoller, StaticSolution, pure_rolling_spin};
 pub use integrator::{Dopri5, OdeSystem, StepStats};
 pub use land::{CageLandModel, HydrodynamicLand, LandForce, LandKinematics, TwoLevelLand};
-pub use layout::Layout;
+pub use layout::{Layout, cage, inner_ring, roller};
 pub use model::RacewayTraction;
 pub use output::{
     ContactSnapshot, NullSink, OutputSink, RevolutionSummary, RollerSnapshot, RunSummary, Snapshot,

@@ -7,11 +7,12 @@ use crate::ends::{EndGeometry, FaceGeometry};
 use crate::error::DynError;
 use crate::land::{CageLandModel, TwoLevelLand};
 use crate::layout::Layout;
-use crate::parameters::ContactParameters;
+use crate::parameters::{ContactParameters, RacewayParameters};
+use crate::settings::DynamicsSettings;
 use crate::slice_kernel::SliceConstants;
 use rolldyn_contact::damping::SliceDamping;
 use rolldyn_geometry::{
-    CageGuidance, CylindricalRollerBearing, EndFace, Profile, RibFace, RibSide, Ring,
+    Cage, CageGuidance, CylindricalRollerBearing, EndFace, Profile, RibFace, RibSide, Ring,
 };
 use rolldyn_lubrication::TractionModel;
 
@@ -84,6 +85,180 @@ pub(crate) struct EndContacts {
     pub rib_reduced_radius: f64,
     pub rib_reduced_modulus: f64,
     pub rib_roughness: [f64; 2],
+}
+
+impl RacewaySlices {
+    /// The slices of every roller on the raceway of `ring` with the slice law and damping of
+    /// `raceway` (the damping shared by the slices in proportion to their length), the reduced
+    /// radius and modulus of the pair, and its temperature.
+    fn new(
+        bearing: &CylindricalRollerBearing,
+        raceway: &RacewayParameters,
+        reduced_radius: f64,
+        ring: &Ring,
+        temperature_k: f64,
+    ) -> Result<Self, DynError> {
+        let roller = &bearing.roller;
+        let stack = roller.slices();
+        let total_len: f64 = stack.length.iter().sum();
+        let mut k = Vec::with_capacity(stack.length.len());
+        let mut damping = Vec::with_capacity(stack.length.len());
+        for &l in &stack.length {
+            let pf = raceway
+                .law
+                .power_form(l)
+                .map_err(|e| DynError::InvalidInput(format!("slice law: {e}")))?;
+            k.push(pf.coefficient);
+            damping.push(SliceDamping::new(
+                raceway.damping_n_s_m * l / total_len,
+                raceway.damping_ramp_m,
+            ));
+        }
+        let e1 = &roller.material;
+        let e2 = &ring.material;
+        let reduced_modulus = 2.0 / (e1.compliance() + e2.compliance());
+        let min_drop = ring.raceway_profile.as_ref().map_or(0.0, |pr| {
+            // the profile clamps beyond its ends: sampling its length finds its minimum
+            (0..=400)
+                .map(|i| pr.drop(roller.length * (i as f64 / 400.0 - 0.5) * 2.0))
+                .fold(0.0, f64::min)
+        });
+        let lanes = SliceConstants::new(
+            bearing.roller_count,
+            &stack.position,
+            &stack.drop,
+            &stack.length,
+            &k,
+            &damping,
+        );
+        Ok(RacewaySlices {
+            lanes,
+            k,
+            n: raceway.law.exponent(),
+            reduced_radius,
+            reduced_modulus,
+            roughness: [roller.roughness_ra, ring.roughness_ra],
+            temperature_k,
+            profile: ring.raceway_profile.clone(),
+            min_drop,
+        })
+    }
+}
+
+impl LandGeometry {
+    /// The guiding land of a land-guided cage (`None` for a roller-guided one): the land of the
+    /// guiding ring, no wider than the cage, and half the floating clearance as radial gap.
+    fn of(bearing: &CylindricalRollerBearing, cage: &Cage) -> Option<Self> {
+        match cage.guidance {
+            CageGuidance::Rollers => None,
+            g => {
+                let inner_land = g == CageGuidance::InnerLand;
+                let ring = if inner_land {
+                    &bearing.inner_ring
+                } else {
+                    &bearing.outer_ring
+                };
+                let land_d = cage.land_diameter().unwrap_or(0.0);
+                let width = ring
+                    .guiding_land
+                    .map(|l| l.width)
+                    .unwrap_or(cage.width)
+                    .min(cage.width);
+                Some(LandGeometry {
+                    inner: inner_land,
+                    radius: 0.5 * land_d,
+                    gap: 0.5 * cage.floating_clearance,
+                    width,
+                })
+            }
+        }
+    }
+}
+
+impl EndContacts {
+    /// Roller ends ↔ ribs and pocket faces (SPEC §1.2, §1.3, §3.3 pairs 56 and 54): the flat
+    /// end of the roller, the rib faces of both rings, the two pocket faces, and the EHL data of
+    /// the end–rib pair (reduced radius from the end-sphere and rib-torus curvatures, the modulus
+    /// and roughness of the inner raceway pair `inner`).
+    fn new(
+        bearing: &CylindricalRollerBearing,
+        cage: &Cage,
+        params: &ContactParameters,
+        ri: f64,
+        ro: f64,
+        inner: &RacewaySlices,
+    ) -> Result<Self, DynError> {
+        let roller = &bearing.roller;
+        let rw = 0.5 * roller.diameter;
+        let spacing_of = |ring: &Ring| {
+            ring.rib_spacing
+                .unwrap_or(roller.length + bearing.roller_rib_axial_clearance().unwrap_or(0.0))
+        };
+        let end_radius = rw - roller.profile.drop(0.5 * roller.length) - roller.edge_break;
+        if end_radius <= 0.0 {
+            return Err(DynError::InvalidInput(
+                "roller end face: chamfer and edge break leave no flat end".into(),
+            ));
+        }
+        let sphere_curvature = match roller.end_face {
+            EndFace::Flat => 0.0,
+            EndFace::Sphere { radius } => 1.0 / radius,
+        };
+        let rib_curvature = bearing
+            .inner_ring
+            .ribs
+            .iter()
+            .chain(&bearing.outer_ring.ribs)
+            .map(|r| match r.face {
+                RibFace::ConvexTorus { radius, .. } => 1.0 / radius,
+                RibFace::ConcaveTorus { radius } => -1.0 / radius,
+                _ => 0.0,
+            })
+            .fold(0.0_f64, f64::max);
+        let sum_curvature = sphere_curvature + rib_curvature;
+        let pocket_band = (0.5 * cage.inner_diameter, 0.5 * cage.outer_diameter);
+        let pocket_face = |side: f64| FaceGeometry {
+            side,
+            zeta: 0.5 * side * cage.pocket_axial,
+            rho_lo: pocket_band.0,
+            rho_hi: pocket_band.1,
+            rho_edge: pocket_band.1,
+            rho_c: 0.5 * (pocket_band.0 + pocket_band.1),
+            slope: 0.0,
+            curvature: 0.0,
+        };
+        let pe = &params.roller_end_rib.contact;
+        let pc = &params.roller_end_cage.contact;
+        Ok(Self {
+            end: EndGeometry {
+                half_length: 0.5 * roller.length,
+                radius: end_radius,
+                sphere_curvature,
+            },
+            inner_ribs: rib_faces(
+                &bearing.inner_ring,
+                true,
+                ri,
+                spacing_of(&bearing.inner_ring),
+            )?,
+            outer_ribs: rib_faces(
+                &bearing.outer_ring,
+                false,
+                ro,
+                spacing_of(&bearing.outer_ring),
+            )?,
+            pocket: [pocket_face(-1.0), pocket_face(1.0)],
+            rib_damping: SliceDamping::new(pe.c_h, pe.d),
+            pocket_damping: SliceDamping::new(pc.c_h, pc.d),
+            rib_reduced_radius: if sum_curvature > 0.0 {
+                1.0 / sum_curvature
+            } else {
+                f64::INFINITY
+            },
+            rib_reduced_modulus: inner.reduced_modulus,
+            rib_roughness: inner.roughness,
+        })
+    }
 }
 
 /// Rib faces of a ring (SPEC §1.2): face position from the rib spacing (or roller length plus
@@ -189,8 +364,11 @@ pub(crate) struct Model {
     /// diameters (d_i, D_o) of the raceways the rollers roll on (the contact geometry, with the
     /// radial clearance), the epicyclic cage speed's reference, m
     pub raceway_diameters: (f64, f64),
-    /// penetration reported as divergence, m
+    /// penetration reported as divergence, m ([`DynamicsSettings::divergence_penetration_m`])
     pub div_limit: f64,
+    /// share of the bar stiffness and damping per evaluation point
+    /// ([`DynamicsSettings::bar_point_share`])
+    pub bar_share: f64,
     /// roller ends ↔ ribs and cage pocket faces
     pub ends: EndContacts,
 }
@@ -239,160 +417,29 @@ impl Model {
                 "inner-ring mass must be positive".into(),
             ));
         }
-        let total_len: f64 = stack.length.iter().sum();
-        let mk = |law: rolldyn_contact::slices::SliceLaw,
-                  damping_total: f64,
-                  ramp: f64,
-                  reduced_radius: f64,
-                  ring: &rolldyn_geometry::Ring,
-                  temperature_k: f64|
-         -> Result<RacewaySlices, DynError> {
-            let mut k = Vec::with_capacity(stack.length.len());
-            let mut damping = Vec::with_capacity(stack.length.len());
-            for &l in &stack.length {
-                let pf = law
-                    .power_form(l)
-                    .map_err(|e| DynError::InvalidInput(format!("slice law: {e}")))?;
-                k.push(pf.coefficient);
-                damping.push(SliceDamping::new(damping_total * l / total_len, ramp));
-            }
-            let e1 = &roller.material;
-            let e2 = &ring.material;
-            let reduced_modulus = 2.0 / (e1.compliance() + e2.compliance());
-            let min_drop = ring.raceway_profile.as_ref().map_or(0.0, |pr| {
-                // the profile clamps beyond its ends: sampling its length finds its minimum
-                (0..=400)
-                    .map(|i| pr.drop(roller.length * (i as f64 / 400.0 - 0.5) * 2.0))
-                    .fold(0.0, f64::min)
-            });
-            let lanes =
-                SliceConstants::new(z, &stack.position, &stack.drop, &stack.length, &k, &damping);
-            Ok(RacewaySlices {
-                lanes,
-                k,
-                n: law.exponent(),
-                reduced_radius,
-                reduced_modulus,
-                roughness: [roller.roughness_ra, ring.roughness_ra],
-                temperature_k,
-                profile: ring.raceway_profile.clone(),
-                min_drop,
-            })
-        };
         let t = &conditions.temperatures;
-        let inner = mk(
-            params.inner_raceway.law,
-            params.inner_raceway.damping_n_s_m,
-            params.inner_raceway.damping_ramp_m,
+        let inner = RacewaySlices::new(
+            bearing,
+            &params.inner_raceway,
             rw * ri / (rw + ri),
             &bearing.inner_ring,
             t.inner_raceway_k,
         )?;
-        let outer = mk(
-            params.outer_raceway.law,
-            params.outer_raceway.damping_n_s_m,
-            params.outer_raceway.damping_ramp_m,
+        let outer = RacewaySlices::new(
+            bearing,
+            &params.outer_raceway,
             rw * ro / (ro - rw),
             &bearing.outer_ring,
             t.outer_raceway_k,
         )?;
-        let land = match cage.guidance {
-            CageGuidance::Rollers => None,
-            g => {
-                let inner_land = g == CageGuidance::InnerLand;
-                let ring = if inner_land {
-                    &bearing.inner_ring
-                } else {
-                    &bearing.outer_ring
-                };
-                let land_d = cage.land_diameter().unwrap_or(0.0);
-                let width = ring
-                    .guiding_land
-                    .map(|l| l.width)
-                    .unwrap_or(cage.width)
-                    .min(cage.width);
-                Some(LandGeometry {
-                    inner: inner_land,
-                    radius: 0.5 * land_d,
-                    gap: 0.5 * cage.floating_clearance,
-                    width,
-                })
-            }
-        };
+        let land = LandGeometry::of(bearing, cage);
         let rm = 0.5 * bearing.pitch_diameter();
         let h = roller.profile.chamfer_start().min(0.5 * roller.length);
         let (s, c) = conditions.misalignment_azimuth_rad.sin_cos();
         let (sb, cb) = conditions.misalignment_rad.sin_cos();
         let axis_i = [sb * c, sb * s, cb];
-        // roller ends ↔ ribs and pocket faces (SPEC §1.2, §1.3, §3.3 pairs 56 and 54)
-        let spacing_of = |ring: &Ring| {
-            ring.rib_spacing
-                .unwrap_or(roller.length + bearing.roller_rib_axial_clearance().unwrap_or(0.0))
-        };
-        let end_radius = rw - roller.profile.drop(0.5 * roller.length) - roller.edge_break;
-        if end_radius <= 0.0 {
-            return Err(DynError::InvalidInput(
-                "roller end face: chamfer and edge break leave no flat end".into(),
-            ));
-        }
-        let sphere_curvature = match roller.end_face {
-            EndFace::Flat => 0.0,
-            EndFace::Sphere { radius } => 1.0 / radius,
-        };
-        let rib_curvature = bearing
-            .inner_ring
-            .ribs
-            .iter()
-            .chain(&bearing.outer_ring.ribs)
-            .map(|r| match r.face {
-                RibFace::ConvexTorus { radius, .. } => 1.0 / radius,
-                RibFace::ConcaveTorus { radius } => -1.0 / radius,
-                _ => 0.0,
-            })
-            .fold(0.0_f64, f64::max);
-        let sum_curvature = sphere_curvature + rib_curvature;
-        let pocket_band = (0.5 * cage.inner_diameter, 0.5 * cage.outer_diameter);
-        let pocket_face = |side: f64| FaceGeometry {
-            side,
-            zeta: 0.5 * side * cage.pocket_axial,
-            rho_lo: pocket_band.0,
-            rho_hi: pocket_band.1,
-            rho_edge: pocket_band.1,
-            rho_c: 0.5 * (pocket_band.0 + pocket_band.1),
-            slope: 0.0,
-            curvature: 0.0,
-        };
-        let pe = &params.roller_end_rib.contact;
-        let pc = &params.roller_end_cage.contact;
-        let ends = EndContacts {
-            end: EndGeometry {
-                half_length: 0.5 * roller.length,
-                radius: end_radius,
-                sphere_curvature,
-            },
-            inner_ribs: rib_faces(
-                &bearing.inner_ring,
-                true,
-                ri,
-                spacing_of(&bearing.inner_ring),
-            )?,
-            outer_ribs: rib_faces(
-                &bearing.outer_ring,
-                false,
-                ro,
-                spacing_of(&bearing.outer_ring),
-            )?,
-            pocket: [pocket_face(-1.0), pocket_face(1.0)],
-            rib_damping: SliceDamping::new(pe.c_h, pe.d),
-            pocket_damping: SliceDamping::new(pc.c_h, pc.d),
-            rib_reduced_radius: if sum_curvature > 0.0 {
-                1.0 / sum_curvature
-            } else {
-                f64::INFINITY
-            },
-            rib_reduced_modulus: inner.reduced_modulus,
-            rib_roughness: inner.roughness,
-        };
+        let ends = EndContacts::new(bearing, cage, &params, ri, ro, &inner)?;
+        let defaults = DynamicsSettings::default();
         Ok(Self {
             layout: Layout { rollers: z },
             z,
@@ -429,9 +476,16 @@ impl Model {
             params,
             rm,
             raceway_diameters,
-            div_limit: 1e-4,
+            div_limit: defaults.divergence_penetration_m,
+            bar_share: defaults.bar_point_share,
             ends,
         })
+    }
+
+    /// Takes the run settings that enter the right-hand side.
+    pub fn apply(&mut self, settings: &DynamicsSettings) {
+        self.div_limit = settings.divergence_penetration_m;
+        self.bar_share = settings.bar_point_share;
     }
 
     /// Epicyclic cage speed for ring speeds (ω_i, ω_o): [`rolldyn_geometry::epicyclic_cage_speed`].

@@ -73,6 +73,11 @@ pub struct IntegratorSettings {
     /// PI controller exponent β on the previous error (default 0.04, Hairer's DOPRI5; 0 gives
     /// the classical I controller).
     pub pi_beta: f64,
+    /// Reference load of the roller–raceway contact frequency `ω_c` of
+    /// [`VelocityErrorScale::ContactFrequency`], N (default 100 N). The linearised stiffness
+    /// `k = n Q/δ` of a line contact grows as `Q^{1/10}` (n = 10/9), so a tenfold load moves
+    /// `ω_c` by 12 %: a scale, not a load-dependent quantity.
+    pub contact_frequency_load_n: f64,
     /// Largest step growth per step (default 5) and smallest shrink (default 0.2).
     pub max_growth: f64,
     /// See `max_growth`.
@@ -95,6 +100,7 @@ impl Default for IntegratorSettings {
             min_step_s: 1e-12,
             safety: 0.9,
             pi_beta: 0.04,
+            contact_frequency_load_n: 100.0,
             max_growth: 5.0,
             min_shrink: 0.2,
             max_steps: 200_000_000,
@@ -129,6 +135,11 @@ pub struct DynamicsSettings {
     /// A roller or cage penetrating a raceway, bar or land deeper than this is reported as a
     /// divergence, m (default 0.1 mm — a hundred times a working approach).
     pub divergence_penetration_m: f64,
+    /// Share of the roller–cage bar stiffness `K_p` and damping `C_h` (SPEC §3.3, pair 53)
+    /// carried by each of the two evaluation points along the roller (default 0.5: the pair's
+    /// coefficients describe the whole roller–bar contact, which the two points at the ends of
+    /// the roller's straight part share equally).
+    pub bar_point_share: f64,
     /// A roller axis tilted (yaw and pitch combined) by more than this from the bearing axis is
     /// reported as a divergence, rad (default 0.1 rad ≈ 5.7°). With the roller-end ↔ rib and
     /// pocket-face contacts switched off only the cage bars bound roller skew: a roller whose
@@ -163,6 +174,7 @@ impl Default for DynamicsSettings {
             scuffing_check: true,
             slip_load_fraction: 0.05,
             divergence_penetration_m: 1e-4,
+            bar_point_share: 0.5,
             divergence_tilt_rad: 0.1,
             precession_band: 0.05,
         }

@@ -11,8 +11,8 @@
 //! collects the loaded slices of each roller in slice order into the traction batch
 //! ([`SliceOutputs::collect_loaded`], used by [`crate::rhs`]) and later sums each slice's normal
 //! and friction force in that order.
-//! On x86-64 the loop is also compiled for AVX2 (four lanes) and AVX-512F (eight lanes) and the
-//! widest copy the CPU supports is chosen at run time; all versions give the same bits (no
+//! The loop is compiled for the build's target (AVX2, four lanes, in the x86-64-v3 build) and,
+//! on x86-64, also for AVX-512F (eight lanes), chosen at run time; both give the same bits (no
 //! fused multiply–add: Rust never contracts on its own, and `rolldyn_numerics::fastmath` is
 //! written for that).
 
@@ -22,6 +22,7 @@ use rolldyn_contact::damping::SliceDamping;
 use rolldyn_lubrication::SliceColumnsMut;
 use rolldyn_numerics::avx2::LoopCopy;
 use rolldyn_numerics::fastmath;
+use rolldyn_numerics::step::step;
 use std::ops::Range;
 
 /// Vector width of the widest loop copy (AVX-512F: eight `f64`): the slot arrays have this
@@ -148,7 +149,7 @@ impl RollerLanes {
     }
 }
 
-rolldyn_numerics::avx2_twin! {
+rolldyn_numerics::avx512_twin! {
     /// Writes `values[i]` into `vectors` whole vectors of [`LANES`] slots of `columns[i]` from
     /// slot `start` on (`VECTORS` of them when it is not 0): one vector store per [`LANES`]
     /// slots in the AVX-512F copy.
@@ -157,7 +158,7 @@ rolldyn_numerics::avx2_twin! {
         start: usize,
         vectors: usize,
         values: &[f64; ROLLER_COLUMNS],
-    ) = fill_columns_portable / fill_columns_avx2 / fill_columns_avx512 {
+    ) = fill_columns_portable / fill_columns_avx512 {
         let vectors = if VECTORS > 0 { VECTORS } else { vectors };
         for (column, &value) in columns.iter_mut().zip(values) {
             let slots = &mut column[start..start + vectors * LANES];
@@ -292,7 +293,8 @@ pub(crate) fn evaluate<const INNER: bool>(
     slots: Range<usize>,
     out: &mut SliceOutputs,
 ) {
-    evaluate_with::<INNER>(sc, rollers, race_drop, ring, slots, out, LoopCopy::detect());
+    // SAFETY: `LoopCopy::detect` names the widest copy this CPU supports.
+    unsafe { evaluate_with::<INNER>(sc, rollers, race_drop, ring, slots, out, LoopCopy::detect()) };
 }
 
 /// The inputs of the slot loop, each cut to the loop's slots.
@@ -307,9 +309,12 @@ struct SlotInputs<'a> {
     roller: [&'a [f64]; ROLLER_COLUMNS],
 }
 
-/// [`evaluate`] with the compiled copy of the loop chosen by the caller (only one that the CPU
-/// supports: [`LoopCopy::detect`] or narrower).
-fn evaluate_with<'a, const INNER: bool>(
+/// [`evaluate`] with the compiled copy of the loop chosen by the caller.
+///
+/// # Safety
+/// `copy` must be a copy this CPU supports: [`LoopCopy::detect`] or narrower (the AVX-512F
+/// copy executes AVX-512F instructions).
+unsafe fn evaluate_with<'a, const INNER: bool>(
     sc: &'a SliceConstants,
     rollers: &'a RollerLanes,
     race_drop: &'a [f64],
@@ -362,16 +367,14 @@ fn evaluate_with<'a, const INNER: bool>(
         };
     }
     match copy {
-        // SAFETY: `copy` names only copies the CPU supports ([`evaluate`], the tests below).
+        // SAFETY: the CPU supports AVX-512F (the caller's contract).
         #[cfg(target_arch = "x86_64")]
         LoopCopy::Avx512 => unsafe { call!(slots_avx512) },
-        #[cfg(target_arch = "x86_64")]
-        LoopCopy::Avx2 => unsafe { call!(slots_avx2) },
         _ => call!(slots),
     }
 }
 
-rolldyn_numerics::avx2_twin! {
+rolldyn_numerics::avx512_twin! {
     /// The loop over the slots. Per slot (SPEC §2.1–2.2): slice centre `p = c + x a`, its
     /// distance `ρ` from the ring axis, approach `δ = R_i + R_w − ρ − z_s −
     /// z_race` (inner) or `ρ + R_w − R_o − z_s − z_race` (outer, seed 000 (2.5)),
@@ -394,7 +397,7 @@ rolldyn_numerics::avx2_twin! {
         tz: &mut [f64],
         vs_out: &mut [f64],
         u_out: &mut [f64],
-    ) / slots_avx2 / slots_avx512 {
+    ) / slots_avx512 {
         // equal lengths, known to the compiler: no bounds checks in the loop
         let n = inputs.x.len();
         let (x, drop, stiff, c_max, inv_delta_star, race_drop) = (
@@ -445,14 +448,14 @@ rolldyn_numerics::avx2_twin! {
             let v_normal = dot(vrel, n);
             let delta_dot = -v_normal;
             // slice law k_s δⁿ (exp(n ln δ)); the damping ramp STEP(δ, 0, 0, δ*, C_max) of
-            // rolldyn_contact::damping with Δ = δ·(1/δ*) clamped to [0, 1]
+            // rolldyn_contact::damping, written in the normalised approach δ·(1/δ*) (a
+            // multiplication instead of a division per slot): STEP(δ/δ*, 0, 0, 1, C_max)
             let elastic = if touching {
                 stiff[s] * fastmath::exp(ring.exponent * fastmath::ln(delta))
             } else {
                 0.0
             };
-            let ramp = (delta * inv_delta_star[s]).clamp(0.0, 1.0);
-            let damping = c_max[s] * ramp * ramp * (3.0 - 2.0 * ramp);
+            let damping = step(delta * inv_delta_star[s], 0.0, 0.0, 1.0, c_max[s]);
             let pressing = elastic + damping * delta_dot;
             let q = if touching && pressing > 0.0 {
                 pressing
@@ -527,7 +530,8 @@ mod tests {
         }
     }
 
-    /// Evaluates every slot of `sc` for the rollers `rollers` with the loop copy `copy`.
+    /// Evaluates every slot of `sc` for the rollers `rollers` with the loop copy `copy` (one
+    /// this CPU supports).
     fn run(
         sc: &SliceConstants,
         rollers: &[RollerKinematics],
@@ -541,10 +545,14 @@ mod tests {
         let mut out = SliceOutputs::new(sc.x.len());
         let all = 0..rollers.len() * sc.slices;
         let race_drop = vec![0.0; sc.x.len()];
-        if inner {
-            evaluate_with::<true>(sc, &lanes, &race_drop, &ring(true), all, &mut out, copy);
-        } else {
-            evaluate_with::<false>(sc, &lanes, &race_drop, &ring(false), all, &mut out, copy);
+        assert!(copy <= LoopCopy::detect(), "{copy:?} on this CPU");
+        // SAFETY: the CPU supports `copy` (asserted just above).
+        unsafe {
+            if inner {
+                evaluate_with::<true>(sc, &lanes, &race_drop, &ring(true), all, &mut out, copy);
+            } else {
+                evaluate_with::<false>(sc, &lanes, &race_drop, &ring(false), all, &mut out, copy);
+            }
         }
         out
     }
@@ -638,7 +646,7 @@ mod tests {
     }
 
     /// Rollers evaluated back to back in one loop give each roller's own results, bit for bit,
-    /// and the AVX2 and AVX-512F copies (those this CPU supports) give the bits of the portable
+    /// and the AVX-512F copy (if this CPU supports it) gives the bits of the portable
     /// loop.
     #[test]
     fn packed_rollers_and_loop_copies_agree() {
@@ -655,7 +663,7 @@ mod tests {
                     "roller {j}, inner {inner}"
                 );
             }
-            for copy in [LoopCopy::Avx2, LoopCopy::Avx512] {
+            for copy in [LoopCopy::Avx512] {
                 if copy > LoopCopy::detect() {
                     continue;
                 }

@@ -62,7 +62,7 @@ pub fn measure_cage_slip(
     let k = settings.average_revolutions.max(1) as usize;
     // period means are Δφ/Δt (exact, no quadrature); steady once two consecutive period means
     // differ by less than `steady_tolerance` of the epicyclic speed
-    let phi_index = sim.layout().cage() + 3;
+    let phi_index = sim.layout().cage() + crate::layout::cage::ANGLE;
     let mut marks = vec![(sim.time(), sim.state()[phi_index])];
     let speed = |a: (f64, f64), b: (f64, f64)| (b.1 - a.1) / (b.0 - a.0);
     let mut steady_after: Option<usize> = None;

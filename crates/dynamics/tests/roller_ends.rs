@@ -73,7 +73,7 @@ fn axial_push_into_flat_rib_follows_the_power_law() {
     for delta in [1e-6, 2e-6, 4e-6] {
         let (last, dy, lay) = at_rest(&b, params, gap + delta, 0.0);
         let expect = p.k_p * f64::powf(delta, p.exponent);
-        let fz = m * dy[lay.roller(0) + 8];
+        let fz = m * dy[lay.roller(0) + roller::AXIAL_VELOCITY];
         assert!(
             (fz + expect).abs() < 1e-6 * expect,
             "δ = {delta}: F_z = {fz}, K_p δⁿ = {expect}"
@@ -133,10 +133,11 @@ fn yawed_roller_is_restored_by_the_ribs() {
             .azimuth_rad
     };
     let e_r = [init_theta.cos(), init_theta.sin(), 0.0];
-    let m_r = dy[i + 9] * e_r[0] + dy[i + 10] * e_r[1] + dy[i + 11] * e_r[2];
+    let moment = i + roller::MOMENTUM;
+    let m_r = dy[moment] * e_r[0] + dy[moment + 1] * e_r[1] + dy[moment + 2] * e_r[2];
     assert!(m_r > 0.0, "restoring moment about e_r: {m_r}");
     // the axial forces of the two ends cancel
-    let fz = dy[i + 8] * b.roller.mass_properties.mass;
+    let fz = dy[i + roller::AXIAL_VELOCITY] * b.roller.mass_properties.mass;
     assert!(fz.abs() < 1e-6 * last.rib[0], "F_z = {fz}");
 }
 

@@ -44,17 +44,16 @@ fn short_2002834_run_stays_bounded() {
         let y = sim.state();
         for j in 0..lay.rollers {
             let k = lay.roller(j);
-            let tilt = (y[k + 3] * y[k + 3] + y[k + 4] * y[k + 4])
-                .sqrt()
-                .atan2(y[k + 5]);
+            let a = &y[k + roller::AXIS..k + roller::AXIS + 3];
+            let tilt = (a[0] * a[0] + a[1] * a[1]).sqrt().atan2(a[2]);
             max_tilt = max_tilt.max(tilt);
             assert!(
-                (y[k + 1] - rm).abs() < 1e-4,
+                (y[k + roller::RADIUS] - rm).abs() < 1e-4,
                 "roller {j} radius {}",
-                y[k + 1]
+                y[k + roller::RADIUS]
             );
         }
-        let c = lay.cage();
+        let c = lay.cage() + cage::CENTRE;
         let e = (y[c] * y[c] + y[c + 1] * y[c + 1]).sqrt();
         assert!(e < half_land_clearance + 1e-4, "cage centre {e} m");
     }

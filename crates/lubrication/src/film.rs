@@ -183,26 +183,25 @@ fn piezoviscous_factor(a: f64) -> f64 {
     if a < 0.1 { series } else { closed }
 }
 
-rolldyn_numerics::avx2_twin! {
-    /// [`rigid_piezoviscous_line`] of many contacts: `h[i]` from the `i`-th element of each
-    /// input array (all at least as long as `h`). Compiled a second time for AVX2 and chosen at
-    /// run time; both give the same bits as the scalar function.
-    pub fn rigid_piezoviscous_line_many(
-        eta0: &[f64],
-        alpha: &[f64],
-        u: &[f64],
-        q: &[f64],
-        l: &[f64],
-        e: &[f64],
-        r: &[f64],
-        h: &mut [f64],
-    ) = films / films_avx2 {
-        let n = h.len();
-        let (eta0, alpha, u, q) = (&eta0[..n], &alpha[..n], &u[..n], &q[..n]);
-        let (l, e, r) = (&l[..n], &e[..n], &r[..n]);
-        for i in 0..n {
-            h[i] = rigid_piezoviscous_line(eta0[i], alpha[i], u[i], q[i], l[i], e[i], r[i]);
-        }
+/// [`rigid_piezoviscous_line`] of many contacts: `h[i]` from the `i`-th element of each
+/// input array (all at least as long as `h`), in one vectorised loop; the same bits as the
+/// scalar function.
+#[allow(clippy::too_many_arguments)]
+pub fn rigid_piezoviscous_line_many(
+    eta0: &[f64],
+    alpha: &[f64],
+    u: &[f64],
+    q: &[f64],
+    l: &[f64],
+    e: &[f64],
+    r: &[f64],
+    h: &mut [f64],
+) {
+    let n = h.len();
+    let (eta0, alpha, u, q) = (&eta0[..n], &alpha[..n], &u[..n], &q[..n]);
+    let (l, e, r) = (&l[..n], &e[..n], &r[..n]);
+    for i in 0..n {
+        h[i] = rigid_piezoviscous_line(eta0[i], alpha[i], u[i], q[i], l[i], e[i], r[i]);
     }
 }
 

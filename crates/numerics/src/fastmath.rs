@@ -205,12 +205,12 @@ pub fn sin_cos(x: f64) -> (f64, f64) {
     if inside { (s, c) } else { (f64::NAN, f64::NAN) }
 }
 
-crate::avx2_twin! {
+crate::avx512_twin! {
     /// [`sin_cos`] of every element of `x` into `sin` and `cos` (at least as long as `x`), in a
     /// vectorised loop; arguments beyond [`SIN_COS_MAX_ARG`] (and non-finite ones) by
     /// `f64::sin_cos`.
     pub fn sin_cos_many(x: &[f64], sin: &mut [f64], cos: &mut [f64]) =
-        sin_cos_many_portable / sin_cos_many_avx2 / sin_cos_many_avx512 {
+        sin_cos_many_portable / sin_cos_many_avx512 {
         let n = x.len();
         let (sin, cos) = (&mut sin[..n], &mut cos[..n]);
         for i in 0..n {

@@ -12,8 +12,7 @@
 //!   of one variable.
 //! * [`step`]: the ADAMS cubic STEP ramp (SPEC §3.4), with the degenerate span defined.
 //! * [`fastmath`]: branch-free, vectorisable `exp`, `ln`, `sin_cos` for hot loops.
-//! * [`avx2_twin!`]: a hot loop and its AVX2 (and optionally AVX-512F) copies from one
-//!   parameter list; [`avx2::LoopCopy`] for callers that dispatch themselves.
+//! * [`avx512_twin!`]: a hot loop and its AVX-512F copy from one parameter list; [`avx2::LoopCopy`] for callers that dispatch themselves.
 
 pub mod avx2;
 pub mod brent;

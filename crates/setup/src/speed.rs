@@ -162,7 +162,7 @@ pub fn vector_loops() -> &'static str {
     use rolldyn_numerics::avx2::LoopCopy;
     match LoopCopy::detect() {
         LoopCopy::Avx512 => "avx512f",
-        LoopCopy::Avx2 => "avx2",
+        LoopCopy::Portable if cfg!(target_feature = "avx2") => "avx2",
         LoopCopy::Portable => "portable",
     }
 }

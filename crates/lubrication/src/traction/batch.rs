@@ -450,56 +450,172 @@ impl PendingFilms {
 
 /// Per-slice copies of their contact's data ([`ContactTraction`] and the line stiffness
 /// π E'/(2 R')), so that the main loop reads contiguous arrays. Each contact's row is computed
-/// once (its divisions included) and then copied to its slices. When every prepared contact has
-/// the same temperature, R' and E' (one raceway of the dynamics), the columns that depend on
-/// nothing else ([`OIL_COLUMNS`]) are the same for all of them: they are filled once for all
-/// slices, and not again while they stay the same.
+/// once (its divisions included) and then copied to its slices.
+///
+/// Kept columns: when every prepared contact has the same temperature, R' and E' (one raceway
+/// of the dynamics), the columns that depend on nothing else ([`LaneValues::OIL`]) hold one
+/// value for all slices. `kept` remembers, per column, the bit pattern of that value and how
+/// many slots it fills; the next [`ContactLanes::gather`] with the same bits (compared as bits,
+/// so that NaN and −0 count as themselves) and no more slices leaves the column as it is. On
+/// 2002834 this skips 7 of the 13 column fills of every right-hand side.
 #[derive(Debug, Clone, Default)]
 struct ContactLanes {
-    rows: Vec<[f64; LANE_COLUMNS]>,
+    rows: Vec<LaneValues<f64>>,
     /// the contact is prepared (lubricated and loaded)
     prepared: Vec<bool>,
-    /// one column per entry of [`lane_row`], in its order, at least [`FILL_WIDTH`] longer than
-    /// the batch
-    columns: [Vec<f64>; LANE_COLUMNS],
+    /// one column per value, at least [`FILL_WIDTH`] longer than the batch
+    columns: LaneValues<Vec<f64>>,
     /// per column: the bits of the value that fills its first `len` slots, if it is uniform
-    kept: [Option<(u64, usize)>; LANE_COLUMNS],
+    kept: LaneValues<Option<(u64, usize)>>,
 }
 
-/// The number of f64 columns of [`ContactLanes`].
-const LANE_COLUMNS: usize = 13;
+/// One value per column of [`ContactLanes`]: the line stiffness, Λ, the blend weight and the
+/// fields of [`MurakiContact`] (η0, ᾱ, Γ, 1/Γ, τ0, β0, h, 1/(τ0 h), τ0² h, h/(12 K_f)).
+#[derive(Debug, Clone, Copy, Default)]
+struct LaneValues<T> {
+    stiffness: T,
+    lambda: T,
+    mixed_weight: T,
+    eta0: T,
+    alpha: T,
+    shear_modulus: T,
+    inv_shear_modulus: T,
+    tau0: T,
+    beta0: T,
+    film: T,
+    inv_tau0_film: T,
+    tau0_sq_film: T,
+    film_conduction: T,
+}
 
-/// The columns of [`lane_row`] that depend only on the contact's temperature (the oil
-/// properties), R' and E' (the line stiffness).
-const OIL_COLUMNS: [bool; LANE_COLUMNS] = [
-    true, false, false, true, true, true, true, true, true, false, false, false, false,
-];
+impl<T> LaneValues<T> {
+    /// Which columns depend only on the contact's temperature (the oil properties), R' and E'
+    /// (the line stiffness).
+    const OIL: LaneValues<bool> = LaneValues {
+        stiffness: true,
+        lambda: false,
+        mixed_weight: false,
+        eta0: true,
+        alpha: true,
+        shear_modulus: true,
+        inv_shear_modulus: true,
+        tau0: true,
+        beta0: true,
+        film: false,
+        inv_tau0_film: false,
+        tau0_sq_film: false,
+        film_conduction: false,
+    };
+
+    /// Every value, in declaration order (for the fills that treat all columns alike).
+    fn each(&self) -> [&T; 13] {
+        [
+            &self.stiffness,
+            &self.lambda,
+            &self.mixed_weight,
+            &self.eta0,
+            &self.alpha,
+            &self.shear_modulus,
+            &self.inv_shear_modulus,
+            &self.tau0,
+            &self.beta0,
+            &self.film,
+            &self.inv_tau0_film,
+            &self.tau0_sq_film,
+            &self.film_conduction,
+        ]
+    }
+
+    /// [`LaneValues::each`], writable.
+    fn each_mut(&mut self) -> [&mut T; 13] {
+        [
+            &mut self.stiffness,
+            &mut self.lambda,
+            &mut self.mixed_weight,
+            &mut self.eta0,
+            &mut self.alpha,
+            &mut self.shear_modulus,
+            &mut self.inv_shear_modulus,
+            &mut self.tau0,
+            &mut self.beta0,
+            &mut self.film,
+            &mut self.inv_tau0_film,
+            &mut self.tau0_sq_film,
+            &mut self.film_conduction,
+        ]
+    }
+}
+
+impl LaneValues<Vec<f64>> {
+    /// Copies each value of `row` into the slots `groups` (whole groups of [`FILL_WIDTH`]) of
+    /// its column, unless the column is kept. One line per column: the compiler sees thirteen
+    /// independent fills with their value in a register.
+    fn fill_groups(
+        &mut self,
+        kept: &LaneValues<Option<(u64, usize)>>,
+        groups: std::ops::Range<usize>,
+        row: &LaneValues<f64>,
+    ) {
+        let fill = |column: &mut Vec<f64>, kept: Option<(u64, usize)>, value: f64| {
+            if kept.is_none() {
+                for group in column[groups.clone()].as_chunks_mut::<FILL_WIDTH>().0 {
+                    *group = [value; FILL_WIDTH];
+                }
+            }
+        };
+        fill(&mut self.stiffness, kept.stiffness, row.stiffness);
+        fill(&mut self.lambda, kept.lambda, row.lambda);
+        fill(&mut self.mixed_weight, kept.mixed_weight, row.mixed_weight);
+        fill(&mut self.eta0, kept.eta0, row.eta0);
+        fill(&mut self.alpha, kept.alpha, row.alpha);
+        fill(
+            &mut self.shear_modulus,
+            kept.shear_modulus,
+            row.shear_modulus,
+        );
+        let inv_shear_modulus = row.inv_shear_modulus;
+        fill(
+            &mut self.inv_shear_modulus,
+            kept.inv_shear_modulus,
+            inv_shear_modulus,
+        );
+        fill(&mut self.tau0, kept.tau0, row.tau0);
+        fill(&mut self.beta0, kept.beta0, row.beta0);
+        fill(&mut self.film, kept.film, row.film);
+        fill(
+            &mut self.inv_tau0_film,
+            kept.inv_tau0_film,
+            row.inv_tau0_film,
+        );
+        fill(&mut self.tau0_sq_film, kept.tau0_sq_film, row.tau0_sq_film);
+        let conduction = row.film_conduction;
+        fill(&mut self.film_conduction, kept.film_conduction, conduction);
+    }
+}
 
 /// Slices written per store when a contact's value is copied to its slices: whole groups of
 /// this many, so that a copy may run up to `FILL_WIDTH − 1` slices into the next contact's,
 /// which are written afterwards.
 const FILL_WIDTH: usize = 8;
 
-/// A contact's entries of the [`ContactLanes`] columns: the line stiffness, Λ, the blend weight
-/// and the fields of [`MurakiContact`] (η0, ᾱ, Γ, 1/Γ, τ0, β0, h, 1/(τ0 h), τ0² h,
-/// h/(12 K_f)); [`evaluate_lubricated`] reads them back in this order.
-fn lane_row(line_stiffness: f64, ct: &ContactTraction) -> [f64; LANE_COLUMNS] {
+/// A contact's values of the [`ContactLanes`] columns.
+fn lane_row(line_stiffness: f64, ct: &ContactTraction) -> LaneValues<f64> {
     let m = &ct.muraki;
-    [
-        line_stiffness,
-        ct.lambda,
-        ct.mixed_weight,
-        m.eta0,
-        m.alpha,
-        m.shear_modulus,
-        m.inv_shear_modulus,
-        m.tau0,
-        m.beta0,
-        m.film,
-        m.inv_tau0_film,
-        m.tau0_sq_film,
-        m.film_conduction,
-    ]
+    LaneValues {
+        stiffness: line_stiffness,
+        lambda: ct.lambda,
+        mixed_weight: ct.mixed_weight,
+        eta0: m.eta0,
+        alpha: m.alpha,
+        shear_modulus: m.shear_modulus,
+        inv_shear_modulus: m.inv_shear_modulus,
+        tau0: m.tau0,
+        beta0: m.beta0,
+        film: m.film,
+        inv_tau0_film: m.inv_tau0_film,
+        tau0_sq_film: m.tau0_sq_film,
+        film_conduction: m.film_conduction,
+    }
 }
 
 impl ContactLanes {
@@ -540,13 +656,20 @@ impl ContactLanes {
         let room = n + FILL_WIDTH;
         self.prepared.clear();
         self.prepared.resize(room, false);
-        for (c, (column, kept)) in self.columns.iter_mut().zip(&mut self.kept).enumerate() {
+        let oil = LaneValues::<f64>::OIL;
+        let uniform_row = first.map(|(k, _)| self.rows[k]);
+        let columns = self
+            .columns
+            .each_mut()
+            .into_iter()
+            .zip(self.kept.each_mut());
+        for (c, (column, kept)) in columns.enumerate() {
             if column.len() < room {
                 column.resize(room, 0.0);
                 *kept = None;
             }
-            let uniform = match first {
-                Some((k, _)) if same_oil && OIL_COLUMNS[c] => Some(self.rows[k][c].to_bits()),
+            let uniform = match &uniform_row {
+                Some(row) if same_oil && *oil.each()[c] => Some(row.each()[c].to_bits()),
                 _ => None,
             };
             match (uniform, *kept) {
@@ -569,26 +692,19 @@ impl ContactLanes {
             {
                 *group = [contacts[k].prepared.is_some(); FILL_WIDTH];
             }
-            for ((column, kept), &value) in self.columns.iter_mut().zip(&self.kept).zip(row) {
-                if kept.is_none() {
-                    for group in column[groups.clone()].as_chunks_mut::<FILL_WIDTH>().0 {
-                        *group = [value; FILL_WIDTH];
-                    }
-                }
-            }
+            self.columns.fill_groups(&self.kept, groups, row);
         }
     }
 }
 
-rolldyn_numerics::avx2_twin! {
+rolldyn_numerics::avx512_twin! {
     /// [`evaluate_lubricated`] for Muraki (visco-elastic when `THERMAL`, else isothermal) with
     /// L = sinh⁻¹σ, Barus viscosity and Kragelsky boundary friction: the law is rebuilt here from
     /// constant variants, so every `match` on it folds away and the loop body is branch-free.
     ///
-    /// On x86-64 the loop is also compiled for AVX2 (four lanes) and AVX-512F (eight lanes; two
-    /// independent 256-bit chains per iteration on CPUs that split 512-bit operations, which
-    /// hides the latency of this long loop body), and the widest copy the CPU supports is
-    /// chosen at run time. All versions give the same bits: Rust never fuses a multiply and an
+    /// On x86-64 the loop is also compiled for AVX-512F (eight lanes; two independent 256-bit
+    /// chains per iteration on CPUs that split 512-bit operations, which hides the latency of
+    /// this long loop body), chosen at run time on CPUs that have it. Both give the same bits: Rust never fuses a multiply and an
     /// add on its own, and `+ − × ÷ √`, `min`/`max` and comparisons are exact in every width.
     fn evaluate_muraki<const THERMAL: bool>(
         slices: &Slices,
@@ -597,7 +713,7 @@ rolldyn_numerics::avx2_twin! {
         solid: SolidThermal,
         mixed: Option<MixedLimits>,
         out: &mut [f64],
-    ) = evaluate_muraki_portable / evaluate_muraki_avx2 / evaluate_muraki_avx512 {
+    ) = evaluate_muraki_portable / evaluate_muraki_avx512 {
         let rheology = if THERMAL {
             Rheology::ViscoElastic
         } else {
@@ -636,22 +752,12 @@ fn evaluate_lubricated(
     let rolling = &slices.rolling_speed_m_s[..n];
     let sliding = &slices.sliding_speed_m_s[..n];
     let prepared = &lanes.prepared[..n];
-    // the columns in the order of `lane_row`
-    let [
-        stiffness,
-        lambda,
-        weight,
-        eta0,
-        alpha,
-        gamma,
-        inv_gamma,
-        tau0,
-        beta0,
-        film,
-        inv_tau0_film,
-        tau0_sq_film,
-        conduction,
-    ] = lanes.columns.each_ref().map(|c| &c[..n]);
+    let c = &lanes.columns;
+    let (stiffness, lambda, weight) = (&c.stiffness[..n], &c.lambda[..n], &c.mixed_weight[..n]);
+    let (eta0, alpha, tau0, beta0) = (&c.eta0[..n], &c.alpha[..n], &c.tau0[..n], &c.beta0[..n]);
+    let (gamma, inv_gamma) = (&c.shear_modulus[..n], &c.inv_shear_modulus[..n]);
+    let (film, inv_tau0_film) = (&c.film[..n], &c.inv_tau0_film[..n]);
+    let (tau0_sq_film, conduction) = (&c.tau0_sq_film[..n], &c.film_conduction[..n]);
     for i in 0..n {
         let contact = ContactTraction {
             muraki: MurakiContact {
