@@ -13,8 +13,8 @@
 use std::time::Instant;
 
 use crate::cage_equilibrium::{CageBalance, CageSetup, LandSetup, RollerOnCage, cage_balance};
-use crate::cage_land::CageLandModel;
-use crate::conditions::{ContactTemperatures, OperatingConditions};
+use crate::cage_land::QuasiStaticLandModel;
+use crate::conditions::{QuasiStaticConditions, QuasiStaticContactTemperatures};
 use crate::drag::CageDragGeometry;
 use crate::error::QsError;
 use crate::friction::{BarLaw, bar_law, raceway_model};
@@ -42,7 +42,7 @@ const MAX_OPERATING_PRELOAD: f64 = 0.002;
 /// Everything that does not change during the iterations of one point.
 struct Setup<'a> {
     bearing: &'a CylindricalRollerBearing,
-    cond: &'a OperatingConditions,
+    cond: &'a QuasiStaticConditions,
     opts: &'a QuasiStaticOptions,
     geometry: OperatingGeometry,
     load_model: LoadModel,
@@ -51,7 +51,7 @@ struct Setup<'a> {
     inner: ContactSetup,
     outer: ContactSetup,
     bar_contact: ContactSetup,
-    temperatures: ContactTemperatures,
+    temperatures: QuasiStaticContactTemperatures,
     rib: Option<RibFilm>,
     pocket_coefficient: f64,
     cage: CageSetup,
@@ -89,7 +89,7 @@ fn finite(name: &str, v: f64) -> Result<f64, QsError> {
     }
 }
 
-fn viscosity(cond: &OperatingConditions, t: f64) -> Result<f64, QsError> {
+fn viscosity(cond: &QuasiStaticConditions, t: f64) -> Result<f64, QsError> {
     let oil = &cond.lubricant;
     oil.dynamic_viscosity(oil.clamp_temperature(t))
         .map_err(|e| QsError::Lubrication(e.to_string()))
@@ -98,7 +98,7 @@ fn viscosity(cond: &OperatingConditions, t: f64) -> Result<f64, QsError> {
 impl<'a> Setup<'a> {
     fn new(
         bearing: &'a CylindricalRollerBearing,
-        cond: &'a OperatingConditions,
+        cond: &'a QuasiStaticConditions,
         opts: &'a QuasiStaticOptions,
     ) -> Result<Self, QsError> {
         bearing
@@ -416,7 +416,7 @@ impl<'a> Setup<'a> {
         &self,
         cage_speed: f64,
         ws: &mut Workspace,
-        land_model: &dyn CageLandModel,
+        land_model: &dyn QuasiStaticLandModel,
     ) -> Result<f64, QsError> {
         let ld = self
             .load_model
@@ -568,9 +568,9 @@ pub fn static_load_rating(bearing: &CylindricalRollerBearing) -> f64 {
 /// See [`crate::solve_with_land_model`].
 pub(crate) fn run(
     bearing: &CylindricalRollerBearing,
-    cond: &OperatingConditions,
+    cond: &QuasiStaticConditions,
     opts: &QuasiStaticOptions,
-    land_model: &dyn CageLandModel,
+    land_model: &dyn QuasiStaticLandModel,
 ) -> Result<SkidResult, QsError> {
     let start = Instant::now();
     let setup = Setup::new(bearing, cond, opts)?;
@@ -647,7 +647,7 @@ fn finish(
     cage_speed: f64,
     cage_residual: f64,
     cage_evals: usize,
-    land_model: &dyn CageLandModel,
+    land_model: &dyn QuasiStaticLandModel,
     start: Instant,
 ) -> Result<SkidResult, QsError> {
     let cond = setup.cond;

@@ -20,7 +20,7 @@
 //! Every contribution is reported separately ([`ClearanceContributions`]); the growth is
 //! superposed (free thermal + free centrifugal + fit), as is usual for bearing clearances.
 
-use crate::conditions::{OperatingConditions, PartMaterial};
+use crate::conditions::{PartMaterial, QuasiStaticConditions};
 use rolldyn_geometry::{CageGuidance, CylindricalRollerBearing, Material};
 use serde::Serialize;
 
@@ -182,7 +182,7 @@ fn part(m: &PartMaterial) -> (f64, f64) {
 /// growth changes the floating clearance by < 1 µm in every seed case).
 pub fn operating_geometry(
     bearing: &CylindricalRollerBearing,
-    cond: &OperatingConditions,
+    cond: &QuasiStaticConditions,
     cage_speed_rad_s: f64,
 ) -> OperatingGeometry {
     let t = &cond.temperatures;

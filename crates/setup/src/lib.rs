@@ -4,6 +4,7 @@
 //! with the hydrodynamic cage land. Shared by `rolldyn simulate`, `sweep`, `startup` and `demo`;
 //! [`speed`] times such runs for `rolldyn bench`.
 
+pub mod quasi_static;
 pub mod speed;
 
 use rolldyn_dynamics::conditions::{ContactTemperatures, InnerRingLoad, OperatingConditions};
@@ -427,7 +428,7 @@ fn start_at_quasi_static_speeds(
         .hypot(fixed[1])
         .hypot(conditions.rotating_force_magnitude(0.0));
     let t = conditions.temperatures;
-    let mut qs = rolldyn_quasistatic::OperatingConditions::new(
+    let mut qs = rolldyn_quasistatic::QuasiStaticConditions::new(
         wi,
         wo,
         load,
@@ -438,14 +439,7 @@ fn start_at_quasi_static_speeds(
     qs.temperatures.cage = t.cage_k;
     // the dynamics' drag law, so that the start is the dynamics' own steady state
     qs.drag.viscous_coefficient_n_m_s = Some(conditions.cage_drag_n_m_s);
-    qs.friction = rolldyn_quasistatic::FrictionModel::Muraki {
-        settings: rolldyn_lubrication::MurakiSettings {
-            rheology: lubrication.rheology,
-            ..Default::default()
-        },
-        mixed: None,
-        film: rolldyn_lubrication::FilmFormula::Auto,
-    };
+    qs.friction = quasi_static::muraki_friction(lubrication);
     let options = rolldyn_quasistatic::QuasiStaticOptions::default();
     let compensated;
     let bearing = if clearance_is_operating {
