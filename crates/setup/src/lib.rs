@@ -227,13 +227,14 @@ fn contact_parameters(
     c
 }
 
-/// A simulation of `model` ready to run, and its cage revolution period [s].
+/// A simulation of `model` ready to run, and its cage revolution period [s] (`None`: the
+/// rings start at rest, see [`Prepared::revolution_s`]).
 pub fn prepare(
     model: &rolldyn_model::Model,
     overrides: &Overrides,
     output_step_s: f64,
     tolerance: Option<f64>,
-) -> Result<(Simulation, f64), SetupError> {
+) -> Result<(Simulation, Option<f64>), SetupError> {
     let (bearing, lubrication) = bearing_and_oil(model)?;
     let conditions = conditions(overrides, model)?;
     let p = prepare_with(
@@ -280,8 +281,9 @@ pub fn prepare_frozen(
 /// A simulation ready to run, with what was used to build it.
 pub struct Prepared {
     pub simulation: Simulation,
-    /// Cage revolution period at the epicyclic cage speed at t = 0, s.
-    pub revolution_s: f64,
+    /// Cage revolution period at the epicyclic cage speed at t = 0, s; `None` when that speed
+    /// is zero (the rings start at rest, e.g. a speed schedule from 0).
+    pub revolution_s: Option<f64>,
     /// Quasi-static solution at t = 0 (the start of the cage and roller speeds), or why the
     /// quasi-static model could not solve the point.
     pub quasi_static: Result<rolldyn_quasistatic::SkidResult, String>,
@@ -400,7 +402,7 @@ pub fn prepare_with(
     }
     Ok(Prepared {
         simulation: sim,
-        revolution_s: std::f64::consts::TAU / epicyclic.abs().max(1e-9),
+        revolution_s: (epicyclic != 0.0).then(|| std::f64::consts::TAU / epicyclic.abs()),
         quasi_static,
     })
 }

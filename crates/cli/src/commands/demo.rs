@@ -80,6 +80,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
 
     let (mut sim, revolution) =
         rolldyn_setup::prepare(&model, &rolldyn_setup::Overrides::default(), 0.0, None)?;
+    let revolution = revolution.ok_or_else(|| missing("a running inner ring"))?;
     let t_end = args.revolutions.max(0.1) * revolution;
     let dynamics = sim
         .run_until(t_end, &mut NullSink, &mut |_| {})

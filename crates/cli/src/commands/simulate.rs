@@ -530,11 +530,15 @@ impl<'a> Answer<'a> {
 }
 
 impl Duration {
-    /// The end time for a cage revolution period `revolution` [s].
-    pub fn end_time(self, revolution: f64) -> f64 {
-        match self {
-            Duration::CageRevolutions(n) => n * revolution,
-            Duration::Time(t) => t,
+    /// The end time for a cage revolution period `revolution` [s] (`None`: the rings start at
+    /// rest, and a number of revolutions is no duration).
+    pub fn end_time(self, revolution: Option<f64>) -> Result<f64, String> {
+        match (self, revolution) {
+            (Duration::CageRevolutions(n), Some(period)) => Ok(n * period),
+            (Duration::CageRevolutions(_), None) => Err(
+                "the inner ring starts at rest (operating.speed_schedule): give --duration as a time, e.g. 0.5s, or a constant --speed".into(),
+            ),
+            (Duration::Time(t), _) => Ok(t),
         }
     }
 }
@@ -567,12 +571,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
             Failure::Input(format!("{}: {e}{hint}", path.display()))
         })?;
     }
-    if matches!(args.duration, Duration::CageRevolutions(_)) && revolution > 1e6 {
-        return Err(Failure::Input(
-            "the inner ring starts at rest (operating.speed_schedule): give --duration as a time, e.g. 0.5s, or a constant --speed".into(),
-        ));
-    }
-    let t_end = args.duration.end_time(revolution);
+    let t_end = args.duration.end_time(revolution).map_err(Failure::Input)?;
     let dir = args.out.as_deref().map(out_dir).transpose()?;
     let mut sinks = Sinks(
         dir.as_deref()
@@ -582,10 +581,9 @@ pub fn run(args: Args) -> Result<(), Failure> {
     );
     let bar = progress_bar(args.quiet, t_end);
     let mut report = |t: f64| bar.set_position((1000.0 * t / t_end).min(1000.0) as u64);
-    let chunk = if args.checkpoint.is_some() {
-        revolution
-    } else {
-        t_end
+    let chunk = match (&args.checkpoint, revolution) {
+        (Some(_), Some(period)) => period,
+        _ => t_end,
     };
     let mut result = Ok(sim.summary());
     while sim.time() < t_end && result.is_ok() {

@@ -57,7 +57,7 @@ fn simulate(
     let (mut sim, revolution) =
         prepare(&model, &Overrides::default(), 0.0, None).map_err(|e| e.to_string())?;
     let summary = sim
-        .run_until(duration.end_time(revolution), &mut NullSink, &mut |_| {})
+        .run_until(duration.end_time(revolution)?, &mut NullSink, &mut |_| {})
         .map_err(|e| format!("the simulation stopped: {e}"))?;
     Ok(numbers(&summary_json(model.bearing.name(), &summary)))
 }
