@@ -59,7 +59,11 @@ fn non_finite_values_are_empty_csv_fields_and_parquet_nulls() {
     assert_eq!(csv.lines().collect::<Vec<_>>(), ["a,b", "1e0,", ",2e0"]);
     let reader =
         SerializedFileReader::new(std::fs::File::open(dir.join("gaps.parquet")).unwrap()).unwrap();
-    let rows: Vec<_> = reader.get_row_iter(None).unwrap().map(|r| r.unwrap()).collect();
+    let rows: Vec<_> = reader
+        .get_row_iter(None)
+        .unwrap()
+        .map(|r| r.unwrap())
+        .collect();
     assert_eq!(rows[0].get_double(0).unwrap(), 1.0);
     assert!(rows[0].get_double(1).is_err());
     assert!(rows[1].get_double(0).is_err());

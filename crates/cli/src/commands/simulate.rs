@@ -495,6 +495,51 @@ pub(crate) fn step_limits(counts: &[(String, u64)]) -> Vec<StepLimit> {
 }
 
 impl<'a> Answer<'a> {
+    /// The answer as JSON under the non-finite policy of docs/outputs.md.
+    pub(crate) fn to_json(&self) -> serde_json::Value {
+        let mut value = serde_json::to_value(self).unwrap_or_default();
+        if let Some(object) = value.as_object_mut() {
+            rolldyn_output::mark_non_finite(object, &self.numbers(), |key, v| {
+                non_finite_reason(key, v).to_string()
+            });
+        }
+        value
+    }
+
+    /// The real-valued fields with their JSON keys.
+    fn numbers(&self) -> [(&'static str, f64); 16] {
+        [
+            ("cage_slip_mean", self.cage_slip_mean),
+            ("cage_speed_mean_rad_s", self.cage_speed_mean_rad_s),
+            (
+                "epicyclic_cage_speed_rad_s",
+                self.epicyclic_cage_speed_rad_s,
+            ),
+            ("max_inner_contact_force_n", self.max_inner_contact_force_n),
+            ("max_outer_contact_force_n", self.max_outer_contact_force_n),
+            ("max_roller_cage_force_n", self.max_roller_cage_force_n),
+            ("max_cage_land_force_n", self.max_cage_land_force_n),
+            (
+                "max_roller_end_rib_force_n",
+                self.max_roller_end_rib_force_n,
+            ),
+            (
+                "max_roller_end_cage_force_n",
+                self.max_roller_end_cage_force_n,
+            ),
+            (
+                "max_inner_sliding_speed_m_s",
+                self.max_inner_sliding_speed_m_s,
+            ),
+            ("max_relative_slip", self.max_relative_slip),
+            ("min_scuffing_margin", self.min_scuffing_margin),
+            ("whirl_ratio", self.whirl_ratio),
+            ("cage_orbit_radius_m", self.cage_orbit_radius_m),
+            ("simulated_time_s", self.simulated_time_s),
+            ("wall_time_s", self.wall_time_s),
+        ]
+    }
+
     pub(crate) fn new(
         model: &'a str,
         s: &RunSummary,
@@ -611,12 +656,15 @@ pub fn run(args: Args) -> Result<(), Failure> {
     written?;
     let limits = step_limits(&sim.step_limits());
     if args.json {
-        return print_json(&Answer::new(
-            model.bearing.name(),
-            &summary,
-            limits,
-            dir.map(|d| d.display().to_string()),
-        ));
+        return print_json(
+            &Answer::new(
+                model.bearing.name(),
+                &summary,
+                limits,
+                dir.map(|d| d.display().to_string()),
+            )
+            .to_json(),
+        );
     }
     print_summary(model.bearing.name(), &summary, &limits);
     Ok(())
@@ -708,7 +756,16 @@ pub fn print_summary(model: &str, s: &RunSummary, limits: &[StepLimit]) {
     }
 }
 
-/// The JSON form of a run summary (used by `demo`).
+/// Why a run-summary value is not a finite number (docs/outputs.md).
+fn non_finite_reason(key: &str, value: f64) -> &'static str {
+    match key {
+        "min_scuffing_margin" => "no scuffing-margin maximum in the run",
+        "whirl_ratio" if value.is_nan() => "the cage centre does not orbit (no whirl)",
+        _ => rolldyn_output::default_reason(value),
+    }
+}
+
+/// The JSON form of a run summary (used by `demo` and `sweep`).
 pub fn summary_json(model: &str, s: &RunSummary) -> serde_json::Value {
-    serde_json::to_value(Answer::new(model, s, Vec::new(), None)).unwrap_or_default()
+    Answer::new(model, s, Vec::new(), None).to_json()
 }
