@@ -188,7 +188,7 @@ mod tests {
             &model,
             &Overrides::default(),
             None,
-            &|_| 2e-4,
+            &|_| Ok(2e-4),
             2,
             &mut |_, _| seen += 1,
         )
@@ -206,7 +206,7 @@ mod tests {
                 &model,
                 &Overrides::default(),
                 None,
-                &|_| 1e-4,
+                &|_| Ok(1e-4),
                 0,
                 &mut |_, _| {}
             )

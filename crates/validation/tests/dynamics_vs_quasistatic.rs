@@ -3,7 +3,7 @@
 //! 2 % of the largest load, same loaded rollers (load-zone extent), same clearance.
 
 use rolldyn_contact::roller_raceway::SliceLawChoice;
-use rolldyn_dynamics::conditions::QuasiStaticConditions;
+use rolldyn_dynamics::conditions::OperatingConditions;
 use rolldyn_dynamics::parameters::ContactParameters;
 use rolldyn_dynamics::settings::DynamicsSettings;
 use rolldyn_dynamics::{RacewayTraction, Simulation};
@@ -28,7 +28,7 @@ fn dynamics_start_matches_quasistatic_load_distribution() {
     // the quasi-static model, so none here either.
     let speed = 10.0 * std::f64::consts::PI / 30.0;
     let load = 687.0;
-    let mut conditions = QuasiStaticConditions::new(speed, load);
+    let mut conditions = OperatingConditions::new(speed, load);
     conditions.gravity_m_s2 = [0.0; 3];
     // Load pointing at roller 11 (azimuth 10·2π/13 from +x): the arrangement is symmetric about
     // the load line, so the ring moves along the load only. (The dynamics' start solves the
