@@ -409,7 +409,8 @@ pub fn prepare_with(
 
 /// Issue 6 "start from the quasi-static solution": the rollers keep the static load
 /// distribution of the default start, but cage and roller orbit speeds take the quasi-static
-/// cage speed (Muraki friction, short-bearing land), spins pure rolling on the outer raceway at
+/// cage speed (Muraki friction, the finite journal-bearing land of the dynamics'
+/// [`rolldyn_dynamics::HydrodynamicLand`]), spins pure rolling on the outer raceway at
 /// that speed. When the quasi-static model cannot solve the point the epicyclic start is kept.
 /// The quasi-static radial load is the r.m.s. over a shaft revolution of the vector sum of the
 /// fixed and rotating loads, √(|F_fixed|² + |F_rot|²) (their cross term averages out); it equals
@@ -460,7 +461,9 @@ fn start_at_quasi_static_speeds(
     } else {
         bearing
     };
-    let result = rolldyn_quasistatic::solve(bearing, &qs, &options).map_err(|e| e.to_string())?;
+    let land = quasi_static::cage_land_model(bearing, quasi_static::LandChoice::Finite);
+    let result = rolldyn_quasistatic::solve_with_land_model(bearing, &qs, &options, land.as_ref())
+        .map_err(|e| e.to_string())?;
     let wc = result.cage_speed_rad_s;
     initial.cage_speed_rad_s = wc;
     for r in &mut initial.rollers {
