@@ -471,6 +471,9 @@ pub(crate) struct Answer<'a> {
     #[serde(skip_serializing_if = "Vec::is_empty")]
     step_limited_by: Vec<StepLimit>,
     output_folder: Option<String>,
+    /// the summary's named figures, for the non-finite policy
+    #[serde(skip)]
+    columns: [(&'static str, f64); 20],
 }
 
 /// A kind of state component and its share of the steps it limited.
@@ -499,45 +502,11 @@ impl<'a> Answer<'a> {
     pub(crate) fn to_json(&self) -> serde_json::Value {
         let mut value = serde_json::to_value(self).unwrap_or_default();
         if let Some(object) = value.as_object_mut() {
-            rolldyn_output::mark_non_finite(object, &self.numbers(), |key, v| {
+            rolldyn_output::mark_non_finite(object, &self.columns, |key, v| {
                 non_finite_reason(key, v).to_string()
             });
         }
         value
-    }
-
-    /// The real-valued fields with their JSON keys.
-    fn numbers(&self) -> [(&'static str, f64); 16] {
-        [
-            ("cage_slip_mean", self.cage_slip_mean),
-            ("cage_speed_mean_rad_s", self.cage_speed_mean_rad_s),
-            (
-                "epicyclic_cage_speed_rad_s",
-                self.epicyclic_cage_speed_rad_s,
-            ),
-            ("max_inner_contact_force_n", self.max_inner_contact_force_n),
-            ("max_outer_contact_force_n", self.max_outer_contact_force_n),
-            ("max_roller_cage_force_n", self.max_roller_cage_force_n),
-            ("max_cage_land_force_n", self.max_cage_land_force_n),
-            (
-                "max_roller_end_rib_force_n",
-                self.max_roller_end_rib_force_n,
-            ),
-            (
-                "max_roller_end_cage_force_n",
-                self.max_roller_end_cage_force_n,
-            ),
-            (
-                "max_inner_sliding_speed_m_s",
-                self.max_inner_sliding_speed_m_s,
-            ),
-            ("max_relative_slip", self.max_relative_slip),
-            ("min_scuffing_margin", self.min_scuffing_margin),
-            ("whirl_ratio", self.whirl_ratio),
-            ("cage_orbit_radius_m", self.cage_orbit_radius_m),
-            ("simulated_time_s", self.simulated_time_s),
-            ("wall_time_s", self.wall_time_s),
-        ]
     }
 
     pub(crate) fn new(
@@ -570,6 +539,7 @@ impl<'a> Answer<'a> {
             rhs_evaluations: s.rhs_evaluations,
             step_limited_by,
             output_folder,
+            columns: s.columns(),
         }
     }
 }
@@ -765,7 +735,7 @@ fn non_finite_reason(key: &str, value: f64) -> &'static str {
     }
 }
 
-/// The JSON form of a run summary (used by `demo` and `sweep`).
+/// The JSON form of a run summary (used by `demo`).
 pub fn summary_json(model: &str, s: &RunSummary) -> serde_json::Value {
     Answer::new(model, s, Vec::new(), None).to_json()
 }

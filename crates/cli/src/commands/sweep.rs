@@ -1,7 +1,7 @@
 //! `rolldyn sweep SWEEP.toml`: a table of model variants run in parallel, one summary row per
 //! variant (CSV + Parquet) and one plot per summary column (seed 000 Figs 3.13–3.30).
 
-use super::simulate::{Duration, summary_json};
+use super::simulate::Duration;
 use crate::failure::Failure;
 use rolldyn_dynamics::output::NullSink;
 use rolldyn_quasistatic::QuasiStaticOptions;
@@ -59,7 +59,13 @@ fn simulate(
     let summary = sim
         .run_until(duration.end_time(revolution)?, &mut NullSink, &mut |_| {})
         .map_err(|e| format!("the simulation stopped: {e}"))?;
-    Ok(numbers(&summary_json(model.bearing.name(), &summary)))
+    // a figure that is not finite is absent from the row (an empty field of the table)
+    Ok(summary
+        .columns()
+        .into_iter()
+        .filter(|(_, v)| v.is_finite())
+        .map(|(k, v)| (k.to_string(), v))
+        .collect())
 }
 
 fn skid(model: rolldyn_model::Model) -> Result<BTreeMap<String, f64>, String> {
