@@ -206,11 +206,13 @@ pub fn write_outputs(dir: &Path, model: &str, rows: &[FrozenPointRow]) -> Result
         let values = numeric(row);
         let mut record = vec![row.label.clone()];
         // docs/outputs.md: an empty field for a value that is not finite
-        record.extend(
-            values
-                .iter()
-                .map(|v| v.is_finite().then(|| v.to_string()).unwrap_or_default()),
-        );
+        record.extend(values.iter().map(|v| {
+            if v.is_finite() {
+                v.to_string()
+            } else {
+                String::new()
+            }
+        }));
         record.push(row.note.clone());
         csv.write_record(&record).map_err(|e| fail(e.to_string()))?;
         parquet
