@@ -36,7 +36,7 @@ pub fn write_csv(
     writer.write_record(header).map_err(fail)?;
     for row in rows {
         writer
-            .write_record(row.iter().map(|v| format!("{v:e}")))
+            .write_record(row.iter().map(|&v| rolldyn_output::csv_field(v)))
             .map_err(fail)?;
     }
     writer.flush()?;

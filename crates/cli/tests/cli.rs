@@ -308,6 +308,28 @@ fn skid_point_and_sweep() {
     assert_eq!(out.status.code(), Some(2));
 }
 
+/// Issue 21: `--cage-land` reaches the single-point solve (it used to take the short land
+/// whatever the flag said).
+#[test]
+fn skid_point_uses_the_cage_land_flag() {
+    let point = |land: &str| {
+        json(&rolldyn(&[
+            "skid",
+            &example("obrien-taylor.toml"),
+            "--cage-land",
+            land,
+            "--json",
+        ]))
+    };
+    let (short, finite) = (point("short"), point("finite"));
+    assert_eq!(short["cage_land_model"], "short (Ocvirk) journal bearing");
+    assert_eq!(
+        finite["cage_land_model"],
+        "finite journal bearing (Reynolds crate table)"
+    );
+    assert_ne!(short["cage_slip"], finite["cage_slip"]);
+}
+
 #[test]
 fn bench_reports_each_run_and_identical_results() {
     let v = json(&rolldyn(&[

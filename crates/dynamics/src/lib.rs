@@ -95,6 +95,7 @@ mod slice_kernel;
 mod stepper;
 pub mod study;
 mod summary;
+mod summary_columns;
 mod vec3;
 
 pub use conditions::{

@@ -3,7 +3,12 @@
 //! A [`TableWriter`] receives one row at a time and never holds more than one Parquet row group
 //! (default 4096 rows) in memory, so a long simulation streams to disk. Rows written before a
 //! failure stay readable: call [`TableWriter::finish`] on the error path too (it writes the
-//! Parquet footer); dropping an unfinished writer also finishes it, best effort.
+//! Parquet footer); dropping an unfinished writer also finishes it, best effort. A value that
+//! is not finite is written as an empty CSV field and a Parquet null ([`non_finite`]).
+
+pub mod non_finite;
+
+pub use non_finite::{csv_field, default_reason, mark_non_finite};
 
 use parquet::basic::Compression;
 use parquet::data_type::DoubleType;
@@ -48,25 +53,28 @@ impl Default for Formats {
 struct ParquetSink {
     path: PathBuf,
     writer: SerializedFileWriter<File>,
-    /// Column-major buffer of the current row group.
-    columns: Vec<Vec<f64>>,
+    /// Column-major buffer of the current row group: the finite values of each column and the
+    /// definition level of each row (1 value, 0 null).
+    columns: Vec<(Vec<f64>, Vec<i16>)>,
 }
 
 impl ParquetSink {
     fn flush(&mut self) -> Result<(), OutputError> {
-        if self.columns.first().is_none_or(|c| c.is_empty()) {
+        if self.columns.first().is_none_or(|c| c.1.is_empty()) {
             return Ok(());
         }
         let path = self.path.clone();
         let mut group = self.writer.next_row_group().map_err(|e| fail(&path, e))?;
         let mut k = 0;
         while let Some(mut column) = group.next_column().map_err(|e| fail(&path, e))? {
+            let (values, levels) = &mut self.columns[k];
             column
                 .typed::<DoubleType>()
-                .write_batch(&self.columns[k], None, None)
+                .write_batch(values, Some(levels), None)
                 .map_err(|e| fail(&path, e))?;
             column.close().map_err(|e| fail(&path, e))?;
-            self.columns[k].clear();
+            values.clear();
+            levels.clear();
             k += 1;
         }
         group.close().map_err(|e| fail(&path, e))?;
@@ -123,7 +131,7 @@ impl TableWriter {
             let path = dir.join(format!("{stem}.parquet"));
             let fields: String = names
                 .iter()
-                .map(|n| format!("REQUIRED DOUBLE {n}; "))
+                .map(|n| format!("OPTIONAL DOUBLE {n}; "))
                 .collect();
             let schema = parse_message_type(&format!(
                 "message {stem_name} {{ {fields}}}",
@@ -139,7 +147,7 @@ impl TableWriter {
             Some(ParquetSink {
                 path,
                 writer,
-                columns: vec![Vec::new(); names.len()],
+                columns: vec![(Vec::new(), Vec::new()); names.len()],
             })
         } else {
             None
@@ -179,14 +187,17 @@ impl TableWriter {
         }
         if let Some((path, writer)) = &mut self.csv {
             writer
-                .write_record(values.iter().map(|v| format!("{v:e}")))
+                .write_record(values.iter().map(|&v| csv_field(v)))
                 .map_err(|e| fail(path, e))?;
         }
         if let Some(sink) = &mut self.parquet {
-            for (column, v) in sink.columns.iter_mut().zip(values) {
-                column.push(*v);
+            for ((column, levels), &v) in sink.columns.iter_mut().zip(values) {
+                levels.push(i16::from(v.is_finite()));
+                if v.is_finite() {
+                    column.push(v);
+                }
             }
-            if sink.columns[0].len() >= self.row_group_rows {
+            if sink.columns[0].1.len() >= self.row_group_rows {
                 sink.flush()?;
             }
         }

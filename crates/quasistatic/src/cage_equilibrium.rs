@@ -15,7 +15,7 @@
 //!   ⚠ F-41: lever D_s1/2 (default) or the seed's D_s1 ([`crate::options::LandMomentArm`]);
 //! * air–oil drag T_ts ([`crate::drag`]), opposing ω₀.
 
-use crate::cage_land::{CageLandInput, CageLandModel, CageLandOutput};
+use crate::cage_land::{CageLandInput, CageLandOutput, QuasiStaticLandModel};
 use crate::conditions::DragInputs;
 use crate::drag::{CageDrag, CageDragGeometry, cage_drag};
 use serde::Serialize;
@@ -108,7 +108,7 @@ pub fn cage_balance(
     rollers: &[RollerOnCage],
     cage_speed: f64,
     land_speed: f64,
-    land_model: &dyn CageLandModel,
+    land_model: &dyn QuasiStaticLandModel,
 ) -> CageBalance {
     let (mut fx, mut fy, mut t_s, mut scale) = (0.0, 0.0, 0.0, 0.0);
     for r in rollers {

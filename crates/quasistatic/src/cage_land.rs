@@ -1,7 +1,7 @@
 //! Cage ↔ guiding-land contact as a narrow journal bearing (SPEC §5.5; seed 001 cites
 //! Zhilnikov & Samsonov without formulas, ⚠ F-43).
 //!
-//! The model sits behind the small trait [`CageLandModel`] so that a finite journal-bearing
+//! The model sits behind the small trait [`QuasiStaticLandModel`] so that a finite journal-bearing
 //! solver (the Reynolds crate, SPEC §8.6) can replace the default [`ShortBearing`] later.
 
 use rolldyn_reynolds::cage_land::couette_land_torque;
@@ -53,7 +53,7 @@ pub struct CageLandOutput {
 }
 
 /// A cage–land friction model.
-pub trait CageLandModel: Send + Sync {
+pub trait QuasiStaticLandModel: Send + Sync {
     /// Evaluates the land contact.
     fn evaluate(&self, input: &CageLandInput) -> CageLandOutput;
     /// Short description for reports.
@@ -102,7 +102,7 @@ impl ShortBearing {
     }
 }
 
-impl CageLandModel for ShortBearing {
+impl QuasiStaticLandModel for ShortBearing {
     fn name(&self) -> &'static str {
         "short (Ocvirk) journal bearing"
     }
@@ -329,7 +329,7 @@ impl FiniteLand {
     }
 }
 
-impl CageLandModel for FiniteLand {
+impl QuasiStaticLandModel for FiniteLand {
     fn name(&self) -> &'static str {
         "finite journal bearing (Reynolds crate table)"
     }

@@ -1,4 +1,4 @@
-//! Operating conditions of one quasi-static point ([`OperatingConditions`], SPEC §5.6 "input").
+//! Operating conditions of one quasi-static point ([`QuasiStaticConditions`], SPEC §5.6 "input").
 //!
 //! All SI: speeds in rad/s, forces in N, lengths in m, temperatures in **kelvin**. Values the
 //! seeds do not give have documented defaults (marked "standard form" or "assumed").
@@ -72,7 +72,7 @@ impl PartTemperatures {
 /// Oil (inlet) temperatures of the contacts, K. Seed 001 starts the flash-temperature iteration
 /// of a raceway contact from the temperature of its ring; seed 000 uses one oil temperature.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct ContactTemperatures {
+pub struct QuasiStaticContactTemperatures {
     /// Roller ↔ inner raceway.
     pub inner: f64,
     /// Roller ↔ outer raceway.
@@ -354,7 +354,7 @@ impl Default for CageLandInputs {
 
 /// Everything that defines one operating point (SPEC §5.6 "input").
 #[derive(Debug, Clone, PartialEq)]
-pub struct OperatingConditions {
+pub struct QuasiStaticConditions {
     /// Inner-ring angular speed ω_в, rad/s (positive = the bearing's positive sense).
     pub inner_speed_rad_s: f64,
     /// Outer-ring angular speed ω_н, rad/s (intershaft bearings: both non-zero).
@@ -371,7 +371,7 @@ pub struct OperatingConditions {
     pub temperatures: PartTemperatures,
     /// Contact oil temperatures; `None` → raceway contacts at their ring's temperature, the bar
     /// contact at the cage temperature.
-    pub contact_temperatures: Option<ContactTemperatures>,
+    pub contact_temperatures: Option<QuasiStaticContactTemperatures>,
     /// Oil.
     pub lubricant: Lubricant,
     /// Raceway friction model.
@@ -394,7 +394,7 @@ pub struct OperatingConditions {
     pub thermal_expansion: ThermalExpansion,
 }
 
-impl OperatingConditions {
+impl QuasiStaticConditions {
     /// A point with every part at `temperature_k`, default friction (Muraki, oil's Λ limits)
     /// and all documented defaults.
     pub fn new(
@@ -429,12 +429,13 @@ impl OperatingConditions {
     }
 
     /// Contact temperatures in use (explicit or from the part temperatures).
-    pub fn resolved_contact_temperatures(&self) -> ContactTemperatures {
-        self.contact_temperatures.unwrap_or(ContactTemperatures {
-            inner: self.temperatures.inner_ring,
-            outer: self.temperatures.outer_ring,
-            cage_bar: self.temperatures.cage,
-        })
+    pub fn resolved_contact_temperatures(&self) -> QuasiStaticContactTemperatures {
+        self.contact_temperatures
+            .unwrap_or(QuasiStaticContactTemperatures {
+                inner: self.temperatures.inner_ring,
+                outer: self.temperatures.outer_ring,
+                cage_bar: self.temperatures.cage,
+            })
     }
 }
 

@@ -2,7 +2,7 @@
 //! the raceway traction model of the lubrication crate (seed 001 or seed 000 / Muraki, SPEC
 //! §4.4–4.9) and the roller ↔ cage-bar law.
 
-use crate::conditions::{BarFriction, FrictionModel, OperatingConditions};
+use crate::conditions::{BarFriction, FrictionModel, QuasiStaticConditions};
 use crate::error::QsError;
 use rolldyn_lubrication::traction::{
     FrictionLaw, Hydrodynamic, LubricatedFriction, TractionConfig, regularisation,
@@ -42,7 +42,7 @@ impl BarLaw {
 }
 
 /// Builds the raceway traction model of `cond`.
-pub fn raceway_model(cond: &OperatingConditions) -> Result<TractionModel, QsError> {
+pub fn raceway_model(cond: &QuasiStaticConditions) -> Result<TractionModel, QsError> {
     let oil = cond.lubricant.clone();
     let cfg = match &cond.friction {
         FrictionModel::Seed001(st) => TractionConfig {
@@ -90,7 +90,7 @@ pub fn raceway_model(cond: &OperatingConditions) -> Result<TractionModel, QsErro
 }
 
 /// Builds the bar law of `cond` (see [`BarFriction`]).
-pub fn bar_law(cond: &OperatingConditions, raceway: &TractionModel) -> Result<BarLaw, QsError> {
+pub fn bar_law(cond: &QuasiStaticConditions, raceway: &TractionModel) -> Result<BarLaw, QsError> {
     let same = || BarLaw::Traction(Box::new(raceway.clone()));
     Ok(match cond.bar_friction {
         BarFriction::SameAsRaceways => same(),

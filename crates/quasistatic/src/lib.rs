@@ -15,10 +15,10 @@
 //! | [`kinematics`] | cage-frame speeds, epicyclic speed, slips | §5.3 |
 //! | [`roller_equilibrium`] | roller moment equation ΣT(ε_w) = 0 | §5.4, §4.9 |
 //! | [`cage_equilibrium`] | cage moment equation Φ(ε₀) = 0 | §5.5 |
-//! | [`cage_land`] | [`CageLandModel`] trait, short-bearing (Ocvirk) land | §5.5 |
+//! | [`cage_land`] | [`QuasiStaticLandModel`] trait, short-bearing (Ocvirk) land | §5.5 |
 //! | [`drag`] | air–oil drag of the cage | §4.10, §5.5 |
 //! | [`results`] | [`SkidResult`] | §5.6 |
-//! | [`options`] / [`conditions`] | [`QuasiStaticOptions`], [`OperatingConditions`] | §5.6 |
+//! | [`options`] / [`conditions`] | [`QuasiStaticOptions`], [`QuasiStaticConditions`] | §5.6 |
 //! | [`mod@sweep`] | deterministic sweeps over speed, load, misalignment | |
 //! | [`studies`] | O'Brien–Taylor (V-06) and intershaft (V-18) studies | V-06, V-18 |
 //!
@@ -26,7 +26,7 @@
 //! use rolldyn_quasistatic::*;
 //! # fn demo(bearing: &rolldyn_geometry::CylindricalRollerBearing) -> Result<(), QsError> {
 //! let oil = rolldyn_lubrication::lubricant_by_name("nvi65").unwrap();
-//! let mut cond = OperatingConditions::new(rpm(4000.0), 0.0, 201.0, oil, celsius(54.5));
+//! let mut cond = QuasiStaticConditions::new(rpm(4000.0), 0.0, 201.0, oil, celsius(54.5));
 //! cond.friction = FrictionModel::seed000_nvi65();
 //! let r = solve(bearing, &cond, &QuasiStaticOptions::default())?;
 //! println!("cage slip {:.2} %", 100.0 * r.cage_slip);
@@ -51,11 +51,13 @@ pub mod roller_equilibrium;
 pub mod studies;
 pub mod sweep;
 
-pub use cage_land::{CageLandInput, CageLandModel, CageLandOutput, FiniteLand, ShortBearing};
+pub use cage_land::{
+    CageLandInput, CageLandOutput, FiniteLand, QuasiStaticLandModel, ShortBearing,
+};
 pub use conditions::{
-    BarFriction, CageLandInputs, ContactTemperatures, DragCoefficient, DragInputs, EndFriction,
-    FrictionModel, MixtureDensity, Mounting, OperatingConditions, PartMaterial, PartTemperatures,
-    ThermalExpansion, celsius, rpm,
+    BarFriction, CageLandInputs, DragCoefficient, DragInputs, EndFriction, FrictionModel,
+    MixtureDensity, Mounting, PartMaterial, PartTemperatures, QuasiStaticConditions,
+    QuasiStaticContactTemperatures, ThermalExpansion, celsius, rpm,
 };
 pub use error::{QsError, Residual};
 pub use kinematics::KinematicCase;
@@ -73,7 +75,7 @@ use rolldyn_geometry::CylindricalRollerBearing;
 /// residuals; a returned result contains no NaN.
 pub fn solve(
     bearing: &CylindricalRollerBearing,
-    conditions: &OperatingConditions,
+    conditions: &QuasiStaticConditions,
     options: &QuasiStaticOptions,
 ) -> Result<SkidResult, QsError> {
     model::run(bearing, conditions, options, &ShortBearing::default())
@@ -82,9 +84,9 @@ pub fn solve(
 /// As [`solve`] with a caller-supplied cage–land model (e.g. a finite journal-bearing solver).
 pub fn solve_with_land_model(
     bearing: &CylindricalRollerBearing,
-    conditions: &OperatingConditions,
+    conditions: &QuasiStaticConditions,
     options: &QuasiStaticOptions,
-    land_model: &dyn CageLandModel,
+    land_model: &dyn QuasiStaticLandModel,
 ) -> Result<SkidResult, QsError> {
     model::run(bearing, conditions, options, land_model)
 }

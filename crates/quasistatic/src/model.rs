@@ -13,8 +13,8 @@
 use std::time::Instant;
 
 use crate::cage_equilibrium::{CageBalance, CageSetup, LandSetup, RollerOnCage, cage_balance};
-use crate::cage_land::CageLandModel;
-use crate::conditions::{ContactTemperatures, OperatingConditions};
+use crate::cage_land::QuasiStaticLandModel;
+use crate::conditions::{QuasiStaticConditions, QuasiStaticContactTemperatures};
 use crate::drag::CageDragGeometry;
 use crate::error::QsError;
 use crate::friction::{BarLaw, bar_law, raceway_model};
@@ -42,7 +42,7 @@ const MAX_OPERATING_PRELOAD: f64 = 0.002;
 /// Everything that does not change during the iterations of one point.
 struct Setup<'a> {
     bearing: &'a CylindricalRollerBearing,
-    cond: &'a OperatingConditions,
+    cond: &'a QuasiStaticConditions,
     opts: &'a QuasiStaticOptions,
     geometry: OperatingGeometry,
     load_model: LoadModel,
@@ -51,7 +51,7 @@ struct Setup<'a> {
     inner: ContactSetup,
     outer: ContactSetup,
     bar_contact: ContactSetup,
-    temperatures: ContactTemperatures,
+    temperatures: QuasiStaticContactTemperatures,
     rib: Option<RibFilm>,
     pocket_coefficient: f64,
     cage: CageSetup,
@@ -83,7 +83,7 @@ struct Workspace {
 /// values, non-negative radial load, absolute temperatures, misalignment ≤ 1°).
 fn checked_inputs(
     bearing: &CylindricalRollerBearing,
-    cond: &OperatingConditions,
+    cond: &QuasiStaticConditions,
 ) -> Result<(f64, f64, f64), QsError> {
     let wi = finite("inner_speed_rad_s", cond.inner_speed_rad_s)?;
     let wo = finite("outer_speed_rad_s", cond.outer_speed_rad_s)?;
@@ -133,7 +133,7 @@ fn checked_inputs(
 /// drag switched off. `r_e` is the end-face radius, `(r_w, r_c)` the roller and pitch radii.
 fn rib_film(
     bearing: &CylindricalRollerBearing,
-    cond: &OperatingConditions,
+    cond: &QuasiStaticConditions,
     geometry: &OperatingGeometry,
     r_e: f64,
     (r_w, r_c): (f64, f64),
@@ -180,7 +180,7 @@ fn rib_film(
 /// Drag coefficient of the two roller end faces in their pockets, `T = π μ ω r_e⁴/(2h)` each
 /// (0 when switched off or without a cage).
 fn pocket_coefficient(
-    cond: &OperatingConditions,
+    cond: &QuasiStaticConditions,
     geometry: &OperatingGeometry,
     r_e: f64,
 ) -> Result<f64, QsError> {
@@ -201,7 +201,7 @@ fn pocket_coefficient(
 /// roller-guided cage or with the land model switched off).
 fn land_setup(
     bearing: &CylindricalRollerBearing,
-    cond: &OperatingConditions,
+    cond: &QuasiStaticConditions,
     geometry: &OperatingGeometry,
     cage_mass: f64,
 ) -> Result<(Option<LandSetup>, f64), QsError> {
@@ -258,7 +258,7 @@ fn finite(name: &str, v: f64) -> Result<f64, QsError> {
     }
 }
 
-fn viscosity(cond: &OperatingConditions, t: f64) -> Result<f64, QsError> {
+fn viscosity(cond: &QuasiStaticConditions, t: f64) -> Result<f64, QsError> {
     let oil = &cond.lubricant;
     oil.dynamic_viscosity(oil.clamp_temperature(t))
         .map_err(|e| QsError::Lubrication(e.to_string()))
@@ -267,7 +267,7 @@ fn viscosity(cond: &OperatingConditions, t: f64) -> Result<f64, QsError> {
 impl<'a> Setup<'a> {
     fn new(
         bearing: &'a CylindricalRollerBearing,
-        cond: &'a OperatingConditions,
+        cond: &'a QuasiStaticConditions,
         opts: &'a QuasiStaticOptions,
     ) -> Result<Self, QsError> {
         bearing
@@ -444,7 +444,7 @@ impl<'a> Setup<'a> {
         &self,
         cage_speed: f64,
         ws: &mut Workspace,
-        land_model: &dyn CageLandModel,
+        land_model: &dyn QuasiStaticLandModel,
     ) -> Result<f64, QsError> {
         let ld = self
             .load_model
@@ -596,9 +596,9 @@ pub fn static_load_rating(bearing: &CylindricalRollerBearing) -> f64 {
 /// See [`crate::solve_with_land_model`].
 pub(crate) fn run(
     bearing: &CylindricalRollerBearing,
-    cond: &OperatingConditions,
+    cond: &QuasiStaticConditions,
     opts: &QuasiStaticOptions,
-    land_model: &dyn CageLandModel,
+    land_model: &dyn QuasiStaticLandModel,
 ) -> Result<SkidResult, QsError> {
     let start = Instant::now();
     let setup = Setup::new(bearing, cond, opts)?;
@@ -675,7 +675,7 @@ fn finish(
     cage_speed: f64,
     cage_residual: f64,
     cage_evals: usize,
-    land_model: &dyn CageLandModel,
+    land_model: &dyn QuasiStaticLandModel,
     start: Instant,
 ) -> Result<SkidResult, QsError> {
     let cond = setup.cond;

@@ -20,7 +20,7 @@
 //! Every contribution is reported separately ([`ClearanceContributions`]); the growth is
 //! superposed (free thermal + free centrifugal + fit), as is usual for bearing clearances.
 
-use crate::conditions::{OperatingConditions, PartMaterial};
+use crate::conditions::{PartMaterial, QuasiStaticConditions};
 use rolldyn_geometry::{CageGuidance, CylindricalRollerBearing, Material};
 use serde::Serialize;
 
@@ -182,7 +182,7 @@ fn part(m: &PartMaterial) -> (f64, f64) {
 /// growth changes the floating clearance by < 1 µm in every seed case).
 pub fn operating_geometry(
     bearing: &CylindricalRollerBearing,
-    cond: &OperatingConditions,
+    cond: &QuasiStaticConditions,
     cage_speed_rad_s: f64,
 ) -> OperatingGeometry {
     let t = &cond.temperatures;
@@ -280,7 +280,7 @@ pub fn operating_geometry(
 /// Inner-ring fit on the shaft at the operating temperatures and speed (module docs, Lamé).
 fn inner_ring_fit(
     bearing: &CylindricalRollerBearing,
-    cond: &OperatingConditions,
+    cond: &QuasiStaticConditions,
     warnings: &mut Vec<String>,
 ) -> FitState {
     let (t, ax, m) = (&cond.temperatures, &cond.thermal_expansion, &cond.mounting);
@@ -327,7 +327,7 @@ fn inner_ring_fit(
 /// Outer-ring fit in the housing at the operating temperatures and speed (module docs, Lamé).
 fn outer_ring_fit(
     bearing: &CylindricalRollerBearing,
-    cond: &OperatingConditions,
+    cond: &QuasiStaticConditions,
     warnings: &mut Vec<String>,
 ) -> FitState {
     let (t, ax, m) = (&cond.temperatures, &cond.thermal_expansion, &cond.mounting);
@@ -389,7 +389,7 @@ fn warn_if_fit_lost(fit: &FitState, ring: &str, warnings: &mut Vec<String>) {
 /// and outer raceway diameters, m.
 fn cage_clearance(
     bearing: &CylindricalRollerBearing,
-    cond: &OperatingConditions,
+    cond: &QuasiStaticConditions,
     raceway_growth: (f64, f64),
     cage_speed_rad_s: f64,
     warnings: &mut Vec<String>,
@@ -449,7 +449,7 @@ fn cage_clearance(
 /// Roller–rib axial clearance in operation, on the ring that carries two ribs.
 fn roller_rib_clearance(
     bearing: &CylindricalRollerBearing,
-    cond: &OperatingConditions,
+    cond: &QuasiStaticConditions,
     warnings: &mut Vec<String>,
 ) -> Option<AxialClearance> {
     let (t, ax) = (&cond.temperatures, &cond.thermal_expansion);
@@ -484,7 +484,7 @@ fn roller_rib_clearance(
 /// Roller–pocket axial clearance in operation (at least 1 µm).
 fn pocket_end_clearance(
     bearing: &CylindricalRollerBearing,
-    cond: &OperatingConditions,
+    cond: &QuasiStaticConditions,
 ) -> Option<AxialClearance> {
     let (t, ax) = (&cond.temperatures, &cond.thermal_expansion);
     let ta = t.assembly;

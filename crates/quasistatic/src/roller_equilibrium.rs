@@ -31,7 +31,7 @@
 //! solved by the safeguarded Newton of [`rolldyn_numerics::root1d`] (secant slope). The unloaded zone (Q_i = 0,
 //! Q_o = F_c) uses the same equations (SPEC §5.4 proposal).
 
-use crate::conditions::ContactTemperatures;
+use crate::conditions::QuasiStaticContactTemperatures;
 use crate::error::QsError;
 use crate::friction::BarLaw;
 use crate::kinematics::Kinematics;
@@ -82,7 +82,7 @@ pub struct RollerEnv<'a> {
     /// Roller ↔ bar contact data.
     pub bar_contact: ContactSetup,
     /// Oil temperatures of the contacts, K.
-    pub temperatures: ContactTemperatures,
+    pub temperatures: QuasiStaticContactTemperatures,
     /// Rib film (`None`: no guiding ribs or switched off).
     pub rib: Option<RibFilm>,
     /// c_sc of T_sc = c_sc ω_w (both ends), N·m·s.

@@ -8,7 +8,7 @@
 //!   here and documented, with the seed's operating data (F_r = 50 N, 47.3/43 °C rings, mounting
 //!   clearance 0.043 mm, n_н = 13 067 rpm, n_в = 8152 rpm).
 
-use crate::conditions::{FrictionModel, OperatingConditions, PartTemperatures, celsius, rpm};
+use crate::conditions::{FrictionModel, PartTemperatures, QuasiStaticConditions, celsius, rpm};
 use crate::options::QuasiStaticOptions;
 use rolldyn_geometry::{
     Cage, CageGuidance, Chamfer, Clearance, CylindricalRollerBearing, EndFace, GuidingLand,
@@ -93,7 +93,7 @@ pub fn obrien_taylor_conditions(
     radial_load_n: f64,
     misalignment_rad: f64,
     traction: NviTraction,
-) -> OperatingConditions {
+) -> QuasiStaticConditions {
     let mut oil = lubricant_by_name("nvi65").expect("built-in oil");
     let t = celsius(obrien_taylor_temperature_c(speed_rpm));
     let friction = match traction {
@@ -110,7 +110,7 @@ pub fn obrien_taylor_conditions(
             }
         }
     };
-    let mut c = OperatingConditions::new(rpm(speed_rpm), 0.0, radial_load_n, oil, t);
+    let mut c = QuasiStaticConditions::new(rpm(speed_rpm), 0.0, radial_load_n, oil, t);
     c.friction = friction;
     c.misalignment_rad = Some(misalignment_rad);
     c
@@ -393,8 +393,8 @@ pub fn intershaft_conditions(
     inner_rpm: f64,
     outer_rpm: f64,
     radial_load_n: f64,
-) -> OperatingConditions {
-    let mut c = OperatingConditions::new(
+) -> QuasiStaticConditions {
+    let mut c = QuasiStaticConditions::new(
         rpm(inner_rpm),
         rpm(outer_rpm),
         radial_load_n,

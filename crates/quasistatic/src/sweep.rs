@@ -1,7 +1,8 @@
 //! Deterministic sweeps over one operating variable (plain loop, warm-started from the previous
 //! converged point; the caller may parallelise independent sweeps).
 
-use crate::conditions::OperatingConditions;
+use crate::cage_land::QuasiStaticLandModel;
+use crate::conditions::QuasiStaticConditions;
 use crate::error::QsError;
 use crate::options::QuasiStaticOptions;
 use crate::results::SkidResult;
@@ -31,10 +32,10 @@ pub struct SweepPoint {
 
 /// Conditions of one sweep point.
 pub fn apply(
-    base: &OperatingConditions,
+    base: &QuasiStaticConditions,
     variable: SweepVariable,
     value: f64,
-) -> OperatingConditions {
+) -> QuasiStaticConditions {
     let mut c = base.clone();
     match variable {
         SweepVariable::InnerSpeed => c.inner_speed_rad_s = value,
@@ -45,13 +46,14 @@ pub fn apply(
     c
 }
 
-/// Solves `values.len()` points in order. Each point starts from the cage slip of the previous
-/// converged point (`options.initial_cage_slip` for the first); a failed point does not stop
-/// the sweep.
+/// Solves `values.len()` points in order with the cage–land model `land_model`. Each point
+/// starts from the cage slip of the previous converged point (`options.initial_cage_slip` for
+/// the first); a failed point does not stop the sweep.
 pub fn sweep(
     bearing: &CylindricalRollerBearing,
-    base: &OperatingConditions,
+    base: &QuasiStaticConditions,
     options: &QuasiStaticOptions,
+    land_model: &dyn QuasiStaticLandModel,
     variable: SweepVariable,
     values: &[f64],
 ) -> Vec<SweepPoint> {
@@ -60,7 +62,7 @@ pub fn sweep(
         .iter()
         .map(|&value| {
             let cond = apply(base, variable, value);
-            let result = crate::solve(bearing, &cond, &opts);
+            let result = crate::solve_with_land_model(bearing, &cond, &opts, land_model);
             if let Ok(r) = &result {
                 opts.initial_cage_slip = r.cage_slip;
             }

@@ -3,7 +3,7 @@
 //! and eccentricities within 10 % (the Reynolds crate measured short-bearing theory up to 14 %
 //! off its full solver at high eccentricity; at these light loads the film is nearly concentric).
 
-use rolldyn_quasistatic::{CageLandInput, CageLandModel, FiniteLand, ShortBearing};
+use rolldyn_quasistatic::{CageLandInput, FiniteLand, QuasiStaticLandModel, ShortBearing};
 
 #[test]
 fn finite_land_agrees_with_short_bearing_on_a_narrow_rail() {

@@ -6,7 +6,7 @@ mod common;
 use rolldyn_quasistatic::studies::{self, NviTraction};
 use rolldyn_quasistatic::*;
 
-fn frictionless_resistances(c: &mut OperatingConditions) {
+fn frictionless_resistances(c: &mut QuasiStaticConditions) {
     c.drag.enabled = false;
     c.cage_land.enabled = false;
     c.end_friction = EndFriction {
@@ -172,9 +172,9 @@ fn bad_input_and_warnings() {
     );
     // NaN speed, negative load, absurd temperature
     for f in [
-        |c: &mut OperatingConditions| c.inner_speed_rad_s = f64::NAN,
-        |c: &mut OperatingConditions| c.radial_load_n = -1.0,
-        |c: &mut OperatingConditions| c.temperatures.cage = -5.0,
+        |c: &mut QuasiStaticConditions| c.inner_speed_rad_s = f64::NAN,
+        |c: &mut QuasiStaticConditions| c.radial_load_n = -1.0,
+        |c: &mut QuasiStaticConditions| c.temperatures.cage = -5.0,
     ] {
         let mut c = base.clone();
         f(&mut c);
@@ -259,7 +259,7 @@ fn operating_geometry_contributions() {
 #[test]
 fn custom_cage_land_model_and_sweep_determinism() {
     struct NoLand;
-    impl CageLandModel for NoLand {
+    impl QuasiStaticLandModel for NoLand {
         fn evaluate(&self, i: &CageLandInput) -> CageLandOutput {
             CageLandOutput {
                 pressing_force_n: i.roller_force_n,
@@ -285,6 +285,7 @@ fn custom_cage_land_model_and_sweep_determinism() {
         &ot,
         &c,
         &QuasiStaticOptions::default(),
+        &ShortBearing::default(),
         SweepVariable::RadialLoad,
         &loads,
     );
@@ -292,6 +293,7 @@ fn custom_cage_land_model_and_sweep_determinism() {
         &ot,
         &c,
         &QuasiStaticOptions::default(),
+        &ShortBearing::default(),
         SweepVariable::RadialLoad,
         &loads,
     );

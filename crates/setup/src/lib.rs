@@ -4,6 +4,7 @@
 //! with the hydrodynamic cage land. Shared by `rolldyn simulate`, `sweep`, `startup` and `demo`;
 //! [`speed`] times such runs for `rolldyn bench`.
 
+pub mod quasi_static;
 pub mod speed;
 
 use rolldyn_dynamics::conditions::{ContactTemperatures, InnerRingLoad, OperatingConditions};
@@ -226,13 +227,14 @@ fn contact_parameters(
     c
 }
 
-/// A simulation of `model` ready to run, and its cage revolution period [s].
+/// A simulation of `model` ready to run, and its cage revolution period [s] (`None`: the
+/// rings start at rest, see [`Prepared::revolution_s`]).
 pub fn prepare(
     model: &rolldyn_model::Model,
     overrides: &Overrides,
     output_step_s: f64,
     tolerance: Option<f64>,
-) -> Result<(Simulation, f64), SetupError> {
+) -> Result<(Simulation, Option<f64>), SetupError> {
     let (bearing, lubrication) = bearing_and_oil(model)?;
     let conditions = conditions(overrides, model)?;
     let p = prepare_with(
@@ -279,8 +281,9 @@ pub fn prepare_frozen(
 /// A simulation ready to run, with what was used to build it.
 pub struct Prepared {
     pub simulation: Simulation,
-    /// Cage revolution period at the epicyclic cage speed at t = 0, s.
-    pub revolution_s: f64,
+    /// Cage revolution period at the epicyclic cage speed at t = 0, s; `None` when that speed
+    /// is zero (the rings start at rest, e.g. a speed schedule from 0).
+    pub revolution_s: Option<f64>,
     /// Quasi-static solution at t = 0 (the start of the cage and roller speeds), or why the
     /// quasi-static model could not solve the point.
     pub quasi_static: Result<rolldyn_quasistatic::SkidResult, String>,
@@ -399,14 +402,15 @@ pub fn prepare_with(
     }
     Ok(Prepared {
         simulation: sim,
-        revolution_s: std::f64::consts::TAU / epicyclic.abs().max(1e-9),
+        revolution_s: (epicyclic != 0.0).then(|| std::f64::consts::TAU / epicyclic.abs()),
         quasi_static,
     })
 }
 
 /// Issue 6 "start from the quasi-static solution": the rollers keep the static load
 /// distribution of the default start, but cage and roller orbit speeds take the quasi-static
-/// cage speed (Muraki friction, short-bearing land), spins pure rolling on the outer raceway at
+/// cage speed (Muraki friction, the finite journal-bearing land of the dynamics'
+/// [`rolldyn_dynamics::HydrodynamicLand`]), spins pure rolling on the outer raceway at
 /// that speed. When the quasi-static model cannot solve the point the epicyclic start is kept.
 /// The quasi-static radial load is the r.m.s. over a shaft revolution of the vector sum of the
 /// fixed and rotating loads, √(|F_fixed|² + |F_rot|²) (their cross term averages out); it equals
@@ -427,7 +431,7 @@ fn start_at_quasi_static_speeds(
         .hypot(fixed[1])
         .hypot(conditions.rotating_force_magnitude(0.0));
     let t = conditions.temperatures;
-    let mut qs = rolldyn_quasistatic::OperatingConditions::new(
+    let mut qs = rolldyn_quasistatic::QuasiStaticConditions::new(
         wi,
         wo,
         load,
@@ -438,14 +442,7 @@ fn start_at_quasi_static_speeds(
     qs.temperatures.cage = t.cage_k;
     // the dynamics' drag law, so that the start is the dynamics' own steady state
     qs.drag.viscous_coefficient_n_m_s = Some(conditions.cage_drag_n_m_s);
-    qs.friction = rolldyn_quasistatic::FrictionModel::Muraki {
-        settings: rolldyn_lubrication::MurakiSettings {
-            rheology: lubrication.rheology,
-            ..Default::default()
-        },
-        mixed: None,
-        film: rolldyn_lubrication::FilmFormula::Auto,
-    };
+    qs.friction = quasi_static::muraki_friction(lubrication);
     let options = rolldyn_quasistatic::QuasiStaticOptions::default();
     let compensated;
     let bearing = if clearance_is_operating {
@@ -464,7 +461,9 @@ fn start_at_quasi_static_speeds(
     } else {
         bearing
     };
-    let result = rolldyn_quasistatic::solve(bearing, &qs, &options).map_err(|e| e.to_string())?;
+    let land = quasi_static::cage_land_model(bearing, quasi_static::LandChoice::Finite);
+    let result = rolldyn_quasistatic::solve_with_land_model(bearing, &qs, &options, land.as_ref())
+        .map_err(|e| e.to_string())?;
     let wc = result.cage_speed_rad_s;
     initial.cage_speed_rad_s = wc;
     for r in &mut initial.rollers {

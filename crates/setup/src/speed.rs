@@ -89,13 +89,14 @@ fn median(values: impl Iterator<Item = f64>) -> f64 {
 }
 
 /// Runs `model` `repeat` times, one after the other on this thread, each from a fresh
-/// simulation up to `end_time(cage revolution period)`, and times set-up and integration
+/// simulation up to `end_time(cage revolution period)` (`None`: rings at rest), and times
+/// set-up and integration
 /// separately. `on_run` is called after each run with its index.
 pub fn measure_speed(
     model: &rolldyn_model::Model,
     overrides: &Overrides,
     tolerance: Option<f64>,
-    end_time: &dyn Fn(f64) -> f64,
+    end_time: &dyn Fn(Option<f64>) -> Result<f64, String>,
     repeat: usize,
     on_run: &mut dyn FnMut(usize, &SpeedRun),
 ) -> Result<SpeedReport, SpeedError> {
@@ -109,7 +110,7 @@ pub fn measure_speed(
         let start = Instant::now();
         let (mut sim, revolution) = prepare(model, overrides, 0.0, tolerance)?;
         let setup_s = start.elapsed().as_secs_f64();
-        let t_end = end_time(revolution);
+        let t_end = end_time(revolution).map_err(SetupError)?;
         let summary = sim
             .run_until(t_end, &mut NullSink, &mut |_| {})
             .map_err(|e| SpeedError::Run {
@@ -120,7 +121,7 @@ pub fn measure_speed(
             setup_s,
             integration_s: summary.wall_time_s,
             simulated_s: summary.simulated_time_s,
-            cage_revolutions: summary.simulated_time_s / revolution,
+            cage_revolutions: revolution.map_or(0.0, |p| summary.simulated_time_s / p),
             steps: summary.steps,
             rejected_steps: summary.rejected_steps,
             rhs_evaluations: summary.rhs_evaluations,
@@ -187,7 +188,7 @@ mod tests {
             &model,
             &Overrides::default(),
             None,
-            &|_| 2e-4,
+            &|_| Ok(2e-4),
             2,
             &mut |_, _| seen += 1,
         )
@@ -205,7 +206,7 @@ mod tests {
                 &model,
                 &Overrides::default(),
                 None,
-                &|_| 1e-4,
+                &|_| Ok(1e-4),
                 0,
                 &mut |_, _| {}
             )

@@ -205,7 +205,14 @@ pub fn write_outputs(dir: &Path, model: &str, rows: &[FrozenPointRow]) -> Result
     for row in rows {
         let values = numeric(row);
         let mut record = vec![row.label.clone()];
-        record.extend(values.iter().map(|v| format!("{v}")));
+        // docs/outputs.md: an empty field for a value that is not finite
+        record.extend(values.iter().map(|v| {
+            if v.is_finite() {
+                v.to_string()
+            } else {
+                String::new()
+            }
+        }));
         record.push(row.note.clone());
         csv.write_record(&record).map_err(|e| fail(e.to_string()))?;
         parquet

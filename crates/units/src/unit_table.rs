@@ -22,6 +22,7 @@ crate::dimension::dimensions! {
     KinematicViscosity => "a kinematic viscosity", "m²/s";
     Density => "a density", "kg/m³";
     Stiffness => "a stiffness", "N/m";
+    LoadPerLength => "a load per unit length", "N/m";
     Damping => "a damping coefficient", "N s/m";
     Power => "a power", "W";
     Energy => "an energy", "J";
@@ -54,6 +55,7 @@ impl Dimension {
             Time => "s, ms, us, min, h",
             Density => "kg/m3, g/cm3",
             Stiffness => "N/m, N/mm",
+            LoadPerLength => "N/m, kN/m, N/mm, kN/mm, MN/m",
             Damping => "N s/m, N s/mm",
             RotationalDamping => "N m s/rad, N mm/(rad/ms)",
             Unbalance => "kg m, g mm (or g*mm, g·mm), g cm",
@@ -173,6 +175,11 @@ pub(crate) static UNITS: &[Unit] = &[
     u("N/m", D::Stiffness, 1.0),
     u("N/mm", D::Stiffness, 1e3),
     u("N/um", D::Stiffness, 1e6),
+    u("N/m", D::LoadPerLength, 1.0),
+    u("kN/m", D::LoadPerLength, 1e3),
+    u("N/mm", D::LoadPerLength, 1e3),
+    u("kN/mm", D::LoadPerLength, 1e6),
+    u("MN/m", D::LoadPerLength, 1e6),
     u("Ns/m", D::Damping, 1.0),
     u("Ns/mm", D::Damping, 1e3),
     u("W", D::Power, 1.0),
@@ -242,7 +249,7 @@ pub(crate) fn lookup(symbol: &str, expected: Dimension) -> Option<&'static Unit>
 
 #[cfg(test)]
 mod tests {
-    use crate::{Quantity, Unbalance};
+    use crate::{LoadPerLength, Quantity, Unbalance};
 
     #[test]
     fn unbalance_units_parse() {
@@ -252,5 +259,19 @@ mod tests {
             assert!((u.si() - 3.1625e-3).abs() < 1e-15, "{text}");
         }
         assert!("3162.5 g".parse::<Quantity<Unbalance>>().is_err());
+    }
+
+    /// A line-contact load: the same symbols as a stiffness, its own dimension.
+    #[test]
+    fn load_per_length_units_parse() {
+        for (text, si) in [
+            ("250 kN/m", 2.5e5),
+            ("0.25 N/mm", 250.0),
+            ("1.5 MN/m", 1.5e6),
+        ] {
+            let w: Quantity<LoadPerLength> = text.parse().unwrap();
+            assert!((w.si() - si).abs() < 1e-9 * si, "{text}");
+        }
+        assert!("2 kN".parse::<Quantity<LoadPerLength>>().is_err());
     }
 }

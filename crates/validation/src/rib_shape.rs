@@ -345,6 +345,7 @@ pub fn simulation(model: &Model, settings: &Settings) -> Result<(Simulation, f64
         None,
     )
     .map_err(|e| e.to_string())
+    .and_then(|(sim, period)| Ok((sim, period.ok_or("the rings start at rest")?)))
 }
 
 /// Runs one model for the study and collects its rib-contact statistics.

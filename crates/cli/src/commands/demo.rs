@@ -12,6 +12,9 @@ use rolldyn_contact::roller_raceway::{ContactReport, RollerRacewayContact};
 use rolldyn_dynamics::output::NullSink;
 use rolldyn_geometry::BearingModel;
 use rolldyn_quasistatic::QuasiStaticOptions;
+use rolldyn_setup::quasi_static::{
+    LandChoice, QuasiStaticOverrides, cage_land_model, quasi_static_conditions,
+};
 use rolldyn_units::ARCMIN;
 
 #[derive(clap::Args)]
@@ -34,7 +37,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
             "the embedded model is a cylindrical bearing".into(),
         ));
     };
-    let op = model.operating;
+    let op = &model.operating;
     let missing = |what: &str| Failure::Run(format!("the embedded model lacks {what}"));
     let speed = op
         .inner_speed
@@ -46,39 +49,17 @@ pub fn run(args: Args) -> Result<(), Failure> {
         .temperatures
         .oil
         .ok_or_else(|| missing("operating.temperatures.oil"))?;
-    let lubrication = model
-        .lubrication
-        .as_ref()
-        .ok_or_else(|| missing("[lubricant]"))?;
     let summary = summarise(&model.bearing, speed, 0.0);
     if !args.json {
         describe(&summary).iter().for_each(|l| println!("{l}"));
     }
 
-    let mut qs_conditions = rolldyn_quasistatic::OperatingConditions::new(
-        speed,
-        0.0,
-        load,
-        lubrication.oil.clone(),
-        oil_t,
-    );
-    qs_conditions.friction = rolldyn_quasistatic::FrictionModel::Muraki {
-        settings: rolldyn_lubrication::MurakiSettings {
-            rheology: lubrication.rheology,
-            ..Default::default()
-        },
-        mixed: None,
-        film: rolldyn_lubrication::FilmFormula::Auto,
-    };
-    let inner_land = bearing
-        .cage
-        .as_ref()
-        .is_some_and(|c| c.guidance == rolldyn_geometry::CageGuidance::InnerLand);
+    let qs_conditions = quasi_static_conditions(&model, &QuasiStaticOverrides::default())?;
     let skid = rolldyn_quasistatic::solve_with_land_model(
         bearing,
         &qs_conditions,
         &QuasiStaticOptions::default(),
-        &rolldyn_quasistatic::FiniteLand::new(inner_land),
+        cage_land_model(bearing, LandChoice::Finite).as_ref(),
     )
     .map_err(|e| Failure::Run(format!("quasi-static model: {e}")))?;
     if !args.json {
@@ -99,6 +80,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
 
     let (mut sim, revolution) =
         rolldyn_setup::prepare(&model, &rolldyn_setup::Overrides::default(), 0.0, None)?;
+    let revolution = revolution.ok_or_else(|| missing("a running inner ring"))?;
     let t_end = args.revolutions.max(0.1) * revolution;
     let dynamics = sim
         .run_until(t_end, &mut NullSink, &mut |_| {})

@@ -120,19 +120,11 @@ fn parse_with(text: &str, units: &[(&str, f64)], what: &str) -> Result<f64, Fail
     Ok(v * scale)
 }
 
-/// Load per unit length, N/m. There is no such dimension in the units crate; parsed here.
+/// Load per unit length, N/m.
 pub(crate) fn parse_load_per_length(text: &str, what: &str) -> Result<f64, Failure> {
-    parse_with(
-        text,
-        &[
-            ("kN/mm", 1e6),
-            ("MN/m", 1e6),
-            ("kN/m", 1e3),
-            ("N/mm", 1e3),
-            ("N/m", 1.0),
-        ],
-        what,
-    )
+    Quantity::<rolldyn_units::LoadPerLength>::parse(text)
+        .map(|w| w.si())
+        .map_err(|e| Failure::Input(format!("{what} '{text}': {e}")))
 }
 
 /// Pressure–viscosity coefficient, 1/Pa: accepts `7.5e-9/Pa`, `7.5e-9 1/Pa`, `20/GPa`, `20 1/GPa`.

@@ -471,6 +471,9 @@ pub(crate) struct Answer<'a> {
     #[serde(skip_serializing_if = "Vec::is_empty")]
     step_limited_by: Vec<StepLimit>,
     output_folder: Option<String>,
+    /// the summary's named figures, for the non-finite policy
+    #[serde(skip)]
+    columns: [(&'static str, f64); 20],
 }
 
 /// A kind of state component and its share of the steps it limited.
@@ -495,6 +498,17 @@ pub(crate) fn step_limits(counts: &[(String, u64)]) -> Vec<StepLimit> {
 }
 
 impl<'a> Answer<'a> {
+    /// The answer as JSON under the non-finite policy of docs/outputs.md.
+    pub(crate) fn to_json(&self) -> serde_json::Value {
+        let mut value = serde_json::to_value(self).unwrap_or_default();
+        if let Some(object) = value.as_object_mut() {
+            rolldyn_output::mark_non_finite(object, &self.columns, |key, v| {
+                non_finite_reason(key, v).to_string()
+            });
+        }
+        value
+    }
+
     pub(crate) fn new(
         model: &'a str,
         s: &RunSummary,
@@ -525,16 +539,21 @@ impl<'a> Answer<'a> {
             rhs_evaluations: s.rhs_evaluations,
             step_limited_by,
             output_folder,
+            columns: s.columns(),
         }
     }
 }
 
 impl Duration {
-    /// The end time for a cage revolution period `revolution` [s].
-    pub fn end_time(self, revolution: f64) -> f64 {
-        match self {
-            Duration::CageRevolutions(n) => n * revolution,
-            Duration::Time(t) => t,
+    /// The end time for a cage revolution period `revolution` [s] (`None`: the rings start at
+    /// rest, and a number of revolutions is no duration).
+    pub fn end_time(self, revolution: Option<f64>) -> Result<f64, String> {
+        match (self, revolution) {
+            (Duration::CageRevolutions(n), Some(period)) => Ok(n * period),
+            (Duration::CageRevolutions(_), None) => Err(
+                "the inner ring starts at rest (operating.speed_schedule): give --duration as a time, e.g. 0.5s, or a constant --speed".into(),
+            ),
+            (Duration::Time(t), _) => Ok(t),
         }
     }
 }
@@ -567,12 +586,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
             Failure::Input(format!("{}: {e}{hint}", path.display()))
         })?;
     }
-    if matches!(args.duration, Duration::CageRevolutions(_)) && revolution > 1e6 {
-        return Err(Failure::Input(
-            "the inner ring starts at rest (operating.speed_schedule): give --duration as a time, e.g. 0.5s, or a constant --speed".into(),
-        ));
-    }
-    let t_end = args.duration.end_time(revolution);
+    let t_end = args.duration.end_time(revolution).map_err(Failure::Input)?;
     let dir = args.out.as_deref().map(out_dir).transpose()?;
     let mut sinks = Sinks(
         dir.as_deref()
@@ -582,10 +596,9 @@ pub fn run(args: Args) -> Result<(), Failure> {
     );
     let bar = progress_bar(args.quiet, t_end);
     let mut report = |t: f64| bar.set_position((1000.0 * t / t_end).min(1000.0) as u64);
-    let chunk = if args.checkpoint.is_some() {
-        revolution
-    } else {
-        t_end
+    let chunk = match (&args.checkpoint, revolution) {
+        (Some(_), Some(period)) => period,
+        _ => t_end,
     };
     let mut result = Ok(sim.summary());
     while sim.time() < t_end && result.is_ok() {
@@ -613,12 +626,15 @@ pub fn run(args: Args) -> Result<(), Failure> {
     written?;
     let limits = step_limits(&sim.step_limits());
     if args.json {
-        return print_json(&Answer::new(
-            model.bearing.name(),
-            &summary,
-            limits,
-            dir.map(|d| d.display().to_string()),
-        ));
+        return print_json(
+            &Answer::new(
+                model.bearing.name(),
+                &summary,
+                limits,
+                dir.map(|d| d.display().to_string()),
+            )
+            .to_json(),
+        );
     }
     print_summary(model.bearing.name(), &summary, &limits);
     Ok(())
@@ -710,7 +726,16 @@ pub fn print_summary(model: &str, s: &RunSummary, limits: &[StepLimit]) {
     }
 }
 
+/// Why a run-summary value is not a finite number (docs/outputs.md).
+fn non_finite_reason(key: &str, value: f64) -> &'static str {
+    match key {
+        "min_scuffing_margin" => "no scuffing-margin maximum in the run",
+        "whirl_ratio" if value.is_nan() => "the cage centre does not orbit (no whirl)",
+        _ => rolldyn_output::default_reason(value),
+    }
+}
+
 /// The JSON form of a run summary (used by `demo`).
 pub fn summary_json(model: &str, s: &RunSummary) -> serde_json::Value {
-    serde_json::to_value(Answer::new(model, s, Vec::new(), None)).unwrap_or_default()
+    Answer::new(model, s, Vec::new(), None).to_json()
 }

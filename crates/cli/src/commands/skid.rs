@@ -4,13 +4,12 @@
 use crate::failure::Failure;
 use crate::output::{load_model, out_dir, print_json, write_csv};
 use rolldyn_geometry::BearingModel;
-use rolldyn_lubrication::{FilmFormula, MurakiSettings};
 use rolldyn_model::Model;
 use rolldyn_plot::{Labels, Series, line_plot};
-use rolldyn_quasistatic::sweep::{SweepPoint, SweepVariable, apply};
-use rolldyn_quasistatic::{
-    CageLandModel, FiniteLand, FrictionModel, OperatingConditions, QuasiStaticOptions,
-    ShortBearing, SkidResult,
+use rolldyn_quasistatic::{QuasiStaticConditions, QuasiStaticOptions, SkidResult, SweepVariable};
+use rolldyn_setup::quasi_static::{
+    LandChoice, PartTemperatureOverrides, QuasiStaticOverrides, RacewayFriction, cage_land_model,
+    quasi_static_conditions,
 };
 use rolldyn_units::{AngularSpeed, Force, Quantity, QuantityRange, Temperature};
 use serde::Serialize;
@@ -32,23 +31,6 @@ pub enum LandName {
     Short,
 }
 
-impl Args {
-    /// The model's own operating point (no flags), Muraki friction, finite land model.
-    pub(crate) fn from_model_only() -> Self {
-        Self {
-            model: None,
-            speed: None,
-            outer_speed: None,
-            radial_load: None,
-            temperatures: None,
-            friction: FrictionName::Muraki,
-            cage_land: LandName::Finite,
-            json: false,
-            out: None,
-        }
-    }
-}
-
 #[derive(clap::Args)]
 pub struct Args {
     /// Model file with [lubricant] (and optionally [operating]); the embedded 2002834 model when
@@ -66,7 +48,7 @@ pub struct Args {
     /// Part temperatures, e.g. `inner=47.3C,outer=43C,cage=45C,oil=45C` (parts not given take
     /// the oil temperature).
     #[arg(long, value_parser = parse_temperatures)]
-    pub temperatures: Option<Vec<(String, f64)>>,
+    pub temperatures: Option<PartTemperatureOverrides>,
     #[arg(long, value_enum, default_value = "muraki")]
     pub friction: FrictionName,
     /// Cage–guiding-land model.
@@ -83,28 +65,36 @@ const PARTS: [&str; 7] = [
     "oil", "inner", "outer", "rollers", "cage", "shaft", "housing",
 ];
 
-fn parse_temperatures(text: &str) -> Result<Vec<(String, f64)>, String> {
-    text.split(',')
-        .map(|item| {
-            let (part, value) = item
-                .split_once('=')
-                .ok_or_else(|| format!("'{item}': expected part=temperature, e.g. inner=47.3C"))?;
-            let part = part.trim();
-            if !PARTS.contains(&part) {
+fn parse_temperatures(text: &str) -> Result<PartTemperatureOverrides, String> {
+    let mut parts = PartTemperatureOverrides::default();
+    for item in text.split(',') {
+        let (part, value) = item
+            .split_once('=')
+            .ok_or_else(|| format!("'{item}': expected part=temperature, e.g. inner=47.3C"))?;
+        let t = Quantity::<Temperature>::parse(value)
+            .map_err(|e| e.to_string())?
+            .si();
+        if t <= 0.0 {
+            return Err(format!("'{item}' is below absolute zero"));
+        }
+        let slot = match part.trim() {
+            "oil" => &mut parts.oil,
+            "inner" => &mut parts.inner_ring,
+            "outer" => &mut parts.outer_ring,
+            "rollers" => &mut parts.rollers,
+            "cage" => &mut parts.cage,
+            "shaft" => &mut parts.shaft,
+            "housing" => &mut parts.housing,
+            part => {
                 return Err(format!(
                     "unknown part '{part}' (known: {})",
                     PARTS.join(", ")
                 ));
             }
-            let t = Quantity::<Temperature>::parse(value)
-                .map_err(|e| e.to_string())?
-                .si();
-            if t <= 0.0 {
-                return Err(format!("'{item}' is below absolute zero"));
-            }
-            Ok((part.to_string(), t))
-        })
-        .collect()
+        };
+        *slot = Some(t);
+    }
+    Ok(parts)
 }
 
 fn single<D: rolldyn_units::Dim>(range: &Option<QuantityRange<D>>) -> Option<f64> {
@@ -115,55 +105,18 @@ fn single<D: rolldyn_units::Dim>(range: &Option<QuantityRange<D>>) -> Option<f64
 }
 
 /// The operating point of the model file, overridden by the flags (first value of a sweep).
-pub(crate) fn conditions(args: &Args, model: &Model) -> Result<OperatingConditions, Failure> {
-    let op = &model.operating;
-    let name = model.bearing.name();
-    let lubrication = model
-        .lubrication
-        .as_ref()
-        .ok_or_else(|| Failure::Input(format!("{name}: skid needs a [lubricant] section")))?;
-    let inner = single(&args.speed).or(op.inner_speed).ok_or_else(|| {
-        Failure::Input("no inner-ring speed: give --speed or operating.inner_speed".into())
-    })?;
-    let outer = single(&args.outer_speed).or(op.outer_speed).unwrap_or(0.0);
-    let load = single(&args.radial_load)
-        .or(op.radial_load)
-        .ok_or_else(|| {
-            Failure::Input("no radial load: give --radial-load or operating.radial_load".into())
-        })?;
-    let given = |part: &str| {
-        args.temperatures
-            .as_ref()
-            .and_then(|list| list.iter().find(|(p, _)| p == part).map(|(_, t)| *t))
-    };
-    let t = &op.temperatures;
-    let oil = given("oil").or(t.oil).ok_or_else(|| {
-        Failure::Input(
-            "no oil temperature: give --temperatures oil=… or operating.temperatures.oil".into(),
-        )
-    })?;
-    let mut c = OperatingConditions::new(inner, outer, load, lubrication.oil.clone(), oil);
-    let part = |name: &str, file: Option<f64>| given(name).or(file).unwrap_or(oil);
-    c.temperatures.inner_ring = part("inner", t.inner_ring);
-    c.temperatures.outer_ring = part("outer", t.outer_ring);
-    c.temperatures.rollers = part("rollers", t.rollers);
-    c.temperatures.cage = part("cage", t.cage);
-    c.temperatures.shaft = part("shaft", t.shaft);
-    c.temperatures.housing = part("housing", t.housing);
-    let tilt = model.bearing.misalignment().inner_ring_tilt;
-    c.misalignment_rad = (tilt != 0.0).then_some(tilt);
-    c.friction = match args.friction {
-        FrictionName::Muraki => FrictionModel::Muraki {
-            settings: MurakiSettings {
-                rheology: lubrication.rheology,
-                ..MurakiSettings::default()
-            },
-            mixed: None,
-            film: FilmFormula::Auto,
+fn conditions(args: &Args, model: &Model) -> Result<QuasiStaticConditions, Failure> {
+    let overrides = QuasiStaticOverrides {
+        speed: single(&args.speed),
+        outer_speed: single(&args.outer_speed),
+        radial_load: single(&args.radial_load),
+        temperatures: args.temperatures.unwrap_or_default(),
+        friction: match args.friction {
+            FrictionName::Muraki => RacewayFriction::Muraki,
+            FrictionName::Seed001 => RacewayFriction::Seed001,
         },
-        FrictionName::Seed001 => FrictionModel::Seed001(Default::default()),
     };
-    Ok(c)
+    Ok(quasi_static_conditions(model, &overrides)?)
 }
 
 /// One row of a sweep table / JSON.
@@ -189,17 +142,13 @@ pub fn run(args: Args) -> Result<(), Failure> {
     };
     let base = conditions(&args, &model)?;
     let options = QuasiStaticOptions::default();
-    let land: Box<dyn CageLandModel> = match args.cage_land {
-        LandName::Finite => {
-            Box::new(FiniteLand::new(bearing.cage.as_ref().is_some_and(|c| {
-                c.guidance == rolldyn_geometry::CageGuidance::InnerLand
-            })))
-        }
-        LandName::Short => Box::new(ShortBearing::default()),
-    };
-    let solve = |c: &OperatingConditions, o: &QuasiStaticOptions| {
-        rolldyn_quasistatic::solve_with_land_model(bearing, c, o, land.as_ref())
-    };
+    let land = cage_land_model(
+        bearing,
+        match args.cage_land {
+            LandName::Finite => LandChoice::Finite,
+            LandName::Short => LandChoice::Short,
+        },
+    );
     let swept: Vec<(SweepVariable, &str, &str, Vec<f64>)> = [
         (
             SweepVariable::InnerSpeed,
@@ -235,8 +184,9 @@ pub fn run(args: Args) -> Result<(), Failure> {
     .collect();
     match swept.as_slice() {
         [] => {
-            let result = rolldyn_quasistatic::solve(bearing, &base, &options)
-                .map_err(|e| Failure::Run(e.to_string()))?;
+            let result =
+                rolldyn_quasistatic::solve_with_land_model(bearing, &base, &options, land.as_ref())
+                    .map_err(|e| Failure::Run(e.to_string()))?;
             if args.json {
                 print_json(&result)
             } else {
@@ -245,18 +195,14 @@ pub fn run(args: Args) -> Result<(), Failure> {
             }
         }
         [(variable, key, label, values)] => {
-            // Each point starts from the previous point's cage slip (as `sweep::sweep` does).
-            let mut warm = options.clone();
-            let points: Vec<SweepPoint> = values
-                .iter()
-                .map(|&value| {
-                    let result = solve(&apply(&base, *variable, value), &warm);
-                    if let Ok(r) = &result {
-                        warm.initial_cage_slip = r.cage_slip;
-                    }
-                    SweepPoint { value, result }
-                })
-                .collect();
+            let points = rolldyn_quasistatic::sweep(
+                bearing,
+                &base,
+                &options,
+                land.as_ref(),
+                *variable,
+                values,
+            );
             if let Some(Err(e)) = points
                 .iter()
                 .map(|p| &p.result)

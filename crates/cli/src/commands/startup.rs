@@ -107,8 +107,12 @@ fn analyse(model: &rolldyn_model::Model, p: &FrozenPoint, s: Settings) -> Frozen
         }
         Err(e) => row.note = format!("quasi-static: {e}; "),
     }
+    let Some(period) = prepared.revolution_s else {
+        row.note
+            .push_str("the rings are at rest: nothing to simulate (skipped)");
+        return row;
+    };
     let mut sim = prepared.simulation;
-    let period = prepared.revolution_s;
     let wanted = s.revolutions.ceil() as usize;
     let mut revs = Revolutions::default();
     // run revolution by revolution until N cage revolutions are complete (the cage slips, so

@@ -1,10 +1,10 @@
 //! `rolldyn sweep SWEEP.toml`: a table of model variants run in parallel, one summary row per
 //! variant (CSV + Parquet) and one plot per summary column (seed 000 Figs 3.13–3.30).
 
-use super::simulate::{Duration, summary_json};
+use super::simulate::Duration;
 use crate::failure::Failure;
 use rolldyn_dynamics::output::NullSink;
-use rolldyn_quasistatic::{FiniteLand, QuasiStaticOptions};
+use rolldyn_quasistatic::QuasiStaticOptions;
 use rolldyn_setup::{Overrides, prepare};
 use rolldyn_sweep::{
     Analysis, RunOptions, Shard, SweepFile, Variant, VariantOutcome, collect, run as run_sweep,
@@ -57,26 +57,32 @@ fn simulate(
     let (mut sim, revolution) =
         prepare(&model, &Overrides::default(), 0.0, None).map_err(|e| e.to_string())?;
     let summary = sim
-        .run_until(duration.end_time(revolution), &mut NullSink, &mut |_| {})
+        .run_until(duration.end_time(revolution)?, &mut NullSink, &mut |_| {})
         .map_err(|e| format!("the simulation stopped: {e}"))?;
-    Ok(numbers(&summary_json(model.bearing.name(), &summary)))
+    // a figure that is not finite is absent from the row (an empty field of the table)
+    Ok(summary
+        .columns()
+        .into_iter()
+        .filter(|(_, v)| v.is_finite())
+        .map(|(k, v)| (k.to_string(), v))
+        .collect())
 }
 
 fn skid(model: rolldyn_model::Model) -> Result<BTreeMap<String, f64>, String> {
     let rolldyn_geometry::BearingModel::Cylindrical(bearing) = &model.bearing else {
         return Err("skid needs a cylindrical bearing".into());
     };
-    let c = super::skid::conditions(&super::skid::Args::from_model_only(), &model)
+    use rolldyn_setup::quasi_static::{
+        LandChoice, QuasiStaticOverrides, cage_land_model, quasi_static_conditions,
+    };
+    let c = quasi_static_conditions(&model, &QuasiStaticOverrides::default())
         .map_err(|e| e.to_string())?;
-    let inner_land = bearing
-        .cage
-        .as_ref()
-        .is_some_and(|c| c.guidance == rolldyn_geometry::CageGuidance::InnerLand);
+    let land = cage_land_model(bearing, LandChoice::Finite);
     let result = rolldyn_quasistatic::solve_with_land_model(
         bearing,
         &c,
         &QuasiStaticOptions::default(),
-        &FiniteLand::new(inner_land),
+        land.as_ref(),
     )
     .map_err(|e| e.to_string())?;
     Ok(numbers(

@@ -1,0 +1,162 @@
+//! From a model file to a quasi-static operating point (SPEC §5.6 "input"): the one mapping of
+//! `[operating]` and `[lubricant]` to quasi-static conditions, the raceway friction law and the
+//! cage–land model. Shared by `rolldyn skid`, `sweep`, `demo` and the quasi-static start of a
+//! dynamics run.
+
+use crate::SetupError;
+use rolldyn_geometry::{CageGuidance, CylindricalRollerBearing};
+use rolldyn_lubrication::{FilmFormula, MurakiSettings};
+use rolldyn_model::{Lubrication, Model};
+use rolldyn_quasistatic::{
+    FiniteLand, FrictionModel, QuasiStaticConditions, QuasiStaticLandModel, ShortBearing,
+};
+
+/// Raceway friction law of a quasi-static point.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum RacewayFriction {
+    /// Muraki EHL traction (seed 000) with the model's rheology.
+    #[default]
+    Muraki,
+    /// Asperity fraction + film shear + flash temperature (seed 001).
+    Seed001,
+}
+
+/// Cage–guiding-land model.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum LandChoice {
+    /// Finite journal bearing (Reynolds crate table, SPEC §8.6): the land of the dynamics.
+    #[default]
+    Finite,
+    /// Short (Ocvirk) journal bearing (SPEC §5.5).
+    Short,
+}
+
+/// Part temperatures given on the command line, K; a part not given takes the model's value,
+/// then the oil temperature.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct PartTemperatureOverrides {
+    pub oil: Option<f64>,
+    pub inner_ring: Option<f64>,
+    pub outer_ring: Option<f64>,
+    pub rollers: Option<f64>,
+    pub cage: Option<f64>,
+    pub shaft: Option<f64>,
+    pub housing: Option<f64>,
+}
+
+/// Values that override the model's `[operating]` section for a quasi-static point, SI.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct QuasiStaticOverrides {
+    pub speed: Option<f64>,
+    pub outer_speed: Option<f64>,
+    pub radial_load: Option<f64>,
+    pub temperatures: PartTemperatureOverrides,
+    pub friction: RacewayFriction,
+}
+
+/// The `[lubricant]` section, or an error naming the command that needs it.
+pub fn lubrication<'m>(model: &'m Model, command: &str) -> Result<&'m Lubrication, SetupError> {
+    model.lubrication.as_ref().ok_or_else(|| {
+        SetupError(format!(
+            "{}: {command} needs a [lubricant] section",
+            model.bearing.name()
+        ))
+    })
+}
+
+/// Muraki traction with the model's rheology, no mixed-friction blend, automatic film formula
+/// (seed 000 §2.4).
+pub fn muraki_friction(lubrication: &Lubrication) -> FrictionModel {
+    FrictionModel::Muraki {
+        settings: MurakiSettings {
+            rheology: lubrication.rheology,
+            ..MurakiSettings::default()
+        },
+        mixed: None,
+        film: FilmFormula::Auto,
+    }
+}
+
+/// The quasi-static operating point of `model`, overridden by `overrides`: speeds, radial load,
+/// part temperatures (oil temperature for the parts neither given), the bearing's ring tilt and
+/// the raceway friction law.
+pub fn quasi_static_conditions(
+    model: &Model,
+    overrides: &QuasiStaticOverrides,
+) -> Result<QuasiStaticConditions, SetupError> {
+    let op = &model.operating;
+    let lubrication = lubrication(model, "skid")?;
+    let inner = overrides.speed.or(op.inner_speed).ok_or_else(|| {
+        SetupError("no inner-ring speed: give --speed or operating.inner_speed".into())
+    })?;
+    let outer = overrides.outer_speed.or(op.outer_speed).unwrap_or(0.0);
+    let load = overrides.radial_load.or(op.radial_load).ok_or_else(|| {
+        SetupError("no radial load: give --radial-load or operating.radial_load".into())
+    })?;
+    let given = &overrides.temperatures;
+    let file = &op.temperatures;
+    let oil = given.oil.or(file.oil).ok_or_else(|| {
+        SetupError(
+            "no oil temperature: give --temperatures oil=… or operating.temperatures.oil".into(),
+        )
+    })?;
+    let mut c = QuasiStaticConditions::new(inner, outer, load, lubrication.oil.clone(), oil);
+    let part = |given: Option<f64>, file: Option<f64>| given.or(file).unwrap_or(oil);
+    let t = &mut c.temperatures;
+    t.inner_ring = part(given.inner_ring, file.inner_ring);
+    t.outer_ring = part(given.outer_ring, file.outer_ring);
+    t.rollers = part(given.rollers, file.rollers);
+    t.cage = part(given.cage, file.cage);
+    t.shaft = part(given.shaft, file.shaft);
+    t.housing = part(given.housing, file.housing);
+    let tilt = model.bearing.misalignment().inner_ring_tilt;
+    c.misalignment_rad = (tilt != 0.0).then_some(tilt);
+    c.friction = match overrides.friction {
+        RacewayFriction::Muraki => muraki_friction(lubrication),
+        RacewayFriction::Seed001 => FrictionModel::Seed001(Default::default()),
+    };
+    Ok(c)
+}
+
+/// The cage–land model of `bearing` (the finite land on the ring that guides the cage).
+pub fn cage_land_model(
+    bearing: &CylindricalRollerBearing,
+    land: LandChoice,
+) -> Box<dyn QuasiStaticLandModel> {
+    match land {
+        LandChoice::Finite => {
+            let inner_land = bearing
+                .cage
+                .as_ref()
+                .is_some_and(|c| c.guidance == CageGuidance::InnerLand);
+            Box::new(FiniteLand::new(inner_land))
+        }
+        LandChoice::Short => Box::new(ShortBearing::default()),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Flags win over the file; parts not given take the file's value, then the oil's.
+    #[test]
+    fn overrides_and_part_temperatures() {
+        let model = rolldyn_model::parse(rolldyn_model::DEFAULT_MODEL, "m.toml").unwrap();
+        let overrides = QuasiStaticOverrides {
+            radial_load: Some(1234.0),
+            temperatures: PartTemperatureOverrides {
+                oil: Some(330.0),
+                cage: Some(340.0),
+                ..Default::default()
+            },
+            ..Default::default()
+        };
+        let c = quasi_static_conditions(&model, &overrides).unwrap();
+        assert_eq!(c.radial_load_n, 1234.0);
+        assert_eq!(c.inner_speed_rad_s, model.operating.inner_speed.unwrap());
+        assert_eq!(c.temperatures.cage, 340.0);
+        let file_or_oil = model.operating.temperatures.housing.unwrap_or(330.0);
+        assert_eq!(c.temperatures.housing, file_or_oil);
+    }
+}
