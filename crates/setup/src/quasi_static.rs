@@ -6,7 +6,7 @@
 use crate::SetupError;
 use rolldyn_geometry::{CageGuidance, CylindricalRollerBearing};
 use rolldyn_lubrication::{FilmFormula, MurakiSettings};
-use rolldyn_model::{Lubrication, Model};
+use rolldyn_model::{Lubrication, Model, Temperatures};
 use rolldyn_quasistatic::{
     FiniteLand, FrictionModel, QuasiStaticConditions, QuasiStaticLandModel, ShortBearing,
 };
@@ -31,26 +31,15 @@ pub enum LandChoice {
     Short,
 }
 
-/// Part temperatures given on the command line, K; a part not given takes the model's value,
-/// then the oil temperature.
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct PartTemperatureOverrides {
-    pub oil: Option<f64>,
-    pub inner_ring: Option<f64>,
-    pub outer_ring: Option<f64>,
-    pub rollers: Option<f64>,
-    pub cage: Option<f64>,
-    pub shaft: Option<f64>,
-    pub housing: Option<f64>,
-}
-
 /// Values that override the model's `[operating]` section for a quasi-static point, SI.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct QuasiStaticOverrides {
     pub speed: Option<f64>,
     pub outer_speed: Option<f64>,
     pub radial_load: Option<f64>,
-    pub temperatures: PartTemperatureOverrides,
+    /// Part temperatures given on the command line; a part not given takes the model's value,
+    /// then the oil temperature.
+    pub temperatures: Temperatures,
     pub friction: RacewayFriction,
 }
 
@@ -145,7 +134,7 @@ mod tests {
         let model = rolldyn_model::parse(rolldyn_model::DEFAULT_MODEL, "m.toml").unwrap();
         let overrides = QuasiStaticOverrides {
             radial_load: Some(1234.0),
-            temperatures: PartTemperatureOverrides {
+            temperatures: Temperatures {
                 oil: Some(330.0),
                 cage: Some(340.0),
                 ..Default::default()

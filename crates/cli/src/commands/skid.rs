@@ -4,12 +4,11 @@
 use crate::failure::Failure;
 use crate::output::{load_model, out_dir, print_json, write_csv};
 use rolldyn_geometry::BearingModel;
-use rolldyn_model::Model;
+use rolldyn_model::{Model, Temperatures};
 use rolldyn_plot::{Labels, Series, line_plot};
 use rolldyn_quasistatic::{QuasiStaticConditions, QuasiStaticOptions, SkidResult, SweepVariable};
 use rolldyn_setup::quasi_static::{
-    LandChoice, PartTemperatureOverrides, QuasiStaticOverrides, RacewayFriction, cage_land_model,
-    quasi_static_conditions,
+    LandChoice, QuasiStaticOverrides, RacewayFriction, cage_land_model, quasi_static_conditions,
 };
 use rolldyn_units::{AngularSpeed, Force, Quantity, QuantityRange, Temperature};
 use serde::Serialize;
@@ -48,7 +47,7 @@ pub struct Args {
     /// Part temperatures, e.g. `inner=47.3C,outer=43C,cage=45C,oil=45C` (parts not given take
     /// the oil temperature).
     #[arg(long, value_parser = parse_temperatures)]
-    pub temperatures: Option<PartTemperatureOverrides>,
+    pub temperatures: Option<Temperatures>,
     #[arg(long, value_enum, default_value = "muraki")]
     pub friction: FrictionName,
     /// Cage–guiding-land model.
@@ -65,8 +64,8 @@ const PARTS: [&str; 7] = [
     "oil", "inner", "outer", "rollers", "cage", "shaft", "housing",
 ];
 
-fn parse_temperatures(text: &str) -> Result<PartTemperatureOverrides, String> {
-    let mut parts = PartTemperatureOverrides::default();
+fn parse_temperatures(text: &str) -> Result<Temperatures, String> {
+    let mut parts = Temperatures::default();
     for item in text.split(',') {
         let (part, value) = item
             .split_once('=')
