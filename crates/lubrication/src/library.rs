@@ -68,7 +68,7 @@ fn c(t_c: f64) -> f64 {
 pub fn pao1_vg320() -> Lubricant {
     Lubricant {
         name: "pao1-vg320".into(),
-        source: "seed 000 §2.2 (PAO1 ISO VG 320 temperature laws, K_f, kappa, beta0); density: SPEC F-25 assumption".into(),
+        source: "seed 000 §2.2 (PAO1 ISO VG 320 temperature laws, K_f, kappa, beta0); density: flag F-25 assumption (docs/theory.md appendix A)".into(),
         temperature_range_k: [c(40.0), c(100.0)],
         density: Some(TempLaw::Constant { value: 850.0 }),
         viscosity: Some(ViscosityLaw::Kinematic {
@@ -92,7 +92,7 @@ pub fn pao1_vg320() -> Lubricant {
         thermal_conductivity: Some(TempLaw::Constant { value: 0.1304 }),
         mixed_friction: None,
         missing: vec![
-            "oil density (850 kg/m^3 assumed, SPEC F-25)".into(),
+            "oil density (850 kg/m^3 assumed, flag F-25)".into(),
             "Lambda_bd / Lambda_hd".into(),
         ],
     }

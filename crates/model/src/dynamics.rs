@@ -105,7 +105,7 @@ fn friction(key: &str, f: Option<&FrictionSection>) -> Result<PairInputs, Geomet
     {
         return Err(GeometryError::new(
             k("dynamic_speed"),
-            "must exceed friction.static_speed (two-level law, SPEC §3.4)",
+            "must exceed friction.static_speed (two-level friction law, docs/theory.md §2.4)",
         ));
     }
     Ok(p)
