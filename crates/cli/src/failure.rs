@@ -41,6 +41,17 @@ impl From<rolldyn_model::ModelError> for Failure {
     }
 }
 
+impl From<rolldyn_reynolds::ReynoldsError> for Failure {
+    /// Rejected or unsolvable input is bad input; a failed iteration is a failed run.
+    fn from(e: rolldyn_reynolds::ReynoldsError) -> Self {
+        use rolldyn_reynolds::ReynoldsError::*;
+        match e {
+            InvalidInput { .. } | NoSolution(_) => Self::Input(e.to_string()),
+            NotConverged { .. } | Singular(_) | OutOfRange(_) => Self::Run(e.to_string()),
+        }
+    }
+}
+
 impl From<rolldyn_plot::PlotError> for Failure {
     fn from(e: rolldyn_plot::PlotError) -> Self {
         Self::Run(e.to_string())

@@ -9,6 +9,7 @@
 mod convert;
 mod dynamics;
 mod error;
+pub mod journal;
 mod operation;
 pub mod schema;
 
@@ -56,37 +57,87 @@ pub fn default_cylindrical_bearing() -> rolldyn_geometry::CylindricalRollerBeari
 
 /// Reads and validates a model file.
 pub fn load(path: &Path) -> Result<Model, ModelError> {
-    let file = path.display().to_string();
-    let text = std::fs::read_to_string(path).map_err(|e| ModelError {
-        file: file.clone(),
-        position: None,
-        key: String::new(),
-        reason: format!("cannot read the file: {e}"),
-    })?;
+    let (text, file) = read(path)?;
     parse(&text, &file)
 }
 
-/// Parses and validates model text; `file` names it in errors.
-pub fn parse(text: &str, file: &str) -> Result<Model, ModelError> {
-    let at = |key: &str, span: Option<std::ops::Range<usize>>, reason: String| ModelError {
+/// The text of the file at `path` and its name for errors.
+fn read(path: &Path) -> Result<(String, String), ModelError> {
+    let file = path.display().to_string();
+    match std::fs::read_to_string(path) {
+        Ok(text) => Ok((text, file)),
+        Err(e) => Err(ModelError {
+            file,
+            position: None,
+            key: String::new(),
+            reason: format!("cannot read the file: {e}"),
+        }),
+    }
+}
+
+/// A TOML document deserialised into a schema `T`, kept with its spans so that later checks
+/// can name the line of a key: the one error locator of the project's TOML files.
+struct Document<'a, T> {
+    schema: T,
+    text: &'a str,
+    file: &'a str,
+    tree: toml::Spanned<DeTable<'a>>,
+}
+
+impl<'a, T: serde::de::DeserializeOwned> Document<'a, T> {
+    /// Parses `text` (named `file` in errors) into `T`.
+    fn parse(text: &'a str, file: &'a str) -> Result<Self, ModelError> {
+        let error = |key: &str, span: Option<std::ops::Range<usize>>, reason| {
+            located(text, file, key, span, reason)
+        };
+        let tree = DeTable::parse(text).map_err(|e| error("", e.span(), syntax_message(&e)))?;
+        let deserializer = toml::de::Deserializer::from(tree.clone());
+        let schema = serde_path_to_error::deserialize(deserializer).map_err(|e| {
+            let key = path_key(e.path());
+            let span = error::span_of(&tree, &key).or_else(|| e.inner().span());
+            error(&key, span, serde_message(e.inner()))
+        })?;
+        Ok(Self {
+            schema,
+            text,
+            file,
+            tree,
+        })
+    }
+
+    /// The error `reason` at dotted `key` (at its line when the key is in the file).
+    fn error(&self, key: &str, reason: String) -> ModelError {
+        located(
+            self.text,
+            self.file,
+            key,
+            error::span_of(&self.tree, key),
+            reason,
+        )
+    }
+}
+
+fn located(
+    text: &str,
+    file: &str,
+    key: &str,
+    span: Option<std::ops::Range<usize>>,
+    reason: String,
+) -> ModelError {
+    ModelError {
         file: file.to_string(),
         position: span.map(|s| error::line_column(text, s.start)),
         key: key.to_string(),
         reason,
-    };
-    let document = DeTable::parse(text).map_err(|e| at("", e.span(), syntax_message(&e)))?;
-    let deserializer = toml::de::Deserializer::from(document.clone());
-    let schema: schema::ModelFile =
-        serde_path_to_error::deserialize(deserializer).map_err(|e| {
-            let key = path_key(e.path());
-            let span = error::span_of(&document, &key).or_else(|| e.inner().span());
-            at(&key, span, serde_message(e.inner()))
-        })?;
-    let locate = |e: rolldyn_geometry::GeometryError| {
-        let span = error::span_of(&document, &e.key);
-        at(&e.key, span, e.reason)
-    };
-    let bearing = convert::build(&schema).map_err(locate)?;
+    }
+}
+
+/// Parses and validates model text; `file` names it in errors.
+pub fn parse(text: &str, file: &str) -> Result<Model, ModelError> {
+    let document = Document::<schema::ModelFile>::parse(text, file)?;
+    let schema = &document.schema;
+    let locate = |e: rolldyn_geometry::GeometryError| document.error(&e.key, e.reason);
+    let bearing = convert::build(schema).map_err(locate)?;
     bearing.validate().map_err(locate)?;
     let schedules = operation::schedules(schema.operating.as_ref()).map_err(locate)?;
     if let (Some(points), BearingModel::Cylindrical(b)) = (&schedules.clearance, &bearing) {

@@ -27,6 +27,8 @@ pub enum ReynoldsError {
     NoSolution(String),
     /// A linear system was singular (zero pivot).
     Singular(&'static str),
+    /// A solution left the range its model holds in (e.g. a transient film outside its table).
+    OutOfRange(String),
 }
 
 impl fmt::Display for ReynoldsError {
@@ -43,6 +45,7 @@ impl fmt::Display for ReynoldsError {
             ),
             ReynoldsError::NoSolution(s) => write!(f, "no solution: {s}"),
             ReynoldsError::Singular(s) => write!(f, "singular linear system in {s}"),
+            ReynoldsError::OutOfRange(s) => write!(f, "out of range: {s}"),
         }
     }
 }

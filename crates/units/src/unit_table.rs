@@ -59,6 +59,7 @@ impl Dimension {
             Damping => "N s/m, N s/mm",
             RotationalDamping => "N m s/rad, N mm/(rad/ms)",
             Unbalance => "kg m, g mm (or g*mm, g·mm), g cm",
+            PerPressure => "1/Pa, 1/MPa, 1/GPa (or /Pa, /MPa, /GPa)",
             _ => self.si_symbol(),
         }
     }
@@ -199,6 +200,10 @@ pub(crate) static UNITS: &[Unit] = &[
     u("1/Pa", D::PerPressure, 1.0),
     u("1/GPa", D::PerPressure, 1e-9),
     u("1/MPa", D::PerPressure, 1e-6),
+    // `7.5e-9/Pa`, `20/GPa`: the number before the slash is the value
+    u("/Pa", D::PerPressure, 1.0),
+    u("/GPa", D::PerPressure, 1e-9),
+    u("/MPa", D::PerPressure, 1e-6),
     u("m2/N", D::PerPressure, 1.0),
     u("1/m2", D::PerArea, 1.0),
     u("1/mm2", D::PerArea, 1e6),
@@ -249,7 +254,7 @@ pub(crate) fn lookup(symbol: &str, expected: Dimension) -> Option<&'static Unit>
 
 #[cfg(test)]
 mod tests {
-    use crate::{LoadPerLength, Quantity, Unbalance};
+    use crate::{LoadPerLength, PerPressure, Quantity, Unbalance};
 
     #[test]
     fn unbalance_units_parse() {
@@ -273,5 +278,23 @@ mod tests {
             assert!((w.si() - si).abs() < 1e-9 * si, "{text}");
         }
         assert!("2 kN".parse::<Quantity<LoadPerLength>>().is_err());
+    }
+
+    /// A pressure–viscosity coefficient α, with or without the `1` before the slash.
+    #[test]
+    fn per_pressure_units_parse() {
+        for text in [
+            "7.5e-9/Pa",
+            "7.5e-9 1/Pa",
+            "7.5 /GPa",
+            "7.5 1/GPa",
+            "7.5e-3/MPa",
+            "7.5e-9",
+        ] {
+            let a: Quantity<PerPressure> = text.parse().unwrap();
+            assert!((a.si() - 7.5e-9).abs() < 1e-21, "{text}");
+        }
+        assert!("7.5e-9/K".parse::<Quantity<PerPressure>>().is_err());
+        assert!("7.5e-9 1/K".parse::<Quantity<PerPressure>>().is_err());
     }
 }

@@ -3,21 +3,21 @@
 //! minimum film or load per unit length, with the squeeze damping λ = −∂W/∂ḣ; and a transient
 //! load step M ḧ + λ(h) ḣ − W₀(h) = −F (`--step-to`).
 
-use super::journal::{check_finite, library_failure};
 use crate::failure::Failure;
 use crate::output::{out_dir, print_json, write_csv};
+use rolldyn_output::{default_reason, mark_non_finite};
 use rolldyn_plot::{Labels, Series, line_plot};
 use rolldyn_reynolds::compliance::half_space::HalfSpace;
 use rolldyn_reynolds::compliance::layer::ElasticLayer;
-use rolldyn_reynolds::line_contact::load_damping::LoadDampingTable;
-use rolldyn_reynolds::line_contact::transient::{
-    Tabulated, TransientOptions, TransientSample, simulate,
-};
+use rolldyn_reynolds::line_contact::load_step::{LoadStep, LoadStepResult, load_step};
+use rolldyn_reynolds::line_contact::transient::TransientSample;
 use rolldyn_reynolds::line_contact::{
     Compliance, Constraint, LineContactOptions, LineContactResult, LubricatedLineContact, solve,
 };
 use rolldyn_reynolds::{Barus, Density, Isoviscous, Roelands, Viscosity as ViscosityLaw};
-use rolldyn_units::{DynamicViscosity, Length, Mass, Pressure, Quantity, Speed, Time};
+use rolldyn_units::{
+    DynamicViscosity, Length, LoadPerLength, Mass, PerPressure, Pressure, Quantity, Speed, Time,
+};
 use serde::Serialize;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
@@ -54,10 +54,10 @@ pub struct Args {
     pub min_film: Option<Quantity<Length>>,
     /// Load per unit length (inverse mode): N/m, kN/m, MN/m, N/mm, kN/mm (e.g. 300kN/m).
     #[arg(long)]
-    pub load_per_length: Option<String>,
-    /// Pressure–viscosity coefficient α: 1/Pa, /Pa, 1/GPa (e.g. 7.5e-9/Pa); 0 = isoviscous.
+    pub load_per_length: Option<Quantity<LoadPerLength>>,
+    /// Pressure–viscosity coefficient α: 1/Pa, /Pa, 1/GPa, /GPa (e.g. 7.5e-9/Pa); 0 = isoviscous.
     #[arg(long, default_value = "0")]
-    pub piezo: String,
+    pub piezo: Quantity<PerPressure>,
     /// Pressure–viscosity law used with --piezo.
     #[arg(long, value_enum, default_value = "barus")]
     pub law: LawName,
@@ -82,7 +82,7 @@ pub struct Args {
     pub nodes: usize,
     /// Transient: step the load per length to this value at t = 0 (e.g. 600kN/m).
     #[arg(long)]
-    pub step_to: Option<String>,
+    pub step_to: Option<Quantity<LoadPerLength>>,
     /// Transient: simulated time after the step.
     #[arg(long, default_value = "1ms")]
     pub duration: Quantity<Time>,
@@ -97,50 +97,6 @@ pub struct Args {
     /// Write pressure/film profiles (CSV + SVG), and the transient history, here.
     #[arg(long)]
     pub out: Option<PathBuf>,
-}
-
-/// Splits `text` into a number and a unit from `units` (suffix, scale), longest first.
-fn parse_with(text: &str, units: &[(&str, f64)], what: &str) -> Result<f64, Failure> {
-    let t = text.trim();
-    let accepted: Vec<&str> = units.iter().map(|u| u.0).collect();
-    let bad = || {
-        Failure::Input(format!(
-            "{what} '{text}': expected a number with unit ({})",
-            accepted.join(", ")
-        ))
-    };
-    let (number, scale) = units
-        .iter()
-        .find_map(|(u, s)| t.strip_suffix(u).map(|n| (n.trim(), *s)))
-        .unwrap_or((t, 1.0));
-    let v: f64 = number.parse().map_err(|_| bad())?;
-    if !v.is_finite() {
-        return Err(bad());
-    }
-    Ok(v * scale)
-}
-
-/// Load per unit length, N/m.
-pub(crate) fn parse_load_per_length(text: &str, what: &str) -> Result<f64, Failure> {
-    Quantity::<rolldyn_units::LoadPerLength>::parse(text)
-        .map(|w| w.si())
-        .map_err(|e| Failure::Input(format!("{what} '{text}': {e}")))
-}
-
-/// Pressure–viscosity coefficient, 1/Pa: accepts `7.5e-9/Pa`, `7.5e-9 1/Pa`, `20/GPa`, `20 1/GPa`.
-pub(crate) fn parse_piezo(text: &str) -> Result<f64, Failure> {
-    parse_with(
-        text,
-        &[
-            ("1/GPa", 1e-9),
-            ("/GPa", 1e-9),
-            ("1/MPa", 1e-6),
-            ("/MPa", 1e-6),
-            ("1/Pa", 1.0),
-            ("/Pa", 1.0),
-        ],
-        "--piezo",
-    )
 }
 
 fn compliance(args: &Args, r: f64) -> Result<Compliance, Failure> {
@@ -206,6 +162,49 @@ struct TransientSummary {
     samples: usize,
 }
 
+/// Samples of the load-step history kept for `transient.csv` and the plots.
+const MAX_TRANSIENT_SAMPLES: usize = 2000;
+
+impl TransientSummary {
+    fn new(step: &LoadStep, r: &LoadStepResult) -> Self {
+        Self {
+            initial_load_per_length_n_per_m: r.initial_load_per_length_n_per_m,
+            step_to_n_per_m: step.to,
+            duration_s: step.duration,
+            mass_kg: r.mass_kg,
+            contact_length_m: step.contact_length,
+            initial_film_m: r.initial_film_m,
+            final_film_m: r.final_film_m,
+            static_film_at_new_load_m: r.static_film_at_new_load_m,
+            min_film_m: r.min_film_m,
+            peak_pressure_pa: r.peak_pressure_pa,
+            final_pressure_pa: r.final_pressure_pa,
+            table_points: r.table_points,
+            samples: r.samples.len(),
+        }
+    }
+
+    /// The real-valued fields by their JSON keys.
+    fn numbers(&self) -> [(&'static str, f64); 11] {
+        [
+            (
+                "initial_load_per_length_n_per_m",
+                self.initial_load_per_length_n_per_m,
+            ),
+            ("step_to_n_per_m", self.step_to_n_per_m),
+            ("duration_s", self.duration_s),
+            ("mass_kg", self.mass_kg),
+            ("contact_length_m", self.contact_length_m),
+            ("initial_film_m", self.initial_film_m),
+            ("final_film_m", self.final_film_m),
+            ("static_film_at_new_load_m", self.static_film_at_new_load_m),
+            ("min_film_m", self.min_film_m),
+            ("peak_pressure_pa", self.peak_pressure_pa),
+            ("final_pressure_pa", self.final_pressure_pa),
+        ]
+    }
+}
+
 #[derive(Serialize)]
 struct Answer {
     load_per_length_n_per_m: f64,
@@ -228,6 +227,44 @@ struct Answer {
     transient: Option<TransientSummary>,
 }
 
+impl Answer {
+    /// The answer as JSON under the non-finite policy of docs/outputs.md (the `transient`
+    /// object carries its own `non_finite`).
+    fn to_json(&self) -> serde_json::Value {
+        let mut value = serde_json::to_value(self).unwrap_or_default();
+        let reason = |_: &str, v: f64| default_reason(v).to_string();
+        if let Some(object) = value.as_object_mut() {
+            mark_non_finite(object, &self.numbers(), reason);
+            if let (Some(t), Some(nested)) = (
+                &self.transient,
+                object.get_mut("transient").and_then(|v| v.as_object_mut()),
+            ) {
+                mark_non_finite(nested, &t.numbers(), reason);
+            }
+        }
+        value
+    }
+
+    /// The real-valued top-level fields by their JSON keys.
+    fn numbers(&self) -> [(&'static str, f64); 13] {
+        [
+            ("load_per_length_n_per_m", self.load_per_length_n_per_m),
+            ("max_pressure_pa", self.max_pressure_pa),
+            ("min_film_m", self.min_film_m),
+            ("central_film_m", self.central_film_m),
+            ("outlet_position_m", self.outlet_position_m),
+            ("damping_ns_per_m2", self.damping_ns_per_m2),
+            ("rigid_approach_m", self.rigid_approach_m),
+            ("hertz_half_width_m", self.hertz_half_width_m),
+            ("hertz_pressure_pa", self.hertz_pressure_pa),
+            ("solve_time_s", self.solve_time_s),
+            ("piezo_per_pa", self.piezo_per_pa),
+            ("sum_speed_m_s", self.sum_speed_m_s),
+            ("squeeze_velocity_m_s", self.squeeze_velocity_m_s),
+        ]
+    }
+}
+
 pub fn run(args: Args) -> Result<(), Failure> {
     let r = args.radius.si();
     if !(r.is_finite() && r > 0.0) {
@@ -247,7 +284,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
     if !(10..=200_000).contains(&args.nodes) {
         return Err(Failure::Input("--nodes must lie in 10…200000".into()));
     }
-    let alpha = parse_piezo(&args.piezo)?;
+    let alpha = args.piezo.si();
     if alpha < 0.0 {
         return Err(Failure::Input("--piezo must be ≥ 0".into()));
     }
@@ -262,7 +299,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
             Constraint::MinFilm(h)
         }
         (None, Some(w)) => {
-            let w = parse_load_per_length(w, "--load-per-length")?;
+            let w = w.si();
             if !(w.is_finite() && w > 0.0) {
                 return Err(Failure::Input(format!(
                     "--load-per-length must be > 0 (got {w} N/m)"
@@ -295,18 +332,20 @@ pub fn run(args: Args) -> Result<(), Failure> {
         squeeze_velocity: vy,
         ..LineContactOptions::default()
     };
-    let res = solve(&contact, visc.as_ref(), constraint, &options).map_err(library_failure)?;
-
-    let transient = match &args.step_to {
+    let res = solve(&contact, visc.as_ref(), constraint, &options)?;
+    let transient = match args.step_to {
         None => None,
-        Some(text) => Some(run_transient(
-            &args,
-            &contact,
-            visc.as_ref(),
-            &options,
-            &res,
-            parse_load_per_length(text, "--step-to")?,
-        )?),
+        Some(to) => {
+            let step = LoadStep {
+                to: to.si(),
+                duration: args.duration.si(),
+                contact_length: args.contact_length.si(),
+                mass: args.mass.map(Quantity::si),
+                max_samples: MAX_TRANSIENT_SAMPLES,
+            };
+            let result = load_step(&contact, visc.as_ref(), &options, &res, &step)?;
+            Some((TransientSummary::new(&step, &result), result))
+        }
     };
     let answer = Answer {
         load_per_length_n_per_m: res.load_per_length_n_per_m,
@@ -333,16 +372,15 @@ pub fn run(args: Args) -> Result<(), Failure> {
         squeeze_velocity_m_s: vy,
         transient: transient.as_ref().map(|t| t.0),
     };
-    check_finite(&answer, &["transient"])?;
     if let Some(dir) = &args.out {
         let dir = out_dir(dir)?;
         write_profiles(&dir, &res)?;
-        if let Some((_, samples)) = &transient {
-            write_transient(&dir, samples)?;
+        if let Some((_, result)) = &transient {
+            write_transient(&dir, &result.samples)?;
         }
     }
     if args.json {
-        print_json(&answer)?;
+        print_json(&answer.to_json())?;
     } else {
         print_text(&answer);
     }
@@ -353,115 +391,6 @@ pub fn run(args: Args) -> Result<(), Failure> {
         )));
     }
     Ok(())
-}
-
-fn run_transient(
-    args: &Args,
-    contact: &LubricatedLineContact,
-    visc: &dyn ViscosityLaw,
-    options: &LineContactOptions,
-    start: &LineContactResult,
-    w2: f64,
-) -> Result<(TransientSummary, Vec<TransientSample>), Failure> {
-    if !(w2.is_finite() && w2 > 0.0) {
-        return Err(Failure::Input(format!(
-            "--step-to must be > 0 (got {w2} N/m)"
-        )));
-    }
-    if options.squeeze_velocity != 0.0 {
-        return Err(Failure::Input(
-            "--step-to starts from a steady state: do not combine it with --squeeze-velocity"
-                .into(),
-        ));
-    }
-    let duration = args.duration.si();
-    if !(duration > 0.0 && duration.is_finite()) {
-        return Err(Failure::Input("--duration must be > 0".into()));
-    }
-    let ell = args.contact_length.si();
-    if !(ell > 0.0 && ell.is_finite()) {
-        return Err(Failure::Input("--contact-length must be > 0".into()));
-    }
-    let r = contact.radius;
-    let mass = args
-        .mass
-        .map_or(7850.0 * std::f64::consts::PI * r * r * ell, Quantity::si);
-    if !(mass > 0.0 && mass.is_finite()) {
-        return Err(Failure::Input("--mass must be > 0".into()));
-    }
-    let w1 = start.load_per_length_n_per_m;
-    let h1 = start.rigid_approach_m;
-    let quiet = LineContactOptions {
-        damping: false,
-        ..*options
-    };
-    let end =
-        solve(contact, visc, Constraint::LoadPerLength(w2), &quiet).map_err(library_failure)?;
-    let h2 = end.rigid_approach_m;
-    if !(h1 > 0.0 && h2 > 0.0) {
-        return Err(Failure::Input(format!(
-            "the transient mode tabulates W₀, λ over the rigid approach h₀, which must stay > 0 \
-             (got {h1:.3e} m → {h2:.3e} m with --elastic {}); use --elastic none or a lighter load",
-            args.elastic
-        )));
-    }
-    let (lo, hi) = (0.7 * h1.min(h2), 1.3 * h1.max(h2));
-    let n = 11;
-    let hs: Vec<f64> = (0..n)
-        .map(|k| lo * (hi / lo).powf(k as f64 / (n - 1) as f64))
-        .collect();
-    let table = LoadDampingTable::build(contact, visc, &hs, options).map_err(library_failure)?;
-    let film = Tabulated {
-        table: &table,
-        length: ell,
-        v: contact.sum_speed(),
-        r,
-    };
-    let force = |_: f64| w2 * ell;
-    let mut samples = simulate(
-        &film,
-        mass,
-        &force,
-        h1,
-        0.0,
-        duration,
-        &TransientOptions::default(),
-    )
-    .map_err(library_failure)?;
-    if samples.iter().any(|s| s.h <= lo || s.h >= hi) {
-        return Err(Failure::Run(format!(
-            "the film left the tabulated range {lo:.3e}…{hi:.3e} m during the transient \
-             (inertia overshoot); shorten --duration or reduce the step"
-        )));
-    }
-    // thin to ≤ 2000 samples for output
-    if samples.len() > 2000 {
-        let step = samples.len().div_ceil(2000);
-        let last = *samples.last().expect("non-empty");
-        samples = samples.into_iter().step_by(step).collect();
-        if samples.last() != Some(&last) {
-            samples.push(last);
-        }
-    }
-    let last = *samples
-        .last()
-        .ok_or_else(|| Failure::Run("the transient returned no samples".into()))?;
-    let summary = TransientSummary {
-        initial_load_per_length_n_per_m: w1,
-        step_to_n_per_m: w2,
-        duration_s: duration,
-        mass_kg: mass,
-        contact_length_m: ell,
-        initial_film_m: h1,
-        final_film_m: last.h,
-        static_film_at_new_load_m: h2,
-        min_film_m: samples.iter().map(|s| s.h).fold(f64::INFINITY, f64::min),
-        peak_pressure_pa: samples.iter().map(|s| s.p_max).fold(0.0, f64::max),
-        final_pressure_pa: last.p_max,
-        table_points: n,
-        samples: samples.len(),
-    };
-    Ok((summary, samples))
 }
 
 fn print_text(a: &Answer) {
@@ -582,4 +511,65 @@ fn write_transient(dir: &Path, samples: &[TransientSample]) -> Result<(), Failur
         &Series::from_pairs(&p),
     )?;
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// docs/outputs.md: a non-finite value prints as `null` with its reason, also inside the
+    /// nested `transient` object; finite values are untouched.
+    #[test]
+    fn non_finite_values_print_as_null_with_a_reason() {
+        let transient = TransientSummary {
+            initial_load_per_length_n_per_m: 1e5,
+            step_to_n_per_m: 2e5,
+            duration_s: 1e-3,
+            mass_kg: 0.1,
+            contact_length_m: 0.01,
+            initial_film_m: 1e-6,
+            final_film_m: f64::NAN,
+            static_film_at_new_load_m: 8e-7,
+            min_film_m: 7e-7,
+            peak_pressure_pa: 1e9,
+            final_pressure_pa: 9e8,
+            table_points: 10,
+            samples: 100,
+        };
+        let answer = Answer {
+            load_per_length_n_per_m: 1e5,
+            max_pressure_pa: f64::INFINITY,
+            min_film_m: 1e-6,
+            central_film_m: 1.2e-6,
+            outlet_position_m: 1e-4,
+            damping_ns_per_m2: 1e3,
+            rigid_approach_m: 1e-6,
+            hertz_half_width_m: 0.0,
+            hertz_pressure_pa: 0.0,
+            iterations: 5,
+            converged: true,
+            solve_time_s: 0.01,
+            limits: Limits {
+                nodes: 100,
+                max_newton_iterations: 50,
+                continuation_steps: 1,
+                tolerance: 1e-9,
+            },
+            elastic: "none".into(),
+            piezo_per_pa: 0.0,
+            sum_speed_m_s: 2.0,
+            squeeze_velocity_m_s: 0.0,
+            transient: Some(transient),
+        };
+        let v = answer.to_json();
+        assert!(v["max_pressure_pa"].is_null());
+        assert_eq!(v["non_finite"]["max_pressure_pa"], "diverged");
+        assert_eq!(v["min_film_m"], 1e-6);
+        assert!(v["transient"]["final_film_m"].is_null());
+        assert_eq!(
+            v["transient"]["non_finite"]["final_film_m"],
+            "not defined for this run"
+        );
+        assert!(v["transient"]["non_finite"].get("min_film_m").is_none());
+    }
 }

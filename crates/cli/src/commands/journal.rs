@@ -5,25 +5,19 @@
 
 use crate::failure::Failure;
 use crate::output::{out_dir, print_json, write_csv};
+use rolldyn_model::journal::{JournalTarget, journal_target, load_journal, parse_grid};
+use rolldyn_output::{default_reason, mark_non_finite};
 use rolldyn_plot::{Field, Labels, Series, heat_map, line_plot};
-use rolldyn_reynolds::compliance::liner::{AnalyticLinerKernel, LinerKernel, Material, two_layer};
 use rolldyn_reynolds::journal::{
     FilmStart, JournalBearing, JournalOperating, JournalOptions, JournalResult, solve_eccentricity,
     solve_load,
 };
-use rolldyn_reynolds::thermal::ThermalModel;
-use rolldyn_reynolds::{
-    Barus, Cavitation, Isoviscous, Petrusevich, ReynoldsError, Viscosity as ViscosityLaw,
-};
-use rolldyn_units::{
-    AngularSpeed, DynamicViscosity, Force, Length, PerPressure, Pressure, Quantity, Temperature,
-    ThermalConductivity,
-};
-use serde::{Deserialize, Serialize};
+use rolldyn_reynolds::{Cavitation, Isoviscous, Viscosity as ViscosityLaw};
+use rolldyn_units::{AngularSpeed, DynamicViscosity, Force, Length, Quantity, Temperature};
+use serde::Serialize;
 use std::path::{Path, PathBuf};
 
-#[derive(Clone, Copy, clap::ValueEnum, Deserialize, PartialEq, Eq, Debug)]
-#[serde(rename_all = "kebab-case")]
+#[derive(Clone, Copy, clap::ValueEnum, PartialEq, Eq, Debug)]
 pub enum CavitationName {
     /// Reynolds / Swift–Stieber (p ≥ 0 by complementarity).
     Reynolds,
@@ -33,14 +27,52 @@ pub enum CavitationName {
     None,
 }
 
-#[derive(Clone, Copy, clap::ValueEnum, Deserialize, PartialEq, Eq, Debug)]
-#[serde(rename_all = "kebab-case")]
+#[derive(Clone, Copy, clap::ValueEnum, PartialEq, Eq, Debug)]
 pub enum FilmStartName {
     /// Ambient pressure on the line of maximum gap (Raimondi–Boyd convention).
     MaxGap,
     /// No supply line: the film starts where the complementarity problem puts it (seed scheme).
     Free,
 }
+
+impl CavitationName {
+    fn model(self) -> Cavitation {
+        match self {
+            Self::Reynolds => Cavitation::Reynolds,
+            Self::Jfo => Cavitation::Jfo,
+            Self::None => Cavitation::None,
+        }
+    }
+}
+
+impl FilmStartName {
+    fn model(self) -> FilmStart {
+        match self {
+            Self::MaxGap => FilmStart::MaxGap,
+            Self::Free => FilmStart::Free,
+        }
+    }
+}
+
+/// The flag spelling of a cavitation model (JSON `cavitation`).
+fn cavitation_name(c: Cavitation) -> &'static str {
+    match c {
+        Cavitation::Reynolds => "reynolds",
+        Cavitation::Jfo => "jfo",
+        Cavitation::None => "none",
+    }
+}
+
+/// The flag spelling of a film start (JSON `film_start`).
+fn film_start_name(f: FilmStart) -> &'static str {
+    match f {
+        FilmStart::MaxGap => "max-gap",
+        FilmStart::Free => "free",
+    }
+}
+
+/// Grid when neither the flags nor the model file give one.
+const DEFAULT_GRID: &str = "120x40";
 
 #[derive(clap::Args)]
 pub struct Args {
@@ -91,153 +123,19 @@ pub struct Args {
     pub out: Option<PathBuf>,
 }
 
-// ---------------------------------------------------------------- model file
-
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct ModelFile {
-    geometry: GeometryFile,
-    operating: OperatingFile,
-    viscosity: ViscosityFile,
-    liner: Option<LinerFile>,
-    thermal: Option<ThermalFile>,
-    solver: Option<SolverFile>,
-}
-
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct GeometryFile {
-    /// Journal radius R (bush bore R₁ = R + c).
-    radius: Quantity<Length>,
-    length: Quantity<Length>,
-    clearance: Quantity<Length>,
-}
-
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct OperatingFile {
-    speed: Quantity<AngularSpeed>,
-    eccentricity: Option<f64>,
-    load: Option<Quantity<Force>>,
-    temperature: Option<Quantity<Temperature>>,
-}
-
-#[derive(Deserialize, Clone, Copy)]
-#[serde(rename_all = "kebab-case")]
-enum LawName {
-    Isoviscous,
-    Barus,
-    Petrusevich,
-}
-
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct ViscosityFile {
-    law: LawName,
-    mu0: Quantity<DynamicViscosity>,
-    alpha: Option<Quantity<PerPressure>>,
-    /// Viscosity–temperature slope Ω₀, 1/K (plain number).
-    omega0_per_k: Option<f64>,
-    /// Reference temperature of μ₀ (default: the operating temperature).
-    t_ref: Option<Quantity<Temperature>>,
-}
-
-#[derive(Deserialize, Clone, Copy)]
-#[serde(rename_all = "kebab-case")]
-enum KernelName {
-    Analytic,
-    Winkler,
-}
-
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct LinerFile {
-    thickness: Quantity<Length>,
-    modulus: Quantity<Pressure>,
-    poisson: f64,
-    kernel: Option<KernelName>,
-    housing: Option<HousingFile>,
-}
-
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct HousingFile {
-    outer_radius: Quantity<Length>,
-    modulus: Quantity<Pressure>,
-    poisson: f64,
-}
-
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct ThermalFile {
-    conductivity: Quantity<ThermalConductivity>,
-    ambient_temperature: Quantity<Temperature>,
-    outer_radius: Quantity<Length>,
-    harmonics: Option<usize>,
-}
-
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct SolverFile {
-    cavitation: Option<CavitationName>,
-    grid: Option<String>,
-    film_start: Option<FilmStartName>,
-}
-
-enum Mode {
-    Eccentricity(f64),
-    Load(f64),
-}
-
 struct Problem {
     bearing: JournalBearing,
     viscosity: Box<dyn ViscosityLaw>,
     law: &'static str,
     op: JournalOperating,
-    mode: Mode,
-    cavitation: CavitationName,
+    target: JournalTarget,
+    cavitation: Cavitation,
     grid: (usize, usize),
-    film_start: FilmStartName,
+    film_start: FilmStart,
 }
 
-fn parse_grid(text: &str) -> Result<(usize, usize), Failure> {
-    let bad = || {
-        Failure::Input(format!(
-            "--grid '{text}': expected NxM (circumferential × axial nodes), e.g. 120x40, with N ≥ 8 and M ≥ 3"
-        ))
-    };
-    let (a, b) = text.split_once(['x', 'X', '×']).ok_or_else(bad)?;
-    let n: usize = a.trim().parse().map_err(|_| bad())?;
-    let m: usize = b.trim().parse().map_err(|_| bad())?;
-    if n < 8 || m < 3 || n > 4000 || m > 2000 {
-        return Err(bad());
-    }
-    Ok((n, m))
-}
-
-fn mode(eps: Option<f64>, load: Option<f64>, ctx: &str, key: &str) -> Result<Mode, Failure> {
-    match (eps, load) {
-        (Some(e), None) => {
-            if !(e.is_finite() && e > 0.0 && e < 1.0) {
-                return Err(Failure::Input(format!(
-                    "{ctx}{key}eccentricity {e}: must satisfy 0 < ε < 1 (ε ≥ 1 is metal contact; at ε = 0 the load and Sommerfeld number are undefined)"
-                )));
-            }
-            Ok(Mode::Eccentricity(e))
-        }
-        (None, Some(w)) => {
-            if !(w.is_finite() && w > 0.0) {
-                return Err(Failure::Input(format!("{ctx}{key}load {w} N: must be > 0")));
-            }
-            Ok(Mode::Load(w))
-        }
-        (Some(_), Some(_)) => Err(Failure::Input(format!(
-            "{ctx}give either {key}eccentricity or {key}load, not both"
-        ))),
-        (None, None) => Err(Failure::Input(format!(
-            "{ctx}give {key}eccentricity or {key}load"
-        ))),
-    }
+fn grid(text: &str) -> Result<(usize, usize), Failure> {
+    parse_grid(text).map_err(|why| Failure::Input(format!("--grid {why}")))
 }
 
 fn positive(what: &str, v: f64) -> Result<f64, Failure> {
@@ -268,6 +166,8 @@ fn from_flags(args: &Args) -> Result<Problem, Failure> {
     if !w.is_finite() {
         return Err(Failure::Input("--speed must be finite".into()));
     }
+    let target = journal_target(args.eccentricity, args.load.map(Quantity::si), "--")
+        .map_err(|e| Failure::Input(format!("{}: {}", e.key, e.reason)))?;
     Ok(Problem {
         bearing: JournalBearing::new(r, l, c),
         viscosity: Box::new(Isoviscous { mu }),
@@ -277,182 +177,45 @@ fn from_flags(args: &Args) -> Result<Problem, Failure> {
             bearing_speed: 0.0,
             temperature: args.temperature.si(),
         },
-        mode: mode(args.eccentricity, args.load.map(Quantity::si), "", "--")?,
-        cavitation: args.cavitation.unwrap_or(CavitationName::Reynolds),
-        grid: parse_grid(args.grid.as_deref().unwrap_or("120x40"))?,
-        film_start: args.film_start.unwrap_or(FilmStartName::MaxGap),
-    })
-}
-
-fn from_file(path: &Path, args: &Args) -> Result<Problem, Failure> {
-    let file = path.display().to_string();
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| Failure::Input(format!("{file}: cannot read the file: {e}")))?;
-    let m: ModelFile = toml::from_str(&text).map_err(|e| {
-        let at = e
-            .span()
-            .map(|s| toml_location(&text, s.start))
-            .unwrap_or_default();
-        Failure::Input(format!(
-            "{file}{at}: {}",
-            e.message().trim().replace('\n', " ")
-        ))
-    })?;
-    let key = |k: &str, msg: String| Failure::Input(format!("{file}: {k}: {msg}"));
-    let pos = |k: &str, v: f64| -> Result<f64, Failure> {
-        if v.is_finite() && v > 0.0 {
-            Ok(v)
-        } else {
-            Err(key(k, format!("must be > 0 (got {v})")))
-        }
-    };
-    let r = pos("geometry.radius", m.geometry.radius.si())?;
-    let l = pos("geometry.length", m.geometry.length.si())?;
-    let c = pos("geometry.clearance", m.geometry.clearance.si())?;
-    let t_op = m
-        .operating
-        .temperature
-        .map_or(args.temperature.si(), Quantity::si);
-    pos("operating.temperature", t_op)?;
-    let mut bearing = JournalBearing::new(r, l, c);
-    let v = &m.viscosity;
-    let mu0 = pos("viscosity.mu0", v.mu0.si())?;
-    let alpha = v.alpha.map_or(0.0, Quantity::si);
-    if !(alpha.is_finite() && alpha >= 0.0) {
-        return Err(key("viscosity.alpha", format!("must be ≥ 0 (got {alpha})")));
-    }
-    let (viscosity, law): (Box<dyn ViscosityLaw>, &'static str) = match v.law {
-        LawName::Isoviscous => (Box::new(Isoviscous { mu: mu0 }), "isoviscous"),
-        LawName::Barus => (Box::new(Barus { mu0, alpha }), "barus"),
-        LawName::Petrusevich => {
-            let omega0 = v.omega0_per_k.ok_or_else(|| {
-                key(
-                    "viscosity.omega0_per_k",
-                    "required by the Petrusevich law".into(),
-                )
-            })?;
-            if !(omega0.is_finite() && omega0 >= 0.0) {
-                return Err(key(
-                    "viscosity.omega0_per_k",
-                    format!("must be ≥ 0 (got {omega0})"),
-                ));
-            }
-            let t_ref_k = v.t_ref.map_or(t_op, Quantity::si);
-            (
-                Box::new(Petrusevich {
-                    mu0,
-                    alpha,
-                    omega0,
-                    t_ref_k,
-                }),
-                "petrusevich",
-            )
-        }
-    };
-    if let Some(liner) = &m.liner {
-        let r1 = r + c;
-        let t = pos("liner.thickness", liner.thickness.si())?;
-        let e = pos("liner.modulus", liner.modulus.si())?;
-        if !(liner.poisson > -1.0 && liner.poisson < 0.5) {
-            return Err(key("liner.poisson", "must lie in (−1, 0.5)".into()));
-        }
-        let lin = Material {
-            e,
-            nu: liner.poisson,
-        };
-        let k0 = match &liner.housing {
-            Some(h) => {
-                let r3 = h.outer_radius.si();
-                if !(r3.is_finite() && r3 > r1 + t) {
-                    return Err(key(
-                        "liner.housing.outer_radius",
-                        format!("must exceed the liner outer radius {:.6} m", r1 + t),
-                    ));
-                }
-                let eh = pos("liner.housing.modulus", h.modulus.si())?;
-                if !(h.poisson > -1.0 && h.poisson < 0.5) {
-                    return Err(key("liner.housing.poisson", "must lie in (−1, 0.5)".into()));
-                }
-                two_layer(
-                    r1,
-                    r1 + t,
-                    r3,
-                    lin,
-                    Material {
-                        e: eh,
-                        nu: h.poisson,
-                    },
-                )
-            }
-            None => rolldyn_reynolds::compliance::liner::winkler(t, e, liner.poisson),
-        };
-        bearing.liner = Some(match liner.kernel.unwrap_or(KernelName::Analytic) {
-            KernelName::Analytic => LinerKernel::Analytic(AnalyticLinerKernel::seed(k0)),
-            KernelName::Winkler => LinerKernel::Winkler { k0 },
-        });
-    }
-    if let Some(th) = &m.thermal {
-        bearing.thermal = Some(ThermalModel {
-            conductivity: pos("thermal.conductivity", th.conductivity.si())?,
-            ambient_temperature: pos("thermal.ambient_temperature", th.ambient_temperature.si())?,
-            outer_radius: pos("thermal.outer_radius", th.outer_radius.si())?,
-            harmonics: th.harmonics.unwrap_or(10),
-        });
-    }
-    let s = m.solver.as_ref();
-    let grid_text = args
-        .grid
-        .clone()
-        .or_else(|| s.and_then(|s| s.grid.clone()))
-        .unwrap_or_else(|| "120x40".into());
-    Ok(Problem {
-        bearing,
-        viscosity,
-        law,
-        op: JournalOperating {
-            journal_speed: m.operating.speed.si(),
-            bearing_speed: 0.0,
-            temperature: t_op,
-        },
-        mode: mode(
-            m.operating.eccentricity,
-            m.operating.load.map(Quantity::si),
-            &format!("{file}: "),
-            "operating.",
-        )?,
+        target,
         cavitation: args
             .cavitation
-            .or(s.and_then(|s| s.cavitation))
-            .unwrap_or(CavitationName::Reynolds),
-        grid: parse_grid(&grid_text)?,
+            .map_or(Cavitation::Reynolds, CavitationName::model),
+        grid: grid(args.grid.as_deref().unwrap_or(DEFAULT_GRID))?,
         film_start: args
             .film_start
-            .or(s.and_then(|s| s.film_start))
-            .unwrap_or(FilmStartName::MaxGap),
+            .map_or(FilmStart::MaxGap, FilmStartName::model),
     })
 }
 
-/// ":LINE (section.key)" of a byte offset in a TOML text, for error messages.
-fn toml_location(text: &str, offset: usize) -> String {
-    let before = &text[..offset.min(text.len())];
-    let line_no = before.matches('\n').count() + 1;
-    let line = text.lines().nth(line_no - 1).unwrap_or("").trim();
-    let section = before
-        .lines()
-        .rev()
-        .map(str::trim)
-        .find(|l| l.starts_with('['))
-        .map(|l| l.trim_matches(|c| c == '[' || c == ']').trim().to_string());
-    let key = line
-        .split_once('=')
-        .map(|(k, _)| k.trim().to_string())
-        .filter(|k| !k.starts_with('['));
-    match (section, key) {
-        (Some(s), Some(k)) => format!(":{line_no} ({s}.{k})"),
-        (None, Some(k)) => format!(":{line_no} ({k})"),
-        (Some(s), None) => format!(":{line_no} ([{s}])"),
-        (None, None) => format!(":{line_no}"),
-    }
+/// The model file, with the solver flags overriding its `[solver]` table.
+fn from_file(path: &Path, args: &Args) -> Result<Problem, Failure> {
+    let m = load_journal(path, args.temperature.si())?;
+    let grid = match &args.grid {
+        Some(text) => grid(text)?,
+        None => match m.solver.grid {
+            Some(g) => g,
+            None => grid(DEFAULT_GRID)?,
+        },
+    };
+    Ok(Problem {
+        bearing: m.bearing,
+        viscosity: m.viscosity,
+        law: m.viscosity_law,
+        op: m.operating,
+        target: m.target,
+        cavitation: args
+            .cavitation
+            .map(CavitationName::model)
+            .or(m.solver.cavitation)
+            .unwrap_or(Cavitation::Reynolds),
+        grid,
+        film_start: args
+            .film_start
+            .map(FilmStartName::model)
+            .or(m.solver.film_start)
+            .unwrap_or(FilmStart::MaxGap),
+    })
 }
 
 // ---------------------------------------------------------------- output
@@ -497,17 +260,6 @@ struct Answer {
     thermal: bool,
 }
 
-pub(crate) fn library_failure(e: ReynoldsError) -> Failure {
-    match e {
-        ReynoldsError::InvalidInput { .. } | ReynoldsError::NoSolution(_) => {
-            Failure::Input(e.to_string())
-        }
-        ReynoldsError::NotConverged { .. } | ReynoldsError::Singular(_) => {
-            Failure::Run(e.to_string())
-        }
-    }
-}
-
 pub fn run(args: Args) -> Result<(), Failure> {
     let p = match &args.file {
         Some(path) => from_file(path, &args)?,
@@ -516,24 +268,16 @@ pub fn run(args: Args) -> Result<(), Failure> {
     let options = JournalOptions {
         n_circumferential: p.grid.0,
         n_axial: p.grid.1,
-        cavitation: match p.cavitation {
-            CavitationName::Reynolds => Cavitation::Reynolds,
-            CavitationName::Jfo => Cavitation::Jfo,
-            CavitationName::None => Cavitation::None,
-        },
-        film_start: match p.film_start {
-            FilmStartName::MaxGap => FilmStart::MaxGap,
-            FilmStartName::Free => FilmStart::Free,
-        },
+        cavitation: p.cavitation,
+        film_start: p.film_start,
         coefficients: !args.no_coefficients,
         ..JournalOptions::default()
     };
     let visc: &dyn ViscosityLaw = p.viscosity.as_ref();
-    let res = match p.mode {
-        Mode::Eccentricity(e) => solve_eccentricity(&p.bearing, visc, &p.op, e, &options),
-        Mode::Load(w) => solve_load(&p.bearing, visc, &p.op, w, &options),
-    }
-    .map_err(library_failure)?;
+    let res = match p.target {
+        JournalTarget::Eccentricity(e) => solve_eccentricity(&p.bearing, visc, &p.op, e, &options),
+        JournalTarget::Load(w) => solve_load(&p.bearing, visc, &p.op, w, &options),
+    }?;
     let answer = Answer {
         eccentricity: res.eccentricity,
         attitude_deg: res.attitude_deg,
@@ -562,25 +306,17 @@ pub fn run(args: Args) -> Result<(), Failure> {
             max_eccentricity: options.max_eccentricity,
         },
         grid: [options.n_circumferential, options.n_axial],
-        cavitation: match p.cavitation {
-            CavitationName::Reynolds => "reynolds",
-            CavitationName::Jfo => "jfo",
-            CavitationName::None => "none",
-        },
-        film_start: match p.film_start {
-            FilmStartName::MaxGap => "max-gap",
-            FilmStartName::Free => "free",
-        },
+        cavitation: cavitation_name(p.cavitation),
+        film_start: film_start_name(p.film_start),
         viscosity_law: p.law,
         elastic_liner: p.bearing.liner.is_some(),
         thermal: p.bearing.thermal.is_some(),
     };
-    check_finite(&answer, &["stiffness_n_per_m", "damping_ns_per_m"])?;
     if let Some(dir) = &args.out {
         write_outputs(&out_dir(dir)?, &res)?;
     }
     if args.json {
-        print_json(&answer)?;
+        print_json(&answer.to_json())?;
     } else {
         print_text(&answer);
     }
@@ -599,26 +335,52 @@ pub fn run(args: Args) -> Result<(), Failure> {
     Ok(())
 }
 
-/// Never print NaN: serde_json writes non-finite numbers as `null`, so any `null` other than
-/// the listed optional fields means the solver produced a non-finite value.
-pub(crate) fn check_finite<T: Serialize>(answer: &T, optional: &[&str]) -> Result<(), Failure> {
-    fn bad(v: &serde_json::Value, optional: &[&str]) -> bool {
-        match v {
-            serde_json::Value::Null => true,
-            serde_json::Value::Array(a) => a.iter().any(|x| bad(x, optional)),
-            serde_json::Value::Object(o) => o
-                .iter()
-                .any(|(k, x)| !(x.is_null() && optional.contains(&k.as_str())) && bad(x, optional)),
-            _ => false,
+impl Answer {
+    /// The answer as JSON under the non-finite policy of docs/outputs.md (a 2×2 matrix with a
+    /// non-finite entry is `null` as a whole).
+    fn to_json(&self) -> serde_json::Value {
+        let mut value = serde_json::to_value(self).unwrap_or_default();
+        if let Some(object) = value.as_object_mut() {
+            mark_non_finite(object, &self.numbers(), |_, v| {
+                default_reason(v).to_string()
+            });
         }
+        value
     }
-    let value = serde_json::to_value(answer).map_err(|e| Failure::Run(e.to_string()))?;
-    if bad(&value, optional) {
-        return Err(Failure::Run(
-            "the solver returned a non-finite value (NaN or infinity); nothing printed".into(),
-        ));
+
+    /// The real-valued fields by their JSON keys (a matrix by its first non-finite entry).
+    fn numbers(&self) -> Vec<(&'static str, f64)> {
+        let mut numbers = vec![
+            ("eccentricity", self.eccentricity),
+            ("attitude_deg", self.attitude_deg),
+            ("sommerfeld", self.sommerfeld),
+            ("load_n", self.load_n),
+            ("max_pressure_pa", self.max_pressure_pa),
+            ("friction_torque_nm", self.friction_torque_nm),
+            ("friction_variable", self.friction_variable),
+            ("side_flow_m3_s", self.side_flow_m3_s),
+            ("min_film_m", self.min_film_m),
+            ("power_loss_w", self.power_loss_w),
+            ("max_temperature_k", self.max_temperature_k),
+            ("mean_temperature_k", self.mean_temperature_k),
+            ("max_deflection_m", self.max_deflection_m),
+            ("solve_time_s", self.solve_time_s),
+        ];
+        for (key, matrix) in [
+            ("stiffness_n_per_m", self.stiffness_n_per_m),
+            ("damping_ns_per_m", self.damping_ns_per_m),
+        ] {
+            if let Some(m) = matrix {
+                let entries = m.as_flattened();
+                let worst = entries
+                    .iter()
+                    .find(|v| !v.is_finite())
+                    .unwrap_or(&entries[0]);
+                numbers.push((key, *worst));
+            }
+        }
+        numbers
     }
-    Ok(())
 }
 
 fn print_text(a: &Answer) {

@@ -6,7 +6,8 @@
 //!   compressible, with squeeze velocity; full EHL by a coupled Newton method (below);
 //! * [`load_damping`] — W₀(h_m) and λ(h_m) = −∂W/∂ḣ tables with interpolation (3.16)–(3.20);
 //! * [`transient`] — M ḧ + λ(h) ḣ − W₀(h) = −F after load steps, stiff integration, and the
-//!   matched-asymptotic solution of (3.25) for verification.
+//!   matched-asymptotic solution of (3.25) for verification;
+//! * [`load_step`] — a load step from a steady state: table, integration and summary.
 //!
 //! **EHL method.** Unknowns are the nodal pressures and film thicknesses. The Reynolds equation
 //! (finite volumes, Poiseuille faces by arithmetic means, Couette flux by second-order upwinding)
@@ -22,6 +23,7 @@
 pub mod analytic;
 mod ehl;
 pub mod load_damping;
+pub mod load_step;
 pub mod study;
 pub mod transient;
 
