@@ -92,45 +92,86 @@ impl FrozenPointRow {
     }
 }
 
-/// Numeric columns of `startup.parquet` (and of `startup.csv` after `point`).
-pub const NUMERIC_COLUMNS: [&str; 16] = [
-    "time_s",
-    "inner_speed_rad_s",
-    "inner_speed_rpm",
-    "fixed_load_n",
-    "rotating_load_n",
-    "clearance_m",
-    "oil_temperature_k",
-    "cage_slip_dynamic",
-    "slip_drift",
-    "cage_slip_quasi_static",
-    "max_roller_load_n",
-    "max_roller_load_quasi_static_n",
-    "revolutions",
-    "averaged_revolutions",
-    "steady",
-    "wall_time_s",
+/// A numeric column of `startup.parquet` (and of `startup.csv` after `point`): its name and
+/// how its value is read from a row (a flag as 0 or 1).
+#[derive(Clone, Copy)]
+pub struct NumericColumn {
+    /// column name in the header
+    pub name: &'static str,
+    /// reads the value from a row
+    pub value: fn(&FrozenPointRow) -> f64,
+}
+
+/// The numeric columns of the start-up table, in order.
+pub const NUMERIC_COLUMNS: [NumericColumn; 16] = [
+    NumericColumn {
+        name: "time_s",
+        value: |r| r.time_s,
+    },
+    NumericColumn {
+        name: "inner_speed_rad_s",
+        value: |r| r.inner_speed_rad_s,
+    },
+    NumericColumn {
+        name: "inner_speed_rpm",
+        value: |r| r.inner_speed_rad_s * 30.0 / std::f64::consts::PI,
+    },
+    NumericColumn {
+        name: "fixed_load_n",
+        value: |r| r.fixed_load_n,
+    },
+    NumericColumn {
+        name: "rotating_load_n",
+        value: |r| r.rotating_load_n,
+    },
+    NumericColumn {
+        name: "clearance_m",
+        value: |r| r.clearance_m,
+    },
+    NumericColumn {
+        name: "oil_temperature_k",
+        value: |r| r.oil_temperature_k,
+    },
+    NumericColumn {
+        name: "cage_slip_dynamic",
+        value: |r| r.cage_slip_dynamic,
+    },
+    NumericColumn {
+        name: "slip_drift",
+        value: |r| r.slip_drift,
+    },
+    NumericColumn {
+        name: "cage_slip_quasi_static",
+        value: |r| r.cage_slip_quasi_static,
+    },
+    NumericColumn {
+        name: "max_roller_load_n",
+        value: |r| r.max_roller_load_n,
+    },
+    NumericColumn {
+        name: "max_roller_load_quasi_static_n",
+        value: |r| r.max_roller_load_quasi_static_n,
+    },
+    NumericColumn {
+        name: "revolutions",
+        value: |r| r.revolutions,
+    },
+    NumericColumn {
+        name: "averaged_revolutions",
+        value: |r| r.averaged_revolutions,
+    },
+    NumericColumn {
+        name: "steady",
+        value: |r| f64::from(u8::from(r.steady)),
+    },
+    NumericColumn {
+        name: "wall_time_s",
+        value: |r| r.wall_time_s,
+    },
 ];
 
-fn numeric(row: &FrozenPointRow) -> [f64; 16] {
-    [
-        row.time_s,
-        row.inner_speed_rad_s,
-        row.inner_speed_rad_s * 30.0 / std::f64::consts::PI,
-        row.fixed_load_n,
-        row.rotating_load_n,
-        row.clearance_m,
-        row.oil_temperature_k,
-        row.cage_slip_dynamic,
-        row.slip_drift,
-        row.cage_slip_quasi_static,
-        row.max_roller_load_n,
-        row.max_roller_load_quasi_static_n,
-        row.revolutions,
-        row.averaged_revolutions,
-        f64::from(u8::from(row.steady)),
-        row.wall_time_s,
-    ]
+fn numeric(row: &FrozenPointRow) -> Vec<f64> {
+    NUMERIC_COLUMNS.iter().map(|c| (c.value)(row)).collect()
 }
 
 /// Runs `analyse` on every point with `jobs` threads (results in the order of `points`);
@@ -188,10 +229,10 @@ pub fn write_outputs(dir: &Path, model: &str, rows: &[FrozenPointRow]) -> Result
     let mut csv =
         csv::Writer::from_path(dir.join("startup.csv")).map_err(|e| fail(e.to_string()))?;
     let mut header = vec!["point".to_string()];
-    header.extend(NUMERIC_COLUMNS.iter().map(|c| c.to_string()));
+    header.extend(NUMERIC_COLUMNS.iter().map(|c| c.name.to_string()));
     header.push("note".to_string());
     csv.write_record(&header).map_err(|e| fail(e.to_string()))?;
-    let names: Vec<String> = NUMERIC_COLUMNS.iter().map(|c| c.to_string()).collect();
+    let names: Vec<String> = NUMERIC_COLUMNS.iter().map(|c| c.name.to_string()).collect();
     let mut parquet = TableWriter::create(
         dir,
         "startup",

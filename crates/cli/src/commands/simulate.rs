@@ -4,8 +4,12 @@
 use crate::failure::Failure;
 use crate::output::{load_model, out_dir, print_json};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
-use rolldyn_dynamics::IntegratorMethod;
 use rolldyn_dynamics::output::{OutputSink, RevolutionSummary, RunSummary, Snapshot};
+use rolldyn_dynamics::output_columns::{
+    BEARING_COLUMNS, REVOLUTION_COLUMNS, ROLLER_COLUMNS, bearing_row, column_names, revolution_row,
+    roller_row,
+};
+use rolldyn_dynamics::{IntegratorMethod, SummaryValue};
 use rolldyn_output::{Formats, OutputError, TableWriter};
 use rolldyn_plot::{Labels, Series, line_plot};
 use rolldyn_units::{Quantity, Time};
@@ -134,73 +138,6 @@ impl Decimated {
     }
 }
 
-const BEARING_COLUMNS: [&str; 12] = [
-    "time_s",
-    "inner_ring_speed_rad_s",
-    "inner_ring_x_m",
-    "inner_ring_y_m",
-    "cage_x_m",
-    "cage_y_m",
-    "cage_angle_rad",
-    "cage_speed_rad_s",
-    "epicyclic_cage_speed_rad_s",
-    "cage_slip",
-    "cage_land_force_n",
-    "cage_land_power_w",
-];
-
-const ROLLER_COLUMNS: [&str; 27] = [
-    "time_s",
-    "roller",
-    "azimuth_rad",
-    "radius_m",
-    "orbital_speed_rad_s",
-    "spin_speed_rad_s",
-    "yaw_rad",
-    "pitch_rad",
-    "inner_force_n",
-    "inner_sliding_speed_m_s",
-    "inner_rolling_speed_m_s",
-    "inner_slide_to_roll",
-    "inner_film_m",
-    "inner_lambda",
-    "inner_traction",
-    "inner_friction_power_w",
-    "outer_force_n",
-    "outer_sliding_speed_m_s",
-    "outer_rolling_speed_m_s",
-    "outer_slide_to_roll",
-    "outer_film_m",
-    "outer_lambda",
-    "outer_traction",
-    "outer_friction_power_w",
-    "cage_bar_force_n",
-    "rib_force_n",
-    "pocket_face_force_n",
-];
-
-const REVOLUTION_COLUMNS: [&str; 19] = [
-    "revolution",
-    "start_s",
-    "end_s",
-    "cage_speed_mean_rad_s",
-    "cage_slip_mean",
-    "max_inner_contact_force_n",
-    "max_outer_contact_force_n",
-    "max_roller_cage_force_n",
-    "max_cage_land_force_n",
-    "max_roller_end_rib_force_n",
-    "max_roller_end_cage_force_n",
-    "max_inner_sliding_speed_m_s",
-    "max_relative_slip",
-    "scuffing_margin",
-    "whirl_ratio",
-    "precession",
-    "cage_orbit_radius_m",
-    "friction_power_mean_w",
-    "steady",
-];
-
 /// Streams samples to tables and keeps decimated histories for the plots.
 struct FileSink {
     bearing: TableWriter,
@@ -218,21 +155,17 @@ struct FileSink {
     roller_bar: Decimated,
 }
 
-fn names(columns: &[&str]) -> Vec<String> {
-    columns.iter().map(|c| c.to_string()).collect()
-}
-
 impl FileSink {
     fn create(dir: &Path) -> Result<Self, OutputError> {
         let formats = Formats::default();
         let plot = || Decimated::new(4000);
         Ok(Self {
-            bearing: TableWriter::create(dir, "bearing", &names(&BEARING_COLUMNS), formats)?,
-            rollers: TableWriter::create(dir, "rollers", &names(&ROLLER_COLUMNS), formats)?,
+            bearing: TableWriter::create(dir, "bearing", &column_names(&BEARING_COLUMNS), formats)?,
+            rollers: TableWriter::create(dir, "rollers", &column_names(&ROLLER_COLUMNS), formats)?,
             revolutions: TableWriter::create(
                 dir,
                 "revolutions",
-                &names(&REVOLUTION_COLUMNS),
+                &column_names(&REVOLUTION_COLUMNS),
                 formats,
             )?,
             row: Vec::with_capacity(ROLLER_COLUMNS.len()),
@@ -336,50 +269,12 @@ impl FileSink {
 
 impl OutputSink for FileSink {
     fn sample(&mut self, t: f64, s: &Snapshot) {
-        let bearing_row = [
-            t,
-            s.inner_ring_speed_rad_s,
-            s.inner_ring_center_m[0],
-            s.inner_ring_center_m[1],
-            s.cage_center_m[0],
-            s.cage_center_m[1],
-            s.cage_angle_rad,
-            s.cage_speed_rad_s,
-            s.epicyclic_cage_speed_rad_s,
-            s.cage_slip,
-            s.cage_land_force_n,
-            s.cage_land_power_w,
-        ];
-        let result = self.bearing.write_row(&bearing_row);
+        bearing_row(s, &mut self.row);
+        let result = self.bearing.write_row(&self.row);
         self.keep(result);
         let r = &s.rollers;
         for j in 0..r.azimuth_rad.len() {
-            self.row.clear();
-            self.row.extend_from_slice(&[
-                t,
-                (j + 1) as f64,
-                r.azimuth_rad[j],
-                r.radius_m[j],
-                r.orbital_speed_rad_s[j],
-                r.spin_speed_rad_s[j],
-                r.yaw_rad[j],
-                r.pitch_rad[j],
-            ]);
-            for c in [&r.inner, &r.outer] {
-                self.row.extend_from_slice(&[
-                    c.force_n[j],
-                    c.sliding_speed_m_s[j],
-                    c.rolling_speed_m_s[j],
-                    c.slide_to_roll[j],
-                    c.film_thickness_m[j],
-                    c.lambda[j],
-                    c.traction_coefficient[j],
-                    c.friction_power_w[j],
-                ]);
-            }
-            self.row.push(r.cage_bar_force_n[j]);
-            self.row.push(r.rib_force_n[j]);
-            self.row.push(r.pocket_face_force_n[j]);
+            roller_row(s, j, &mut self.row);
             let result = self.rollers.write_row(&self.row);
             self.keep(result);
         }
@@ -400,28 +295,8 @@ impl OutputSink for FileSink {
     }
 
     fn revolution(&mut self, v: &RevolutionSummary) {
-        let row = [
-            v.revolution as f64,
-            v.start_s,
-            v.end_s,
-            v.cage_speed_mean_rad_s,
-            v.cage_slip_mean,
-            v.max_inner_contact_force_n,
-            v.max_outer_contact_force_n,
-            v.max_roller_cage_force_n,
-            v.max_cage_land_force_n,
-            v.max_roller_end_rib_force_n,
-            v.max_roller_end_cage_force_n,
-            v.max_inner_sliding_speed_m_s,
-            v.max_relative_slip,
-            v.scuffing_margin,
-            v.whirl_ratio,
-            f64::from(u8::from(v.precession)),
-            v.cage_orbit_radius_m,
-            v.friction_power_mean_w,
-            f64::from(u8::from(v.steady)),
-        ];
-        let result = self.revolutions.write_row(&row);
+        revolution_row(v, &mut self.row);
+        let result = self.revolutions.write_row(&self.row);
         self.keep(result);
     }
 }
@@ -440,40 +315,6 @@ impl OutputSink for Sinks {
             f.revolution(v);
         }
     }
-}
-
-/// The JSON answer of `rolldyn simulate --json` (fields of the issue, SI units).
-#[derive(Serialize)]
-pub(crate) struct Answer<'a> {
-    model: &'a str,
-    cage_slip_mean: f64,
-    cage_speed_mean_rad_s: f64,
-    epicyclic_cage_speed_rad_s: f64,
-    max_inner_contact_force_n: f64,
-    max_outer_contact_force_n: f64,
-    max_roller_cage_force_n: f64,
-    max_cage_land_force_n: f64,
-    max_roller_end_rib_force_n: f64,
-    max_roller_end_cage_force_n: f64,
-    max_inner_sliding_speed_m_s: f64,
-    max_relative_slip: f64,
-    min_scuffing_margin: f64,
-    whirl_ratio: f64,
-    precession: bool,
-    cage_orbit_radius_m: f64,
-    simulated_time_s: f64,
-    wall_time_s: f64,
-    steps: u64,
-    rejected_steps: u64,
-    rhs_evaluations: u64,
-    /// the kinds of state component that limited the step most often, with their share of the
-    /// steps (`rolldyn simulate` only)
-    #[serde(skip_serializing_if = "Vec::is_empty")]
-    step_limited_by: Vec<StepLimit>,
-    output_folder: Option<String>,
-    /// the summary's named figures, for the non-finite policy
-    #[serde(skip)]
-    columns: [(&'static str, f64); 20],
 }
 
 /// A kind of state component and its share of the steps it limited.
@@ -497,51 +338,34 @@ pub(crate) fn step_limits(counts: &[(String, u64)]) -> Vec<StepLimit> {
         .collect()
 }
 
-impl<'a> Answer<'a> {
-    /// The answer as JSON under the non-finite policy of docs/outputs.md.
-    pub(crate) fn to_json(&self) -> serde_json::Value {
-        let mut value = serde_json::to_value(self).unwrap_or_default();
-        if let Some(object) = value.as_object_mut() {
-            rolldyn_output::mark_non_finite(object, &self.columns, |key, v| {
-                non_finite_reason(key, v).to_string()
-            });
-        }
-        value
+/// The JSON answer of `rolldyn simulate --json`: the model, every figure of the run summary
+/// (`RunSummary::fields`, SI units), the step limits (when counted) and the output folder, under
+/// the non-finite policy of docs/outputs.md.
+fn answer_json(
+    model: &str,
+    s: &RunSummary,
+    step_limited_by: &[StepLimit],
+    output_folder: Option<String>,
+) -> serde_json::Value {
+    let mut object = serde_json::Map::new();
+    object.insert("model".into(), model.into());
+    for (name, value) in s.fields() {
+        let value = match value {
+            SummaryValue::Real(v) => v.into(),
+            SummaryValue::Count(n) => n.into(),
+            SummaryValue::Flag(b) => b.into(),
+        };
+        object.insert(name.into(), value);
     }
-
-    pub(crate) fn new(
-        model: &'a str,
-        s: &RunSummary,
-        step_limited_by: Vec<StepLimit>,
-        output_folder: Option<String>,
-    ) -> Self {
-        Self {
-            model,
-            cage_slip_mean: s.cage_slip_mean,
-            cage_speed_mean_rad_s: s.cage_speed_mean_rad_s,
-            epicyclic_cage_speed_rad_s: s.epicyclic_cage_speed_rad_s,
-            max_inner_contact_force_n: s.max_inner_contact_force_n,
-            max_outer_contact_force_n: s.max_outer_contact_force_n,
-            max_roller_cage_force_n: s.max_roller_cage_force_n,
-            max_cage_land_force_n: s.max_cage_land_force_n,
-            max_roller_end_rib_force_n: s.max_roller_end_rib_force_n,
-            max_roller_end_cage_force_n: s.max_roller_end_cage_force_n,
-            max_inner_sliding_speed_m_s: s.max_inner_sliding_speed_m_s,
-            max_relative_slip: s.max_relative_slip,
-            min_scuffing_margin: s.min_scuffing_margin,
-            whirl_ratio: s.whirl_ratio,
-            precession: s.precession,
-            cage_orbit_radius_m: s.cage_orbit_radius_m,
-            simulated_time_s: s.simulated_time_s,
-            wall_time_s: s.wall_time_s,
-            steps: s.steps,
-            rejected_steps: s.rejected_steps,
-            rhs_evaluations: s.rhs_evaluations,
-            step_limited_by,
-            output_folder,
-            columns: s.columns(),
-        }
+    if !step_limited_by.is_empty() {
+        let limits = serde_json::to_value(step_limited_by).unwrap_or_default();
+        object.insert("step_limited_by".into(), limits);
     }
+    object.insert("output_folder".into(), output_folder.into());
+    rolldyn_output::mark_non_finite(&mut object, &s.columns(), |key, v| {
+        non_finite_reason(key, v).to_string()
+    });
+    serde_json::Value::Object(object)
 }
 
 impl Duration {
@@ -626,15 +450,12 @@ pub fn run(args: Args) -> Result<(), Failure> {
     written?;
     let limits = step_limits(&sim.step_limits());
     if args.json {
-        return print_json(
-            &Answer::new(
-                model.bearing.name(),
-                &summary,
-                limits,
-                dir.map(|d| d.display().to_string()),
-            )
-            .to_json(),
-        );
+        return print_json(&answer_json(
+            model.bearing.name(),
+            &summary,
+            &limits,
+            dir.map(|d| d.display().to_string()),
+        ));
     }
     print_summary(model.bearing.name(), &summary, &limits);
     Ok(())
@@ -737,5 +558,5 @@ fn non_finite_reason(key: &str, value: f64) -> &'static str {
 
 /// The JSON form of a run summary (used by `demo`).
 pub fn summary_json(model: &str, s: &RunSummary) -> serde_json::Value {
-    Answer::new(model, s, Vec::new(), None).to_json()
+    answer_json(model, s, &[], None)
 }
