@@ -240,92 +240,143 @@ pub(crate) fn deepest_within(
     if reach.bound(face, end) <= 0.0 {
         return None;
     }
-    let s = face.side;
-    let big_a = body.axis;
-    let p = axpy(c, s * end.half_length, a);
-    let dp = sub(p, body.o);
-    let zeta_p = dot(dp, big_a);
-    let delta0 = s * (zeta_p - face.zeta);
-    let cos_a = reach.cos_a;
-    let r = end.radius;
-    let radial = axpy(dp, -zeta_p, big_a);
-    let rho_p = norm(radial);
-    if rho_p <= 0.0 {
-        return None;
+    let frame = EndOnFace::new(face, end, body, reach, c, a)?;
+    let (x, y, d) = if frame.cs == 0.0 && face.curvature == 0.0 {
+        frame.deepest_flat()
+    } else {
+        frame.deepest_curved()
+    };
+    frame.contact(x, y, d)
+}
+
+/// The roller end disc seen from one face: the end centre P, the radial direction e_ρ of P
+/// from the body axis A, the in-disc basis (e1 ⟂ a in the (e_ρ, a) plane, e2 = a × e1) and
+/// the approach δ(x, y) of the disc point P + x e1 + y e2 to the face, linearised in the
+/// tilt (p, q) with the end's spherical crown.
+struct EndOnFace<'a> {
+    face: &'a FaceGeometry,
+    /// end disc radius r_e
+    r: f64,
+    /// spherical curvature of the end face
+    cs: f64,
+    /// |cos ∠(a, A)|, bounded away from zero
+    ka: f64,
+    /// body axis A
+    big_a: V3,
+    p: V3,
+    e_r: V3,
+    e1: V3,
+    e2: V3,
+    /// ρ_P, radius of P from the body axis
+    rho_p: f64,
+    /// |e_ρ ⟂ a|: radial growth of ρ per unit x
+    beta: f64,
+    /// axial approach of P
+    delta0: f64,
+    /// tilt slopes of the approach along e1, e2
+    p_lin: f64,
+    q_lin: f64,
+    /// the x interval where the disc overlaps the face band
+    xa: f64,
+    xb: f64,
+    flat_face: bool,
+}
+
+impl<'a> EndOnFace<'a> {
+    /// The frame, or `None` when P is on the body axis, the end is tilted past 60° from the
+    /// radial plane, or the disc misses the face band radially.
+    fn new(
+        face: &'a FaceGeometry,
+        end: &EndGeometry,
+        body: &BodyKin,
+        reach: &AxialReach,
+        c: V3,
+        a: V3,
+    ) -> Option<Self> {
+        let s = face.side;
+        let big_a = body.axis;
+        let p = axpy(c, s * end.half_length, a);
+        let dp = sub(p, body.o);
+        let zeta_p = dot(dp, big_a);
+        let delta0 = s * (zeta_p - face.zeta);
+        let r = end.radius;
+        let radial = axpy(dp, -zeta_p, big_a);
+        let rho_p = norm(radial);
+        if rho_p <= 0.0 {
+            return None;
+        }
+        let e_r = scale(radial, 1.0 / rho_p);
+        let e1_raw = perp(e_r, a);
+        let beta = norm(e1_raw);
+        if beta < 0.5 {
+            return None;
+        }
+        let e1 = scale(e1_raw, 1.0 / beta);
+        let e2 = cross(a, e1);
+        let xa = (-r).max((face.rho_lo - rho_p) / beta);
+        let xb = r.min((face.rho_hi - rho_p) / beta);
+        if xa >= xb {
+            return None;
+        }
+        Some(Self {
+            face,
+            r,
+            cs: end.sphere_curvature,
+            ka: reach.cos_a.abs().max(1e-6),
+            big_a,
+            p,
+            e_r,
+            e1,
+            e2,
+            rho_p,
+            beta,
+            delta0,
+            p_lin: s * dot(e1, big_a),
+            q_lin: s * dot(e2, big_a),
+            xa,
+            xb,
+            flat_face: face.slope == 0.0 && face.curvature == 0.0,
+        })
     }
-    let e_r = scale(radial, 1.0 / rho_p);
-    let e1_raw = perp(e_r, a);
-    let beta = norm(e1_raw);
-    if beta < 0.5 {
-        return None;
-    }
-    let e1 = scale(e1_raw, 1.0 / beta);
-    let e2 = cross(a, e1);
-    let p_lin = s * dot(e1, big_a);
-    let q_lin = s * dot(e2, big_a);
-    let ka = cos_a.abs().max(1e-6);
-    let xa = (-r).max((face.rho_lo - rho_p) / beta);
-    let xb = r.min((face.rho_hi - rho_p) / beta);
-    if xa >= xb {
-        return None;
-    }
-    let cs = end.sphere_curvature;
-    let flat_face = face.slope == 0.0 && face.curvature == 0.0;
-    // best y and the approach for a fixed x
-    let eval = |x: f64| -> (f64, f64) {
+
+    /// The best y and the approach for a fixed x: `(δ, y)`.
+    #[inline]
+    fn approach(&self, x: f64) -> (f64, f64) {
+        let (face, r, rho_p, cs, ka) = (self.face, self.r, self.rho_p, self.cs, self.ka);
         let disc = (r * r - x * x).max(0.0).sqrt();
-        let band = (2.0 * rho_p * (face.rho_hi - rho_p - beta * x))
+        let band = (2.0 * rho_p * (face.rho_hi - rho_p - self.beta * x))
             .max(0.0)
             .sqrt();
         let ymax = disc.min(band);
         let y = if cs > 0.0 {
-            (q_lin / (cs * ka)).clamp(-ymax, ymax)
-        } else if q_lin >= 0.0 {
+            (self.q_lin / (cs * ka)).clamp(-ymax, ymax)
+        } else if self.q_lin >= 0.0 {
             ymax
         } else {
             -ymax
         };
         // the face's protrusion at the point (zero on a flat face: no division on that path)
-        let prot = if flat_face {
+        let prot = if self.flat_face {
             0.0
         } else {
-            let u = rho_p + beta * x + y * y / (2.0 * rho_p) - face.rho_c;
+            let u = rho_p + self.beta * x + y * y / (2.0 * rho_p) - face.rho_c;
             face.slope * u - 0.5 * face.curvature * u * u
         };
-        let d = delta0 + p_lin * x + q_lin * y - 0.5 * cs * ka * (x * x + y * y) + prot;
+        let d =
+            self.delta0 + self.p_lin * x + self.q_lin * y - 0.5 * cs * ka * (x * x + y * y) + prot;
         (d, y)
-    };
-    // contact point, normal and margins of the deepest point (x, y) with approach d
-    let finish = |x: f64, y: f64, d: f64| -> Option<Deepest> {
-        if d <= 0.0 {
-            return None;
-        }
-        let rho = rho_p + beta * x + y * y / (2.0 * rho_p);
-        let point = axpy(axpy(p, x, e1), y, e2);
-        // normal: −∇δ = −(s A + prot'(ρ) e_ρ)
-        let u = rho - face.rho_c;
-        let dprot = face.slope - face.curvature * u;
-        let grad = axpy(scale(big_a, s), dprot, e_r);
-        let normal = scale(grad, -1.0 / norm(grad));
-        let margin = (r - (x * x + y * y).sqrt())
-            .min(face.rho_hi - rho)
-            .min(rho - face.rho_lo);
-        Some(Deepest {
-            delta: d,
-            point,
-            normal,
-            rho,
-            margin,
-        })
-    };
-    if cs == 0.0 && face.curvature == 0.0 {
-        // flat end on a flat or conical face: f(x) = δ₀ + p'x + |q| min(D(x), B(x)) with the
-        // disc half-chord D = √(r² − x²) and the band half-chord B = √(2ρ_P(Δ − βx)), concave;
-        // its maximum is at a stationary point of either piece, at their kink or at an end of
-        // the interval — evaluate all candidates (each is feasible, so the best is exact).
-        let pp = p_lin + face.slope * beta;
-        let qa = q_lin.abs();
-        let dlt = face.rho_hi - rho_p;
+    }
+
+    /// Flat end on a flat or conical face: f(x) = δ₀ + p'x + |q| min(D(x), B(x)) with the disc
+    /// half-chord D = √(r² − x²) and the band half-chord B = √(2ρ_P(Δ − βx)), concave; its
+    /// maximum is at a stationary point of either piece, at their kink or at an end of the
+    /// interval — evaluate all candidates (each is feasible, so the best is exact). Returns
+    /// `(x, y, δ)`.
+    fn deepest_flat(&self) -> (f64, f64, f64) {
+        let (r, rho_p, beta, xa, xb) = (self.r, self.rho_p, self.beta, self.xa, self.xb);
+        let pp = self.p_lin + self.face.slope * beta;
+        let qa = self.q_lin.abs();
+        let dlt = self.face.rho_hi - rho_p;
         let mut cand = [xa, xb, xa, xa, xa];
         let hyp = (pp * pp + qa * qa).sqrt();
         if hyp > 0.0 {
@@ -343,39 +394,74 @@ pub(crate) fn deepest_within(
         let (mut x, mut d, mut y) = (xa, f64::NEG_INFINITY, 0.0);
         for xc in cand {
             let xc = xc.clamp(xa, xb);
-            let (dc, yc) = eval(xc);
+            let (dc, yc) = self.approach(xc);
             if dc > d {
                 (x, d, y) = (xc, dc, yc);
             }
         }
-        return finish(x, y, d);
+        (x, y, d)
     }
-    // bracket: best of a few samples (exact for concave functions), then golden section
-    const SAMPLES: usize = 4;
-    let h = (xb - xa) / SAMPLES as f64;
-    let mut best = 0;
-    let mut best_d = f64::NEG_INFINITY;
-    for k in 0..=SAMPLES {
-        let d = eval(xa + h * k as f64).0;
-        if d > best_d {
-            best_d = d;
-            best = k;
+
+    /// Crowned end or curved face: bracket the maximum by the best of a few samples (exact for
+    /// concave functions), refine by golden section, and compare with the interval ends (a
+    /// maximum on the band edge). Returns `(x, y, δ)`.
+    fn deepest_curved(&self) -> (f64, f64, f64) {
+        const SAMPLES: usize = 4;
+        let (xa, xb) = (self.xa, self.xb);
+        let h = (xb - xa) / SAMPLES as f64;
+        let mut best = 0;
+        let mut best_d = f64::NEG_INFINITY;
+        for k in 0..=SAMPLES {
+            let d = self.approach(xa + h * k as f64).0;
+            if d > best_d {
+                best_d = d;
+                best = k;
+            }
         }
-    }
-    let lo = xa + h * best.saturating_sub(1) as f64;
-    let hi = (xa + h * (best + 1) as f64).min(xb);
-    let search = golden_section_max(|x| eval(x).0, lo, hi, &GoldenSectionOptions::default());
-    let (lo, hi) = search.bracket;
-    let mut x = 0.5 * (lo + hi);
-    let (mut d, mut y) = eval(x);
-    // the bracket ends themselves (a maximum on the band edge)
-    for xe in [xa, xb] {
-        let (de, ye) = eval(xe);
-        if de > d {
-            (x, d, y) = (xe, de, ye);
+        let lo = xa + h * best.saturating_sub(1) as f64;
+        let hi = (xa + h * (best + 1) as f64).min(xb);
+        let search = golden_section_max(
+            |x| self.approach(x).0,
+            lo,
+            hi,
+            &GoldenSectionOptions::default(),
+        );
+        let (lo, hi) = search.bracket;
+        let mut x = 0.5 * (lo + hi);
+        let (mut d, mut y) = self.approach(x);
+        for xe in [xa, xb] {
+            let (de, ye) = self.approach(xe);
+            if de > d {
+                (x, d, y) = (xe, de, ye);
+            }
         }
+        (x, y, d)
     }
-    finish(x, y, d)
+
+    /// Contact point, normal and margins of the deepest point (x, y) with approach `d`.
+    fn contact(&self, x: f64, y: f64, d: f64) -> Option<Deepest> {
+        if d <= 0.0 {
+            return None;
+        }
+        let face = self.face;
+        let rho = self.rho_p + self.beta * x + y * y / (2.0 * self.rho_p);
+        let point = axpy(axpy(self.p, x, self.e1), y, self.e2);
+        // normal: −∇δ = −(s A + prot'(ρ) e_ρ)
+        let u = rho - face.rho_c;
+        let dprot = face.slope - face.curvature * u;
+        let grad = axpy(scale(self.big_a, face.side), dprot, self.e_r);
+        let normal = scale(grad, -1.0 / norm(grad));
+        let margin = (self.r - (x * x + y * y).sqrt())
+            .min(face.rho_hi - rho)
+            .min(rho - face.rho_lo);
+        Some(Deepest {
+            delta: d,
+            point,
+            normal,
+            rho,
+            margin,
+        })
+    }
 }
 
 /// Result of one roller-end contact.
