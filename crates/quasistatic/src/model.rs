@@ -19,7 +19,7 @@ use crate::drag::CageDragGeometry;
 use crate::error::QsError;
 use crate::friction::{BarLaw, bar_law, raceway_model};
 use crate::kinematics::{KinematicCase, Kinematics, cage_slip};
-use crate::load_distribution::{LoadCase, LoadDistribution, LoadModel};
+use crate::load_distribution::{LoadCase, LoadDistribution, LoadModel, RollerLoad};
 use crate::operating_geometry::{OperatingGeometry, operating_geometry};
 use crate::options::{LandMomentArm, QuasiStaticOptions};
 use crate::results::{
@@ -679,150 +679,32 @@ fn finish(
     start: Instant,
 ) -> Result<SkidResult, QsError> {
     let cond = setup.cond;
-    let opts = setup.opts;
     let ld = ws
         .load
         .ok_or_else(|| QsError::InvalidInput("no load distribution".into()))?;
-    let env = setup.env(cage_speed);
-    let kin = env.kin;
-    let reference_outer = kin.reference_is_outer(opts.slip_reference);
-    let u_min = opts.min_rolling_speed_m_s;
-    let mut warnings = setup.warnings.clone();
-
-    // scuffing margins, computed once per distinct contact state
-    let search = SlipSearch::default();
-    let mut scuff_cache: Vec<(ContactState, Option<f64>)> = Vec::new();
-    let mut scuff = |state: &ContactState, model: &TractionModel| -> Option<f64> {
-        if !opts.scuffing || state.normal_force_n <= 0.0 || state.rolling_speed_m_s.abs() < u_min {
-            return None;
-        }
-        if let Some((_, v)) = scuff_cache.iter().find(|(s, _)| s == state) {
-            return *v;
-        }
-        let v = match critical_slip(state, model, &search) {
-            Ok(CriticalSlip::Maximum { slip, .. }) => Some(slip),
-            _ => None,
-        };
-        scuff_cache.push((*state, v));
-        v
-    };
-
-    let mut rollers = Vec::with_capacity(ld.rollers.len());
-    let mut power = PowerBreakdown::default();
-    let mut power_in = 0.0;
-    let mut max_roller_moment_rel = 0.0_f64;
-    let mut max_pressure = 0.0_f64;
-    for (j, r) in ld.rollers.iter().enumerate() {
-        let ev = ws.evals[j].ok_or_else(|| QsError::InvalidInput("roller not solved".into()))?;
-        let mut inner = contact_result(
-            ev.inner.as_ref(),
-            &ev.inner_state,
-            r.inner_effective_length_m,
-            u_min,
-        );
-        let mut outer = contact_result(
-            ev.outer.as_ref(),
-            &ev.outer_state,
-            r.outer_effective_length_m,
-            u_min,
-        );
-        for (c, st) in [(&mut inner, &ev.inner_state), (&mut outer, &ev.outer_state)] {
-            if c.normal_force_n > 0.0 {
-                c.critical_slip = scuff(st, &setup.traction);
-                let s = c.slide_roll_ratio.abs();
-                c.scuffing_margin = c.critical_slip.and_then(|sc| (s > 0.0).then(|| sc / s));
-                max_pressure = max_pressure.max(c.max_pressure_pa);
-            }
-        }
-        let v_bar = ev.spin * setup.r_w;
-        let q_bar = ev.push.abs();
-        let bar = BarResult {
-            normal_force_n: q_bar,
-            push_n: ev.push,
-            friction_coefficient: ev.bar_mu,
-            sliding_speed_m_s: v_bar,
-            power_w: (ev.bar_mu * q_bar * v_bar).abs(),
-        };
-        let rib_power = (ev.rib_force * ev.rib_sliding).abs();
-        let pocket_power = (ev.pocket_moment * ev.spin).abs();
-        let rr_power = (ev.rolling_moment * ev.spin).abs();
-        let roller_power =
-            inner.power_w + outer.power_w + bar.power_w + rib_power + pocket_power + rr_power;
-        power.inner_raceways_w += inner.power_w;
-        power.outer_raceways_w += outer.power_w;
-        power.cage_bars_w += bar.power_w;
-        power.ribs_w += rib_power;
-        power.pockets_w += pocket_power;
-        power.rolling_resistance_w += rr_power;
-        power_in += ev.inner_force * setup.r_i * kin.inner_speed
-            + ev.outer_force * setup.r_o * kin.outer_speed;
-        if let Some(rib) = &setup.rib {
-            let ring = if rib.outer_ring {
-                kin.outer_speed
-            } else {
-                kin.inner_speed
-            };
-            power_in += ev.rib_force * rib.radius_m * ring;
-        }
-        let scale = setup.r_w * (r.inner_force_n + r.outer_force_n) + 1e-9;
-        max_roller_moment_rel = max_roller_moment_rel.max((ev.moment / scale).abs());
-        rollers.push(RollerResult {
-            index: j,
-            azimuth_rad: r.azimuth_rad,
-            zone: if r.loaded {
-                Zone::Loaded
-            } else {
-                Zone::Unloaded
-            },
-            spin_rad_s: ev.spin,
-            slip: kin.roller_slip(ev.spin, opts.slip_reference),
-            centrifugal_force_n: r.centrifugal_force_n,
-            tilt_rad: r.roller_tilt_rad,
-            inner,
-            outer,
-            bar,
-            rib_force_n: ev.rib_force,
-            rib_power_w: rib_power,
-            pocket_moment_n_m: ev.pocket_moment,
-            pocket_power_w: pocket_power,
-            rolling_resistance_moment_n_m: ev.rolling_moment,
-            rolling_resistance_power_w: rr_power,
-            power_w: roller_power,
-            moment_residual_n_m: ev.moment,
-        });
-    }
+    let kin = setup.kinematics(cage_speed);
+    let reference_outer = kin.reference_is_outer(setup.opts.slip_reference);
+    let RollerSums {
+        rollers,
+        mut power,
+        power_in,
+        max_roller_moment_rel,
+        max_pressure,
+    } = roller_results(setup, &kin, &ld, &ws.evals)?;
     let bal = ws.balance;
     power.cage_land_w = bal.land_power_w;
     power.drag_w = bal.drag.power_w;
-    power_in += bal.land_torque_n_m * setup.land_speed;
-    if bal.land_saturated {
-        warnings.push(
-            "cage land: the hydrodynamic capacity of the short-bearing film is exceeded \
-             (eccentricity clamped)"
-                .into(),
-        );
-    }
+    let power_in = power_in + bal.land_torque_n_m * setup.land_speed;
     let c0 = static_load_rating(setup.bearing);
-    if cond.radial_load_n > c0 {
-        warnings.push(format!(
-            "radial load {:.0} N exceeds the basic static load rating C0r = {:.0} N (ISO 76)",
-            cond.radial_load_n, c0
-        ));
-    }
-    if max_pressure > 4.0e9 {
-        warnings.push(format!(
-            "maximum Hertz pressure {:.0} MPa exceeds the 4000 MPa of the ISO 76 static rating",
-            max_pressure * 1e-6
-        ));
-    }
+    let warnings = point_warnings(setup, &bal, max_pressure, c0);
     let fr = cond.radial_load_n;
     let force_res = ld.force_residual_n[0].hypot(ld.force_residual_n[1]);
     let max_load = ld.max_inner_load_n.max(ld.max_outer_load_n);
-    let friction_model = match &setup.traction.config().law {
-        FrictionLaw::Seed001(_) => "seed 001 (asperity fraction + film shear + Blok flash)",
-        FrictionLaw::Lubricated(_) => "seed 000 (Muraki/mixed (1.3))",
-        FrictionLaw::TwoLevel(_) => "two-level",
-    };
+    let min_scuffing_margin = rollers
+        .iter()
+        .flat_map(|x| [x.inner.scuffing_margin, x.outer.scuffing_margin])
+        .flatten()
+        .reduce(f64::min);
     Ok(SkidResult {
         kinematic_case: KinematicCase::of(cond.inner_speed_rad_s, cond.outer_speed_rad_s),
         inner_speed_rad_s: cond.inner_speed_rad_s,
@@ -845,7 +727,7 @@ fn finish(
         power_loss_w: power.total(),
         power_input_w: power_in,
         power,
-        min_scuffing_margin: None,
+        min_scuffing_margin,
         static_load_rating_n: c0,
         solve_time_s: start.elapsed().as_secs_f64(),
         iterations: Iterations {
@@ -860,19 +742,214 @@ fn finish(
             force_balance_relative: if fr > 0.0 { force_res / fr } else { force_res },
             roller_radial_balance_n: ld.roller_residual_n,
         },
-        friction_model,
+        friction_model: friction_model_name(&setup.traction),
         cage_land_model: land_model.name(),
         warnings,
         load_distribution: ld,
     })
-    .map(|mut r| {
-        r.min_scuffing_margin = r
-            .rollers
-            .iter()
-            .flat_map(|x| [x.inner.scuffing_margin, x.outer.scuffing_margin])
-            .flatten()
-            .reduce(f64::min);
-        r.solve_time_s = start.elapsed().as_secs_f64();
-        r
-    })
+}
+
+/// Per-roller results of the final state and their sums over the bearing.
+struct RollerSums {
+    rollers: Vec<RollerResult>,
+    /// Contact powers (the cage land and drag are added by the caller), W.
+    power: PowerBreakdown,
+    /// Power delivered by the rings to the rollers (raceways and rib), W.
+    power_in: f64,
+    /// Largest roller moment residual relative to `R_w (Q_i + Q_o)`.
+    max_roller_moment_rel: f64,
+    /// Largest Hertz pressure of the loaded raceway contacts, Pa.
+    max_pressure: f64,
+}
+
+/// Results of every roller at the final state `evals` of the load distribution `ld`, with
+/// their scuffing margins, powers and residuals summed over the bearing.
+fn roller_results(
+    setup: &Setup<'_>,
+    kin: &Kinematics,
+    ld: &LoadDistribution,
+    evals: &[Option<RollerEval>],
+) -> Result<RollerSums, QsError> {
+    let mut slips = CriticalSlips::new(setup.opts);
+    let mut sums = RollerSums {
+        rollers: Vec::with_capacity(ld.rollers.len()),
+        power: PowerBreakdown::default(),
+        power_in: 0.0,
+        max_roller_moment_rel: 0.0,
+        max_pressure: 0.0,
+    };
+    for (j, r) in ld.rollers.iter().enumerate() {
+        let ev = evals[j].ok_or_else(|| QsError::InvalidInput("roller not solved".into()))?;
+        let roller = roller_result(setup, kin, j, r, &ev, &mut slips);
+        for c in [&roller.inner, &roller.outer] {
+            if c.normal_force_n > 0.0 {
+                sums.max_pressure = sums.max_pressure.max(c.max_pressure_pa);
+            }
+        }
+        let power = &mut sums.power;
+        power.inner_raceways_w += roller.inner.power_w;
+        power.outer_raceways_w += roller.outer.power_w;
+        power.cage_bars_w += roller.bar.power_w;
+        power.ribs_w += roller.rib_power_w;
+        power.pockets_w += roller.pocket_power_w;
+        power.rolling_resistance_w += roller.rolling_resistance_power_w;
+        sums.power_in += ev.inner_force * setup.r_i * kin.inner_speed
+            + ev.outer_force * setup.r_o * kin.outer_speed;
+        if let Some(rib) = &setup.rib {
+            let ring = if rib.outer_ring {
+                kin.outer_speed
+            } else {
+                kin.inner_speed
+            };
+            sums.power_in += ev.rib_force * rib.radius_m * ring;
+        }
+        let scale = setup.r_w * (r.inner_force_n + r.outer_force_n) + 1e-9;
+        sums.max_roller_moment_rel = sums.max_roller_moment_rel.max((ev.moment / scale).abs());
+        sums.rollers.push(roller);
+    }
+    Ok(sums)
+}
+
+/// Result of roller `j` (load `r`, final state `ev`): raceway contacts with scuffing margins,
+/// cage bar, rib, pocket and rolling-resistance powers.
+fn roller_result(
+    setup: &Setup<'_>,
+    kin: &Kinematics,
+    j: usize,
+    r: &RollerLoad,
+    ev: &RollerEval,
+    slips: &mut CriticalSlips<'_>,
+) -> RollerResult {
+    let u_min = setup.opts.min_rolling_speed_m_s;
+    let mut inner = contact_result(
+        ev.inner.as_ref(),
+        &ev.inner_state,
+        r.inner_effective_length_m,
+        u_min,
+    );
+    let mut outer = contact_result(
+        ev.outer.as_ref(),
+        &ev.outer_state,
+        r.outer_effective_length_m,
+        u_min,
+    );
+    for (c, st) in [(&mut inner, &ev.inner_state), (&mut outer, &ev.outer_state)] {
+        if c.normal_force_n > 0.0 {
+            c.critical_slip = slips.of(st, &setup.traction);
+            let s = c.slide_roll_ratio.abs();
+            c.scuffing_margin = c.critical_slip.and_then(|sc| (s > 0.0).then(|| sc / s));
+        }
+    }
+    let v_bar = ev.spin * setup.r_w;
+    let q_bar = ev.push.abs();
+    let bar = BarResult {
+        normal_force_n: q_bar,
+        push_n: ev.push,
+        friction_coefficient: ev.bar_mu,
+        sliding_speed_m_s: v_bar,
+        power_w: (ev.bar_mu * q_bar * v_bar).abs(),
+    };
+    let rib_power = (ev.rib_force * ev.rib_sliding).abs();
+    let pocket_power = (ev.pocket_moment * ev.spin).abs();
+    let rr_power = (ev.rolling_moment * ev.spin).abs();
+    let roller_power =
+        inner.power_w + outer.power_w + bar.power_w + rib_power + pocket_power + rr_power;
+    RollerResult {
+        index: j,
+        azimuth_rad: r.azimuth_rad,
+        zone: if r.loaded {
+            Zone::Loaded
+        } else {
+            Zone::Unloaded
+        },
+        spin_rad_s: ev.spin,
+        slip: kin.roller_slip(ev.spin, setup.opts.slip_reference),
+        centrifugal_force_n: r.centrifugal_force_n,
+        tilt_rad: r.roller_tilt_rad,
+        inner,
+        outer,
+        bar,
+        rib_force_n: ev.rib_force,
+        rib_power_w: rib_power,
+        pocket_moment_n_m: ev.pocket_moment,
+        pocket_power_w: pocket_power,
+        rolling_resistance_moment_n_m: ev.rolling_moment,
+        rolling_resistance_power_w: rr_power,
+        power_w: roller_power,
+        moment_residual_n_m: ev.moment,
+    }
+}
+
+/// Critical slips of the friction curve (scuffing margins, SPEC §4.8), computed once per
+/// distinct contact state.
+struct CriticalSlips<'a> {
+    opts: &'a QuasiStaticOptions,
+    search: SlipSearch,
+    cache: Vec<(ContactState, Option<f64>)>,
+}
+
+impl<'a> CriticalSlips<'a> {
+    fn new(opts: &'a QuasiStaticOptions) -> Self {
+        Self {
+            opts,
+            search: SlipSearch::default(),
+            cache: Vec::new(),
+        }
+    }
+
+    /// Critical slip of a loaded, rolling contact (`None` with the scuffing search switched
+    /// off or without an interior maximum of the friction curve).
+    fn of(&mut self, state: &ContactState, model: &TractionModel) -> Option<f64> {
+        let u_min = self.opts.min_rolling_speed_m_s;
+        if !self.opts.scuffing
+            || state.normal_force_n <= 0.0
+            || state.rolling_speed_m_s.abs() < u_min
+        {
+            return None;
+        }
+        if let Some((_, v)) = self.cache.iter().find(|(s, _)| s == state) {
+            return *v;
+        }
+        let v = match critical_slip(state, model, &self.search) {
+            Ok(CriticalSlip::Maximum { slip, .. }) => Some(slip),
+            _ => None,
+        };
+        self.cache.push((*state, v));
+        v
+    }
+}
+
+/// Warnings of the point: those of the setup, a saturated cage-land film, a radial load above
+/// the static load rating `c0` (N) and a Hertz pressure above the 4000 MPa of ISO 76.
+fn point_warnings(setup: &Setup<'_>, bal: &CageBalance, max_pressure: f64, c0: f64) -> Vec<String> {
+    let mut warnings = setup.warnings.clone();
+    if bal.land_saturated {
+        warnings.push(
+            "cage land: the hydrodynamic capacity of the short-bearing film is exceeded \
+             (eccentricity clamped)"
+                .into(),
+        );
+    }
+    if setup.cond.radial_load_n > c0 {
+        warnings.push(format!(
+            "radial load {:.0} N exceeds the basic static load rating C0r = {:.0} N (ISO 76)",
+            setup.cond.radial_load_n, c0
+        ));
+    }
+    if max_pressure > 4.0e9 {
+        warnings.push(format!(
+            "maximum Hertz pressure {:.0} MPa exceeds the 4000 MPa of the ISO 76 static rating",
+            max_pressure * 1e-6
+        ));
+    }
+    warnings
+}
+
+/// Name of the raceway friction law in the result.
+fn friction_model_name(traction: &TractionModel) -> &'static str {
+    match &traction.config().law {
+        FrictionLaw::Seed001(_) => "seed 001 (asperity fraction + film shear + Blok flash)",
+        FrictionLaw::Lubricated(_) => "seed 000 (Muraki/mixed (1.3))",
+        FrictionLaw::TwoLevel(_) => "two-level",
+    }
 }

@@ -76,18 +76,27 @@ enum Along {
     },
 }
 
-/// Pre-transformed kernel and work buffers for `u = f * p` on one grid.
-pub struct Convolver {
+/// Sizes and strides of one grid's convolution.
+#[derive(Debug, Clone, Copy)]
+struct Shape {
     nx: usize,
     ny: usize,
+    /// FFT length along `x`.
     nfx: usize,
+    /// Stored frequencies `nfx/2 + 1` of the real spectra.
     half: usize,
+    /// Packed row pairs `⌈ny/2⌉`.
     npairs: usize,
-    fft_x: Arc<dyn Fft<f64>>,
-    ifft_x: Arc<dyn Fft<f64>>,
     /// Row stride of `rows`: `nfx` plus a small pad so that the rows do not all map to the
     /// same cache sets (nfx is often a power of two).
     rs: usize,
+}
+
+/// Pre-transformed kernel and work buffers for `u = f * p` on one grid.
+pub struct Convolver {
+    shape: Shape,
+    fft_x: Arc<dyn Fft<f64>>,
+    ifft_x: Arc<dyn Fft<f64>>,
     /// Packed rows, `npairs × rs` (first `nfx` entries of each row used).
     rows: Vec<C64>,
     /// Separated `x` spectra, `[j][k]` (direct-y) or `[k][j]` with stride `nfy` (2-D).
@@ -100,9 +109,9 @@ pub struct Convolver {
 impl std::fmt::Debug for Convolver {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.debug_struct("Convolver")
-            .field("nx", &self.nx)
-            .field("ny", &self.ny)
-            .field("nfx", &self.nfx)
+            .field("nx", &self.shape.nx)
+            .field("ny", &self.shape.ny)
+            .field("nfx", &self.shape.nfx)
             .field("mode", &self.mode)
             .finish()
     }
@@ -198,14 +207,16 @@ impl Convolver {
             }
         };
         Self {
-            nx,
-            ny,
-            nfx,
-            half,
-            npairs,
+            shape: Shape {
+                nx,
+                ny,
+                nfx,
+                half,
+                npairs,
+                rs: nfx + 4,
+            },
             fft_x,
             ifft_x,
-            rs: nfx + 4,
             rows: vec![zero; npairs * (nfx + 4)],
             spec: vec![zero; spec_len],
             scratch: vec![zero; scratch_len],
@@ -221,7 +232,7 @@ impl Convolver {
 
     /// FFT length along `x`.
     pub fn fft_len_x(&self) -> usize {
-        self.nfx
+        self.shape.nfx
     }
 
     /// `u = f * p` on the grid (both of length `nx·ny`, x fastest). No allocation.
@@ -229,89 +240,18 @@ impl Convolver {
     /// # Panics
     /// If `p` or `u` does not have `nx·ny` entries.
     pub fn apply(&mut self, p: &[f64], u: &mut [f64]) {
-        let (nx, ny, nfx, half, rs) = (self.nx, self.ny, self.nfx, self.half, self.rs);
-        assert_eq!(p.len(), nx * ny, "pressure length");
-        assert_eq!(u.len(), nx * ny, "displacement length");
-        let zero = C64::new(0.0, 0.0);
+        let shape = self.shape;
+        assert_eq!(p.len(), shape.nx * shape.ny, "pressure length");
+        assert_eq!(u.len(), shape.nx * shape.ny, "displacement length");
+        let layout = self.spectrum_layout();
 
-        // 1. Pack rows 2m, 2m+1 into z = p_a + i p_b, zero padded to nfx.
-        for m in 0..self.npairs {
-            let z = &mut self.rows[m * rs..m * rs + nfx];
-            let a = &p[2 * m * nx..(2 * m + 1) * nx];
-            if 2 * m + 1 < ny {
-                let b = &p[(2 * m + 1) * nx..(2 * m + 2) * nx];
-                for ((zi, &ai), &bi) in z.iter_mut().zip(a).zip(b) {
-                    *zi = C64::new(ai, bi);
-                }
-            } else {
-                for (zi, &ai) in z.iter_mut().zip(a) {
-                    *zi = C64::new(ai, 0.0);
-                }
-            }
-            z[nx..].fill(zero);
-        }
-        for m in 0..self.npairs {
-            self.fft_x
-                .process_with_scratch(&mut self.rows[m * rs..m * rs + nfx], &mut self.scratch);
-        }
+        self.transform_rows(p);
+        self.separate_spectra(layout);
 
-        // 2. Separate the two real spectra (2·P_a = Z_k + conj Z_{N−k}, 2·P_b = −i(…−…)).
-        //    Layout: [j][k] (direct-y, k contiguous) or [k][j] with stride nfy (2-D, columns
-        //    contiguous for the y FFTs).
-        let (sj, sk) = match &self.along {
-            Along::DirectY { .. } => (half, 1),
-            Along::Fft2d { nfy, .. } => (1, *nfy),
-        };
-        if sk == 1 {
-            // [j][k]: pair-major loop, contiguous writes.
-            for m in 0..self.npairs {
-                let z = &self.rows[m * rs..m * rs + nfx];
-                let has_b = 2 * m + 1 < ny;
-                for k in 0..half {
-                    let zk = z[k];
-                    let zc = z[(nfx - k) % nfx].conj();
-                    self.spec[2 * m * sj + k] = zk + zc;
-                    if has_b {
-                        let d = zk - zc;
-                        self.spec[(2 * m + 1) * sj + k] = C64::new(d.im, -d.re);
-                    }
-                }
-            }
-        } else {
-            // [k][j]: frequency-major loop, contiguous writes (and zero padding j ≥ ny).
-            for k in 0..half {
-                let col = &mut self.spec[k * sk..(k + 1) * sk];
-                let kc = (nfx - k) % nfx;
-                for m in 0..self.npairs {
-                    let zk = self.rows[m * rs + k];
-                    let zc = self.rows[m * rs + kc].conj();
-                    col[2 * m] = zk + zc;
-                    if 2 * m + 1 < ny {
-                        let d = zk - zc;
-                        col[2 * m + 1] = C64::new(d.im, -d.re);
-                    }
-                }
-                col[ny..].fill(zero);
-            }
-        }
-
-        // 3. Kernel product along y.
+        // Step 3: kernel product along y.
         let out: &[C64] = match &mut self.along {
             Along::DirectY { kernel, out } => {
-                // U_j = Σ_j' K_|j−j'| ⊙ P_j' (elementwise over k: vectorisable).
-                for j in 0..ny {
-                    let o = &mut out[j * half..(j + 1) * half];
-                    o.fill(zero);
-                    for jp in 0..ny {
-                        let d = j.abs_diff(jp);
-                        let kr = &kernel[d * half..(d + 1) * half];
-                        let sp = &self.spec[jp * half..(jp + 1) * half];
-                        for ((ov, &kv), sv) in o.iter_mut().zip(kr).zip(sp) {
-                            ov.re += kv * sv.re;
-                            ov.im += kv * sv.im;
-                        }
-                    }
-                }
+                direct_y_product(shape, kernel, &self.spec, out);
                 out
             }
             Along::Fft2d {
@@ -329,51 +269,113 @@ impl Convolver {
             }
         };
 
-        // 4. Repack W = U_a + i U_b (Hermitian halves) and inverse FFT along x.
-        let repack = |ua: C64, ub: C64| {
-            (
-                C64::new(ua.re - ub.im, ua.im + ub.re),
-                C64::new(ua.re + ub.im, ub.re - ua.im),
-            )
-        };
+        repack_spectra(shape, layout, out, &mut self.rows);
+        self.inverse_rows(u);
+    }
+
+    /// Strides `(sj, sk)` of row `j` and frequency `k` in the separated spectra: `[j][k]`
+    /// (direct-y, k contiguous) or `[k][j]` with stride nfy (2-D, columns contiguous for the
+    /// y FFTs).
+    fn spectrum_layout(&self) -> (usize, usize) {
+        match &self.along {
+            Along::DirectY { .. } => (self.shape.half, 1),
+            Along::Fft2d { nfy, .. } => (1, *nfy),
+        }
+    }
+
+    /// Step 1: pack rows 2m, 2m+1 into z = p_a + i p_b, zero padded to nfx, and FFT them along x.
+    fn transform_rows(&mut self, p: &[f64]) {
+        let Shape {
+            nx,
+            ny,
+            nfx,
+            npairs,
+            rs,
+            ..
+        } = self.shape;
+        let zero = C64::new(0.0, 0.0);
+        for m in 0..npairs {
+            let z = &mut self.rows[m * rs..m * rs + nfx];
+            let a = &p[2 * m * nx..(2 * m + 1) * nx];
+            if 2 * m + 1 < ny {
+                let b = &p[(2 * m + 1) * nx..(2 * m + 2) * nx];
+                for ((zi, &ai), &bi) in z.iter_mut().zip(a).zip(b) {
+                    *zi = C64::new(ai, bi);
+                }
+            } else {
+                for (zi, &ai) in z.iter_mut().zip(a) {
+                    *zi = C64::new(ai, 0.0);
+                }
+            }
+            z[nx..].fill(zero);
+        }
+        for m in 0..npairs {
+            self.fft_x
+                .process_with_scratch(&mut self.rows[m * rs..m * rs + nfx], &mut self.scratch);
+        }
+    }
+
+    /// Step 2: separate the two real spectra (2·P_a = Z_k + conj Z_{N−k}, 2·P_b = −i(…−…))
+    /// into `spec` with the strides `(sj, sk)` of [`Self::spectrum_layout`].
+    fn separate_spectra(&mut self, (sj, sk): (usize, usize)) {
+        let Shape {
+            ny,
+            nfx,
+            half,
+            npairs,
+            rs,
+            ..
+        } = self.shape;
         if sk == 1 {
-            for m in 0..self.npairs {
-                let w = &mut self.rows[m * rs..m * rs + nfx];
+            // [j][k]: pair-major loop, contiguous writes.
+            for m in 0..npairs {
+                let z = &self.rows[m * rs..m * rs + nfx];
                 let has_b = 2 * m + 1 < ny;
                 for k in 0..half {
-                    let ua = out[2 * m * sj + k];
-                    let ub = if has_b {
-                        out[(2 * m + 1) * sj + k]
-                    } else {
-                        zero
-                    };
-                    let (lo, hi) = repack(ua, ub);
-                    w[k] = lo;
-                    if k > 0 && 2 * k < nfx {
-                        w[nfx - k] = hi;
+                    let zk = z[k];
+                    let zc = z[(nfx - k) % nfx].conj();
+                    self.spec[2 * m * sj + k] = zk + zc;
+                    if has_b {
+                        let d = zk - zc;
+                        self.spec[(2 * m + 1) * sj + k] = C64::new(d.im, -d.re);
                     }
                 }
             }
         } else {
+            // [k][j]: frequency-major loop, contiguous writes (and zero padding j ≥ ny).
             for k in 0..half {
-                let col = &out[k * sk..k * sk + ny];
-                let mirror = k > 0 && 2 * k < nfx;
-                for m in 0..self.npairs {
-                    let ua = col[2 * m];
-                    let ub = if 2 * m + 1 < ny { col[2 * m + 1] } else { zero };
-                    let (lo, hi) = repack(ua, ub);
-                    self.rows[m * rs + k] = lo;
-                    if mirror {
-                        self.rows[m * rs + nfx - k] = hi;
+                let col = &mut self.spec[k * sk..(k + 1) * sk];
+                let kc = (nfx - k) % nfx;
+                for m in 0..npairs {
+                    let zk = self.rows[m * rs + k];
+                    let zc = self.rows[m * rs + kc].conj();
+                    col[2 * m] = zk + zc;
+                    if 2 * m + 1 < ny {
+                        let d = zk - zc;
+                        col[2 * m + 1] = C64::new(d.im, -d.re);
                     }
                 }
+                col[ny..].fill(C64::new(0.0, 0.0));
             }
         }
-        for m in 0..self.npairs {
+    }
+
+    /// End of step 4: inverse FFT of the packed rows along x; row 2m of `u` is the real part,
+    /// row 2m+1 the imaginary part.
+    fn inverse_rows(&mut self, u: &mut [f64]) {
+        let Shape {
+            nx,
+            ny,
+            nfx,
+            npairs,
+            rs,
+            ..
+        } = self.shape;
+        for m in 0..npairs {
             self.ifft_x
                 .process_with_scratch(&mut self.rows[m * rs..m * rs + nfx], &mut self.scratch);
         }
-        for m in 0..self.npairs {
+        for m in 0..npairs {
             let w = &self.rows[m * rs..m * rs + nx];
             for (ui, wi) in u[2 * m * nx..(2 * m + 1) * nx].iter_mut().zip(w) {
                 *ui = wi.re;
@@ -381,6 +383,78 @@ impl Convolver {
             if 2 * m + 1 < ny {
                 for (ui, wi) in u[(2 * m + 1) * nx..(2 * m + 2) * nx].iter_mut().zip(w) {
                     *ui = wi.im;
+                }
+            }
+        }
+    }
+}
+
+/// Step 3, direct-y: U_j = Σ_j' K_|j−j'| ⊙ P_j' (elementwise over k: vectorisable),
+/// spectra `[j][k]`.
+fn direct_y_product(shape: Shape, kernel: &[f64], spec: &[C64], out: &mut [C64]) {
+    let (ny, half) = (shape.ny, shape.half);
+    for j in 0..ny {
+        let o = &mut out[j * half..(j + 1) * half];
+        o.fill(C64::new(0.0, 0.0));
+        for jp in 0..ny {
+            let d = j.abs_diff(jp);
+            let kr = &kernel[d * half..(d + 1) * half];
+            let sp = &spec[jp * half..(jp + 1) * half];
+            for ((ov, &kv), sv) in o.iter_mut().zip(kr).zip(sp) {
+                ov.re += kv * sv.re;
+                ov.im += kv * sv.im;
+            }
+        }
+    }
+}
+
+/// Step 4: repack W = U_a + i U_b (Hermitian halves) of the product spectra `out`
+/// (strides `(sj, sk)`) into the rows, ready for the inverse FFT along x.
+fn repack_spectra(shape: Shape, (sj, sk): (usize, usize), out: &[C64], rows: &mut [C64]) {
+    let Shape {
+        ny,
+        nfx,
+        half,
+        npairs,
+        rs,
+        ..
+    } = shape;
+    let zero = C64::new(0.0, 0.0);
+    let repack = |ua: C64, ub: C64| {
+        (
+            C64::new(ua.re - ub.im, ua.im + ub.re),
+            C64::new(ua.re + ub.im, ub.re - ua.im),
+        )
+    };
+    if sk == 1 {
+        for m in 0..npairs {
+            let w = &mut rows[m * rs..m * rs + nfx];
+            let has_b = 2 * m + 1 < ny;
+            for k in 0..half {
+                let ua = out[2 * m * sj + k];
+                let ub = if has_b {
+                    out[(2 * m + 1) * sj + k]
+                } else {
+                    zero
+                };
+                let (lo, hi) = repack(ua, ub);
+                w[k] = lo;
+                if k > 0 && 2 * k < nfx {
+                    w[nfx - k] = hi;
+                }
+            }
+        }
+    } else {
+        for k in 0..half {
+            let col = &out[k * sk..k * sk + ny];
+            let mirror = k > 0 && 2 * k < nfx;
+            for m in 0..npairs {
+                let ua = col[2 * m];
+                let ub = if 2 * m + 1 < ny { col[2 * m + 1] } else { zero };
+                let (lo, hi) = repack(ua, ub);
+                rows[m * rs + k] = lo;
+                if mirror {
+                    rows[m * rs + nfx - k] = hi;
                 }
             }
         }

@@ -184,6 +184,35 @@ enum Control {
     Approach(f64),
 }
 
+/// Conjugate-gradient state carried from one iteration to the next.
+struct CgState {
+    /// `G = Σ_{I_c} g²` of the previous iteration.
+    g_old: f64,
+    /// `δ`: 1 keeps the conjugacy, 0 after an overlap step (restart along `g`).
+    delta: f64,
+    /// Iterations since the last full FFT recomputation of `u`.
+    since_recompute: usize,
+}
+
+/// Step 10 applied, `p ← scale · p`, with `also(i)` run for each cell in the same pass;
+/// returns `(Σ|p − p_old|, Σ p)` for the pressure change of step 11.
+fn scale_pressure(
+    p: &mut [f64],
+    p_old: &[f64],
+    scale: f64,
+    mut also: impl FnMut(usize),
+) -> (f64, f64) {
+    let (mut dsl, mut psl) = ([0.0; L], [0.0; L]);
+    for_lanes!(p.len(), |i, l| {
+        let v = p[i] * scale;
+        p[i] = v;
+        dsl[l] += (v - p_old[i]).abs();
+        psl[l] += v;
+        also(i);
+    });
+    (dsl.iter().sum(), psl.iter().sum())
+}
+
 /// Reusable solver for one grid and material pair: kernel table and its FFT are computed once
 /// in [`BoussinesqSolver::new`]; all iteration buffers are owned, so solves do not allocate
 /// inside the iteration loop.
@@ -393,13 +422,37 @@ impl BoussinesqSolver {
         control: Control,
         guess: Option<&[f64]>,
     ) -> Result<(usize, bool, f64), BoussinesqError> {
-        let n = self.grid.len();
-        let ds = self.grid.cell_area();
-        let tol = self.options.tolerance;
-        let f00 = self.table.self_coefficient();
-
         self.n_conv = 0;
         self.initial_pressure(gap, control, guess);
+        self.balance_initial_pressure(gap, control);
+        self.conv.apply(&self.p, &mut self.u);
+        self.n_conv += 1;
+
+        if self.p.iter().all(|&v| v == 0.0) {
+            // Nothing to iterate (q = 0 or no interference).
+            return Ok((0, true, 0.0));
+        }
+        let mut cg = CgState {
+            g_old: 1.0,
+            delta: 0.0,
+            since_recompute: 0,
+        };
+        let mut eps = f64::INFINITY;
+        for iteration in 1..=self.options.max_iterations {
+            eps = self.iterate(gap, control, iteration, &mut cg)?;
+            // Step 11: convergence on the relative pressure change.
+            if eps < self.options.tolerance {
+                return Ok((iteration, true, eps));
+            }
+        }
+        Ok((self.options.max_iterations, false, eps))
+    }
+
+    /// Brings the initial pressure to the load: force mode scales it to `ΔS Σ p = Q` (a zero
+    /// field for `Q = 0`; the cells of smallest gap if the field is empty), approach mode clears
+    /// it when nothing interferes.
+    fn balance_initial_pressure(&mut self, gap: &[f64], control: Control) {
+        let ds = self.grid.cell_area();
         match control {
             Control::Force(q) => {
                 let sum: f64 = self.p.iter().sum();
@@ -429,215 +482,213 @@ impl BoussinesqSolver {
                 }
             }
         }
-        self.conv.apply(&self.p, &mut self.u);
-        self.n_conv += 1;
+    }
 
-        let mut g_old = 1.0;
-        let mut delta = 0.0;
-        let mut iterations = 0;
-        let mut converged = false;
-        let mut eps = f64::INFINITY;
-        let mut since_recompute = 0;
-        let is_force = matches!(control, Control::Force(_));
+    /// One Polonsky–Keer iteration (steps 1–10 and the pressure change of step 11); returns
+    /// the relative pressure change `ε`.
+    fn iterate(
+        &mut self,
+        gap: &[f64],
+        control: Control,
+        iteration: usize,
+        cg: &mut CgState,
+    ) -> Result<f64, BoussinesqError> {
+        let breakdown = || BoussinesqError::NumericalBreakdown { iteration };
+        let (nc, gg) = self.centred_gap(gap, control);
+        // Step 4: conjugate direction t = g + δ (G/G_old) t on I_c, 0 elsewhere.
+        let beta = if cg.g_old > 0.0 {
+            cg.delta * gg / cg.g_old
+        } else {
+            0.0
+        };
+        for ((ti, &gi), &pi) in self.t.iter_mut().zip(&self.g).zip(&self.p) {
+            *ti = if pi > 0.0 { gi + beta * *ti } else { 0.0 };
+        }
+        cg.g_old = gg;
 
-        if self.p.iter().all(|&v| v == 0.0) {
-            // Nothing to iterate (q = 0 or no interference).
-            converged = true;
-            eps = 0.0;
+        let tau = if nc > 0 && gg > 0.0 {
+            self.step_length(nc, control).ok_or_else(breakdown)?
+        } else {
+            0.0
+        };
+
+        let (psum, overlap) = self.project_pressure(tau);
+        cg.delta = if overlap { 0.0 } else { 1.0 };
+
+        // Step 10: force balance p ← p Q / (ΔS Σ p).
+        let scale = match control {
+            Control::Force(q) => q / (self.grid.cell_area() * psum),
+            Control::Approach(_) => 1.0,
+        };
+        if !scale.is_finite() {
+            return Err(breakdown());
         }
 
-        while !converged && iterations < self.options.max_iterations {
-            iterations += 1;
-            // Steps 1–2: gap g = K + u and its mean on the contact set I_c = {p > 0}.
-            let (mut ncl, mut gsl) = ([0.0; L], [0.0; L]);
-            {
-                let (g, u, h, p) = (&mut self.g[..n], &self.u[..n], &gap[..n], &self.p[..n]);
-                for_lanes!(n, |i, l| {
-                    let v = u[i] + h[i];
-                    g[i] = v;
-                    let c = p[i] > 0.0;
-                    gsl[l] += if c { v } else { 0.0 };
-                    ncl[l] += if c { 1.0 } else { 0.0 };
-                });
-            }
-            let nc = ncl.iter().sum::<f64>() as usize;
-            let gsum: f64 = gsl.iter().sum();
-            let gbar = match control {
-                Control::Force(_) if nc > 0 => gsum / nc as f64,
-                Control::Force(_) => 0.0,
-                Control::Approach(alpha) => alpha,
-            };
-            // Step 3: g ← g − ḡ, G = Σ_{I_c} g².
-            let mut ggl = [0.0; L];
-            {
-                let (g, p) = (&mut self.g[..n], &self.p[..n]);
-                for_lanes!(n, |i, l| {
-                    let v = g[i] - gbar;
-                    g[i] = v;
-                    ggl[l] += if p[i] > 0.0 { v * v } else { 0.0 };
-                });
-            }
-            let gg: f64 = ggl.iter().sum();
-            // Step 4: conjugate direction t = g + δ (G/G_old) t on I_c, 0 elsewhere.
-            let beta = if g_old > 0.0 { delta * gg / g_old } else { 0.0 };
-            for ((ti, &gi), &pi) in self.t.iter_mut().zip(&self.g).zip(&self.p) {
-                *ti = if pi > 0.0 { gi + beta * *ti } else { 0.0 };
-            }
-            g_old = gg;
+        let (dsum, psum) = self.scale_and_update_displacement(scale, tau, cg);
+        let eps = if psum > 0.0 { dsum / psum } else { 0.0 };
+        if !eps.is_finite() {
+            return Err(breakdown());
+        }
+        Ok(eps)
+    }
 
-            let mut tau = 0.0;
-            if nc > 0 && gg > 0.0 {
-                // Step 5: r = F t (minus its mean on I_c in force mode).
-                self.conv.apply(&self.t, &mut self.r);
-                self.n_conv += 1;
-                // Step 6: τ = Σ g t / Σ (r − r̄) t over I_c (t = 0 outside I_c).
-                let (mut rsl, mut tsl, mut gtl, mut rtl) = ([0.0; L], [0.0; L], [0.0; L], [0.0; L]);
-                {
-                    let (r, t, g, p) = (&self.r[..n], &self.t[..n], &self.g[..n], &self.p[..n]);
-                    for_lanes!(n, |i, l| {
-                        let ti = t[i];
-                        gtl[l] += g[i] * ti;
-                        rtl[l] += r[i] * ti;
-                        tsl[l] += ti;
-                        rsl[l] += if p[i] > 0.0 { r[i] } else { 0.0 };
-                    });
-                }
-                let (rsum, tsum, gt) = (
-                    rsl.iter().sum::<f64>(),
-                    tsl.iter().sum::<f64>(),
-                    gtl.iter().sum::<f64>(),
-                );
-                let mut rt: f64 = rtl.iter().sum();
-                if is_force {
-                    rt -= rsum / nc as f64 * tsum;
-                }
-                tau = gt / rt;
-                if !tau.is_finite() || rt <= 0.0 {
-                    return Err(BoussinesqError::NumericalBreakdown {
-                        iteration: iterations,
-                    });
-                }
-            }
+    /// Steps 1–3: gap `g = K + u`, its mean `ḡ` on the contact set `I_c = {p > 0}` (force
+    /// mode; `ḡ = α` in approach mode) and `g ← g − ḡ`. Returns `(|I_c|, G = Σ_{I_c} g²)`.
+    fn centred_gap(&mut self, gap: &[f64], control: Control) -> (usize, f64) {
+        let n = self.grid.len();
+        // Steps 1–2: gap g = K + u and its mean on the contact set I_c = {p > 0}.
+        let (mut ncl, mut gsl) = ([0.0; L], [0.0; L]);
+        {
+            let (g, u, h, p) = (&mut self.g[..n], &self.u[..n], &gap[..n], &self.p[..n]);
+            for_lanes!(n, |i, l| {
+                let v = u[i] + h[i];
+                g[i] = v;
+                let c = p[i] > 0.0;
+                gsl[l] += if c { v } else { 0.0 };
+                ncl[l] += if c { 1.0 } else { 0.0 };
+            });
+        }
+        let nc = ncl.iter().sum::<f64>() as usize;
+        let gsum: f64 = gsl.iter().sum();
+        let gbar = match control {
+            Control::Force(_) if nc > 0 => gsum / nc as f64,
+            Control::Force(_) => 0.0,
+            Control::Approach(alpha) => alpha,
+        };
+        // Step 3: g ← g − ḡ, G = Σ_{I_c} g².
+        let mut ggl = [0.0; L];
+        {
+            let (g, p) = (&mut self.g[..n], &self.p[..n]);
+            for_lanes!(n, |i, l| {
+                let v = g[i] - gbar;
+                g[i] = v;
+                ggl[l] += if p[i] > 0.0 { v * v } else { 0.0 };
+            });
+        }
+        (nc, ggl.iter().sum())
+    }
 
-            // Steps 7–9: p ← p − τ t on I_c, projection onto p ≥ 0, overlap set
-            // I_ol = {p = 0, g < 0} gets p = −τ g (and resets the conjugacy, δ = 0).
-            self.corr.clear();
-            let mut overlap = false;
-            let mut psl = [0.0; L];
-            {
-                let (p, p_old, g, t) = (
-                    &mut self.p[..n],
-                    &mut self.p_old[..n],
-                    &self.g[..n],
-                    &self.t[..n],
-                );
-                let corr = &mut self.corr;
-                for_lanes!(n, |i, l| {
-                    let po = p[i];
-                    p_old[i] = po;
-                    let gi = g[i];
-                    let pn = if po > 0.0 {
-                        let v = po - tau * t[i];
-                        if v > 0.0 {
-                            v
-                        } else {
-                            let pn = if gi < 0.0 && tau > 0.0 {
-                                overlap = true;
-                                -tau * gi
-                            } else {
-                                0.0
-                            };
-                            corr.push((i, pn - v));
-                            pn
-                        }
-                    } else if gi < 0.0 {
-                        overlap = true;
-                        // With an empty contact set (approach mode, first iteration) τ = 0:
-                        // use a local estimate of the pressure closing the interference.
-                        let pn = if tau > 0.0 {
+    /// Steps 5–6 on a non-empty contact set of `nc` cells: `r = F t`, step length
+    /// `τ = Σ g t / Σ (r − r̄) t` over `I_c` (`r̄` its mean on `I_c` in force mode, 0 in approach
+    /// mode). `None` on a non-positive or non-finite denominator (numerical breakdown).
+    fn step_length(&mut self, nc: usize, control: Control) -> Option<f64> {
+        let n = self.grid.len();
+        // Step 5: r = F t (minus its mean on I_c in force mode).
+        self.conv.apply(&self.t, &mut self.r);
+        self.n_conv += 1;
+        // Step 6: τ = Σ g t / Σ (r − r̄) t over I_c (t = 0 outside I_c).
+        let (mut rsl, mut tsl, mut gtl, mut rtl) = ([0.0; L], [0.0; L], [0.0; L], [0.0; L]);
+        {
+            let (r, t, g, p) = (&self.r[..n], &self.t[..n], &self.g[..n], &self.p[..n]);
+            for_lanes!(n, |i, l| {
+                let ti = t[i];
+                gtl[l] += g[i] * ti;
+                rtl[l] += r[i] * ti;
+                tsl[l] += ti;
+                rsl[l] += if p[i] > 0.0 { r[i] } else { 0.0 };
+            });
+        }
+        let (rsum, tsum, gt) = (
+            rsl.iter().sum::<f64>(),
+            tsl.iter().sum::<f64>(),
+            gtl.iter().sum::<f64>(),
+        );
+        let mut rt: f64 = rtl.iter().sum();
+        if matches!(control, Control::Force(_)) {
+            rt -= rsum / nc as f64 * tsum;
+        }
+        let tau = gt / rt;
+        (tau.is_finite() && rt > 0.0).then_some(tau)
+    }
+
+    /// Steps 7–9: p ← p − τ t on I_c, projection onto p ≥ 0, overlap set
+    /// I_ol = {p = 0, g < 0} gets p = −τ g. Keeps the previous pressure in `p_old` and the
+    /// changed cells in `corr`; returns `(Σ p, whether an overlap cell was loaded)` (an overlap
+    /// resets the conjugacy, δ = 0).
+    fn project_pressure(&mut self, tau: f64) -> (f64, bool) {
+        let n = self.grid.len();
+        let f00 = self.table.self_coefficient();
+        self.corr.clear();
+        let mut overlap = false;
+        let mut psl = [0.0; L];
+        {
+            let (p, p_old, g, t) = (
+                &mut self.p[..n],
+                &mut self.p_old[..n],
+                &self.g[..n],
+                &self.t[..n],
+            );
+            let corr = &mut self.corr;
+            for_lanes!(n, |i, l| {
+                let po = p[i];
+                p_old[i] = po;
+                let gi = g[i];
+                let pn = if po > 0.0 {
+                    let v = po - tau * t[i];
+                    if v > 0.0 {
+                        v
+                    } else {
+                        let pn = if gi < 0.0 && tau > 0.0 {
+                            overlap = true;
                             -tau * gi
                         } else {
-                            -gi / (4.0 * f00)
+                            0.0
                         };
-                        corr.push((i, pn));
+                        corr.push((i, pn - v));
                         pn
+                    }
+                } else if gi < 0.0 {
+                    overlap = true;
+                    // With an empty contact set (approach mode, first iteration) τ = 0:
+                    // use a local estimate of the pressure closing the interference.
+                    let pn = if tau > 0.0 {
+                        -tau * gi
                     } else {
-                        0.0
+                        -gi / (4.0 * f00)
                     };
-                    p[i] = pn;
-                    psl[l] += pn;
-                });
-            }
-            let psum: f64 = psl.iter().sum();
-            delta = if overlap { 0.0 } else { 1.0 };
-
-            // Step 10: force balance p ← p Q / (ΔS Σ p).
-            let scale = match control {
-                Control::Force(q) => q / (ds * psum),
-                Control::Approach(_) => 1.0,
-            };
-            if !scale.is_finite() {
-                return Err(BoussinesqError::NumericalBreakdown {
-                    iteration: iterations,
-                });
-            }
-
-            // Scale, displacement update (linear part, then sparse corrections or full FFT),
-            // and the pressure change of step 11.
-            since_recompute += 1;
-            let full = since_recompute >= self.options.recompute_interval
-                || self.corr.len() > self.options.sparse_update_max_cells
-                || tau == 0.0;
-            let (mut dsl, mut psl) = ([0.0; L], [0.0; L]);
-            if full {
-                {
-                    let (p, p_old) = (&mut self.p[..n], &self.p_old[..n]);
-                    for_lanes!(n, |i, l| {
-                        let v = p[i] * scale;
-                        p[i] = v;
-                        dsl[l] += (v - p_old[i]).abs();
-                        psl[l] += v;
-                    });
-                }
-                self.conv.apply(&self.p, &mut self.u);
-                self.n_conv += 1;
-                since_recompute = 0;
-            } else {
-                {
-                    let (p, p_old, u, r) = (
-                        &mut self.p[..n],
-                        &self.p_old[..n],
-                        &mut self.u[..n],
-                        &self.r[..n],
-                    );
-                    for_lanes!(n, |i, l| {
-                        let v = p[i] * scale;
-                        p[i] = v;
-                        dsl[l] += (v - p_old[i]).abs();
-                        psl[l] += v;
-                        u[i] = scale * (u[i] - tau * r[i]);
-                    });
-                }
-                let nx = self.grid.nx;
-                for &(k, v) in &self.corr {
-                    accumulate_cell(&self.table, k % nx, k / nx, scale * v, &mut self.u);
-                }
-            }
-
-            // Step 11: convergence on the relative pressure change.
-            let (dsum, psum) = (dsl.iter().sum::<f64>(), psl.iter().sum::<f64>());
-            eps = if psum > 0.0 { dsum / psum } else { 0.0 };
-            if !eps.is_finite() {
-                return Err(BoussinesqError::NumericalBreakdown {
-                    iteration: iterations,
-                });
-            }
-            if eps < tol {
-                converged = true;
-            }
+                    corr.push((i, pn));
+                    pn
+                } else {
+                    0.0
+                };
+                p[i] = pn;
+                psl[l] += pn;
+            });
         }
+        (psl.iter().sum(), overlap)
+    }
 
-        Ok((iterations, converged, eps))
+    /// Scale `p ← scale · p`, displacement update (linear part `u ← scale (u − τ r)` plus
+    /// direct sums over the cells in `corr`, or a full FFT recomputation every
+    /// `recompute_interval` iterations, when many cells changed or with `τ = 0`), and the sums
+    /// `(Σ|p − p_old|, Σ p)` of the pressure change of step 11.
+    fn scale_and_update_displacement(
+        &mut self,
+        scale: f64,
+        tau: f64,
+        cg: &mut CgState,
+    ) -> (f64, f64) {
+        let n = self.grid.len();
+        cg.since_recompute += 1;
+        let full = cg.since_recompute >= self.options.recompute_interval
+            || self.corr.len() > self.options.sparse_update_max_cells
+            || tau == 0.0;
+        let (p, p_old) = (&mut self.p[..n], &self.p_old[..n]);
+        if full {
+            let sums = scale_pressure(p, p_old, scale, |_| {});
+            self.conv.apply(&self.p, &mut self.u);
+            self.n_conv += 1;
+            cg.since_recompute = 0;
+            sums
+        } else {
+            let (u, r) = (&mut self.u[..n], &self.r[..n]);
+            let sums = scale_pressure(p, p_old, scale, |i| u[i] = scale * (u[i] - tau * r[i]));
+            let nx = self.grid.nx;
+            for &(k, v) in &self.corr {
+                accumulate_cell(&self.table, k % nx, k / nx, scale * v, &mut self.u);
+            }
+            sums
+        }
     }
 
     fn finish(
