@@ -3,7 +3,7 @@
 
 use super::analytic;
 use super::{Constraint, LineContactOptions, LineContactResult, LineGrid, LubricatedLineContact};
-use crate::banded::{BandMatrix, Bordered};
+use crate::banded::{BandLu, BandMatrix, Bordered, BorderedFactor};
 use crate::compliance::Influence;
 use crate::error::{Result, ReynoldsError, finite, positive};
 use crate::grid::Grid1d;
@@ -54,6 +54,20 @@ struct State {
     h: Vec<f64>,
     h0: f64,
     cav: Vec<bool>,
+}
+
+/// Column of an unknown in the bordered Jacobian: band block or border.
+enum Col {
+    A(usize),
+    B(usize),
+}
+
+/// Scaled bordered Jacobian [[A, E], [F, G]] of a Newton step (see [`Bordered`]).
+struct Jacobian {
+    a: BandMatrix,
+    e: Vec<Vec<f64>>,
+    f: Vec<Vec<f64>>,
+    g: [f64; 9],
 }
 
 struct Residual {
@@ -146,12 +160,24 @@ impl<'a> Ehl<'a> {
         self.ls / (self.vref * self.hs * self.cell[i].max(1e-300))
     }
 
-    /// Unscaled Reynolds residual of node i (1 ≤ i ≤ n−2).
-    fn reynolds(&self, st: &State, q: &[NodeQ], i: usize) -> f64 {
+    /// Scale of the elastic rows, l_s²/h_s.
+    fn elastic_row_scale(&self) -> f64 {
+        self.ls * self.ls / self.hs
+    }
+
+    /// Spacings east and west of interior node i and the Poiseuille conductances of those
+    /// faces: (Δx_e, Δx_w, a_e, a_w), a = ε̄/Δx with ε̄ the face mean.
+    fn conductances(&self, q: &[NodeQ], i: usize) -> (f64, f64, f64, f64) {
         let x = &self.x;
         let (dxe, dxw) = (x[i + 1] - x[i], x[i] - x[i - 1]);
         let ae = 0.5 * (q[i].eps + q[i + 1].eps) / dxe;
         let aw = 0.5 * (q[i - 1].eps + q[i].eps) / dxw;
+        (dxe, dxw, ae, aw)
+    }
+
+    /// Unscaled Reynolds residual of node i (1 ≤ i ≤ n−2).
+    fn reynolds(&self, st: &State, q: &[NodeQ], i: usize) -> f64 {
+        let (_, _, ae, aw) = self.conductances(q, i);
         let ge: f64 = self.face(i).iter().map(|&(k, w)| w * q[k].g).sum();
         let gw: f64 = self.face(i - 1).iter().map(|&(k, w)| w * q[k].g).sum();
         ae * (st.p[i + 1] - st.p[i])
@@ -175,7 +201,7 @@ impl<'a> Ehl<'a> {
             };
         }
         // elastic rows
-        let se = self.ls * self.ls / self.hs;
+        let se = self.elastic_row_scale();
         for i in 1..n - 1 {
             let l = self.lap(i);
             let mut v = 0.0;
@@ -209,91 +235,125 @@ impl<'a> Ehl<'a> {
         res: &Residual,
         con: Constraint,
     ) -> Result<(Vec<f64>, Vec<f64>, f64)> {
-        let n = self.n();
         let na = self.na();
         let bw = (2 * self.w + 2).max(6);
-        let mut a = BandMatrix::new(na, bw, bw);
-        let mut e = vec![vec![0.0; na]; 3];
-        let mut f = vec![vec![0.0; na]; 3];
-        let mut g = [0.0; 9];
-        let (ps, hs) = (self.ps, self.hs);
-        // column helper: (block column, scale) for p_k / h_k
-        enum Col {
-            A(usize),
-            B(usize),
-        }
-        let col_p = |k: usize| Col::A(self.pos_p(k));
-        let col_h = |k: usize| {
-            if k == 0 {
-                Col::B(0)
-            } else if k == n - 1 {
-                Col::B(1)
-            } else {
-                Col::A(self.pos_h(k))
-            }
+        let mut jac = Jacobian {
+            a: BandMatrix::new(na, bw, bw),
+            e: vec![vec![0.0; na]; 3],
+            f: vec![vec![0.0; na]; 3],
+            g: [0.0; 9],
         };
-        let q = &res.q;
-        // Reynolds rows
+        self.reynolds_rows(st, &res.q, &mut jac);
+        self.elastic_rows(&mut jac);
+        self.border_rows(st, con, &mut jac);
+        let Jacobian { a, e, f, g } = jac;
+        let lu = a.factor()?;
+        let bf = Bordered {
+            a: &lu,
+            e: &e,
+            f: &f,
+            g: &g,
+        }
+        .factor()?;
+        let mut rhs: Vec<f64> = res.r[..na].iter().map(|v| -v).collect();
+        let mut rb: Vec<f64> = res.r[na..].iter().map(|v| -v).collect();
+        self.solve_linear(&bf, &mut rhs, &mut rb);
+        let (n, ps, hs) = (self.n(), self.ps, self.hs);
+        let mut dpv = vec![0.0; n];
+        let mut dhv = vec![0.0; n];
+        for i in 0..n {
+            dpv[i] = rhs[self.pos_p(i)] * ps;
+            dhv[i] = match self.col_h(i) {
+                Col::A(c) => rhs[c] * hs,
+                Col::B(b) => rb[b] * hs,
+            };
+        }
+        Ok((dpv, dhv, rb[2] * hs))
+    }
+
+    /// Jacobian column of h_k: the band block, or border column 0 / 1 for the end films.
+    fn col_h(&self, k: usize) -> Col {
+        if k == 0 {
+            Col::B(0)
+        } else if k == self.n() - 1 {
+            Col::B(1)
+        } else {
+            Col::A(self.pos_h(k))
+        }
+    }
+
+    /// Unscaled derivatives dR/dp_k and dR/dh_k of the Reynolds residual of interior node i,
+    /// k = i−2 … i+2 (index k + 2 − i).
+    fn reynolds_derivatives(&self, st: &State, q: &[NodeQ], i: usize) -> ([f64; 5], [f64; 5]) {
+        let (dxe, dxw, ae, aw) = self.conductances(q, i);
+        let (gpe, gpw) = (st.p[i + 1] - st.p[i], st.p[i] - st.p[i - 1]);
+        let mut dp = [0.0; 5];
+        let mut dh = [0.0; 5];
+        let o = |k: usize| k + 2 - i;
+        dp[o(i + 1)] += ae + 0.5 * q[i + 1].deps_dp / dxe * gpe;
+        dh[o(i + 1)] += 0.5 * q[i + 1].deps_dh / dxe * gpe;
+        dp[o(i)] += -ae - aw + 0.5 * q[i].deps_dp * (gpe / dxe - gpw / dxw);
+        dh[o(i)] += 0.5 * q[i].deps_dh * (gpe / dxe - gpw / dxw);
+        dp[o(i - 1)] += aw - 0.5 * q[i - 1].deps_dp / dxw * gpw;
+        dh[o(i - 1)] += -0.5 * q[i - 1].deps_dh / dxw * gpw;
+        for (face, sign) in [(i, -1.0), (i - 1, 1.0)] {
+            for (k, wgt) in self.face(face) {
+                if wgt != 0.0 {
+                    dp[o(k)] += sign * wgt * q[k].dg_dp;
+                    dh[o(k)] += sign * wgt * q[k].dg_dh;
+                }
+            }
+        }
+        dp[o(i)] -= q[i].drho * self.vy * self.cell[i];
+        (dp, dh)
+    }
+
+    /// Pressure rows: identity at the ends and cavitated nodes, the scaled Reynolds derivatives
+    /// elsewhere.
+    fn reynolds_rows(&self, st: &State, q: &[NodeQ], jac: &mut Jacobian) {
+        let n = self.n();
+        let (ps, hs) = (self.ps, self.hs);
         for i in 0..n {
             let row = self.pos_p(i);
             if i == 0 || i == n - 1 || st.cav[i] {
-                a.add(row, row, 1.0);
+                jac.a.add(row, row, 1.0);
                 continue;
             }
             let sr = self.reynolds_row_scale(i);
-            let x = &self.x;
-            let (dxe, dxw) = (x[i + 1] - x[i], x[i] - x[i - 1]);
-            let ae = 0.5 * (q[i].eps + q[i + 1].eps) / dxe;
-            let aw = 0.5 * (q[i - 1].eps + q[i].eps) / dxw;
-            let (gpe, gpw) = (st.p[i + 1] - st.p[i], st.p[i] - st.p[i - 1]);
-            // dR/dp_k and dR/dh_k, k = i−2 … i+2
-            let mut dp = [0.0; 5];
-            let mut dh = [0.0; 5];
-            let o = |k: usize| k + 2 - i;
-            dp[o(i + 1)] += ae + 0.5 * q[i + 1].deps_dp / dxe * gpe;
-            dh[o(i + 1)] += 0.5 * q[i + 1].deps_dh / dxe * gpe;
-            dp[o(i)] += -ae - aw + 0.5 * q[i].deps_dp * (gpe / dxe - gpw / dxw);
-            dh[o(i)] += 0.5 * q[i].deps_dh * (gpe / dxe - gpw / dxw);
-            dp[o(i - 1)] += aw - 0.5 * q[i - 1].deps_dp / dxw * gpw;
-            dh[o(i - 1)] += -0.5 * q[i - 1].deps_dh / dxw * gpw;
-            for (face, sign) in [(i, -1.0), (i - 1, 1.0)] {
-                for (k, wgt) in self.face(face) {
-                    if wgt != 0.0 {
-                        dp[o(k)] += sign * wgt * q[k].dg_dp;
-                        dh[o(k)] += sign * wgt * q[k].dg_dh;
-                    }
-                }
-            }
-            dp[o(i)] -= q[i].drho * self.vy * self.cell[i];
+            let (dp, dh) = self.reynolds_derivatives(st, q, i);
             for t in 0..5 {
                 let k = i + t;
                 if k < 2 || k - 2 >= n {
                     continue;
                 }
                 let k = k - 2;
-                if dp[t] != 0.0
-                    && let Col::A(c) = col_p(k)
-                {
-                    a.add(row, c, sr * dp[t] * ps);
+                if dp[t] != 0.0 {
+                    jac.a.add(row, self.pos_p(k), sr * dp[t] * ps);
                 }
                 if dh[t] != 0.0 {
-                    match col_h(k) {
-                        Col::A(c) => a.add(row, c, sr * dh[t] * hs),
-                        Col::B(b) => e[b][row] += sr * dh[t] * hs,
+                    match self.col_h(k) {
+                        Col::A(c) => jac.a.add(row, c, sr * dh[t] * hs),
+                        Col::B(b) => jac.e[b][row] += sr * dh[t] * hs,
                     }
                 }
             }
         }
-        // elastic rows
-        let se = self.ls * self.ls / hs;
+    }
+
+    /// Elastic rows: the second difference of the film and, within the near band, of the
+    /// deflection (L·D); the far part is applied by [`Self::far_apply`].
+    fn elastic_rows(&self, jac: &mut Jacobian) {
+        let n = self.n();
+        let (ps, hs) = (self.ps, self.hs);
+        let se = self.elastic_row_scale();
         for i in 1..n - 1 {
             let row = self.pos_h(i);
             let l = self.lap(i);
             for (t, c) in l.iter().enumerate() {
                 let k = i + t - 1;
-                match col_h(k) {
-                    Col::A(cc) => a.add(row, cc, se * c * hs),
-                    Col::B(b) => e[b][row] += se * c * hs,
+                match self.col_h(k) {
+                    Col::A(cc) => jac.a.add(row, cc, se * c * hs),
+                    Col::B(b) => jac.e[b][row] += se * c * hs,
                 }
             }
             if self.infl.is_some() {
@@ -302,11 +362,17 @@ impl<'a> Ehl<'a> {
                 let wb = 2 * self.w + 1;
                 for j in lo..=hi {
                     let ldij = self.ld_near[i * wb + (j + self.w - i)];
-                    a.add(row, self.pos_p(j), -se * ldij * ps);
+                    jac.a.add(row, self.pos_p(j), -se * ldij * ps);
                 }
             }
         }
-        // border rows: h end conditions and the constraint
+    }
+
+    /// Border rows: the film conditions at both ends and the constraint.
+    fn border_rows(&self, st: &State, con: Constraint, jac: &mut Jacobian) {
+        let n = self.n();
+        let (ps, hs) = (self.ps, self.hs);
+        let (f, g) = (&mut jac.f, &mut jac.g);
         if let Some(inf) = &self.infl {
             for j in 1..n - 1 {
                 f[0][self.pos_p(j)] = -inf.get(0, j) * ps / hs;
@@ -321,7 +387,7 @@ impl<'a> Ehl<'a> {
             Constraint::RigidApproach(_) => g[8] = 1.0,
             Constraint::MinFilm(_) => {
                 let k = argmin(&st.h);
-                match col_h(k) {
+                match self.col_h(k) {
                     Col::A(c) => f[2][c] = 1.0,
                     Col::B(b) => g[6 + b] = 1.0,
                 }
@@ -332,57 +398,43 @@ impl<'a> Ehl<'a> {
                 }
             }
         }
-        let lu = a.factor()?;
-        let bf = Bordered {
-            a: &lu,
-            e: &e,
-            f: &f,
-            g: &g,
-        }
-        .factor()?;
-        let mut rhs: Vec<f64> = res.r[..na].iter().map(|v| -v).collect();
-        let mut rb: Vec<f64> = res.r[na..].iter().map(|v| -v).collect();
+    }
+
+    /// Solves the scaled Newton system in place: directly when rigid; for elastic problems by
+    /// GMRES preconditioned with the near-band factorisation `bf`.
+    fn solve_linear(&self, bf: &BorderedFactor<'_, BandLu>, rhs: &mut [f64], rb: &mut [f64]) {
         if self.infl.is_none() {
-            bf.solve(&mut rhs, &mut rb);
-        } else {
-            // right-preconditioned GMRES: (J M⁻¹) y = −r with J = M + J_far, J_far the elastic
-            // influence beyond the near band (dense, applied by a matrix–vector product)
-            let mut b = rhs.clone();
-            b.extend_from_slice(&rb);
-            let bn = Self::norm(&b);
-            let tol = (self.lin_tol * bn).max(1e-14);
-            let prec = |v: &[f64]| -> Vec<f64> {
-                let mut va = v[..na].to_vec();
-                let mut vb = v[na..].to_vec();
-                bf.solve(&mut va, &mut vb);
-                va.extend_from_slice(&vb);
-                va
-            };
-            let (y, _, _) = crate::krylov::gmres(
-                |v, out| {
-                    let z = prec(v);
-                    out.copy_from_slice(v);
-                    self.far_apply(&z, out);
-                },
-                &b,
-                tol,
-                40,
-                400,
-            );
-            let z = prec(&y);
-            rhs.copy_from_slice(&z[..na]);
-            rb.copy_from_slice(&z[na..]);
+            bf.solve(rhs, rb);
+            return;
         }
-        let mut dpv = vec![0.0; n];
-        let mut dhv = vec![0.0; n];
-        for i in 0..n {
-            dpv[i] = rhs[self.pos_p(i)] * ps;
-            dhv[i] = match col_h(i) {
-                Col::A(c) => rhs[c] * hs,
-                Col::B(b) => rb[b] * hs,
-            };
-        }
-        Ok((dpv, dhv, rb[2] * hs))
+        let na = self.na();
+        // right-preconditioned GMRES: (J M⁻¹) y = −r with J = M + J_far, J_far the elastic
+        // influence beyond the near band (dense, applied by a matrix–vector product)
+        let mut b = rhs.to_vec();
+        b.extend_from_slice(rb);
+        let bn = Self::norm(&b);
+        let tol = (self.lin_tol * bn).max(1e-14);
+        let prec = |v: &[f64]| -> Vec<f64> {
+            let mut va = v[..na].to_vec();
+            let mut vb = v[na..].to_vec();
+            bf.solve(&mut va, &mut vb);
+            va.extend_from_slice(&vb);
+            va
+        };
+        let (y, _, _) = crate::krylov::gmres(
+            |v, out| {
+                let z = prec(v);
+                out.copy_from_slice(v);
+                self.far_apply(&z, out);
+            },
+            &b,
+            tol,
+            40,
+            400,
+        );
+        let z = prec(&y);
+        rhs.copy_from_slice(&z[..na]);
+        rb.copy_from_slice(&z[na..]);
     }
 
     /// Exit of the full film: first cavitated (or zero) node k after the pressure maximum `kmax`
@@ -438,7 +490,7 @@ impl<'a> Ehl<'a> {
         }
         let mut u = vec![0.0; n];
         inf.apply(&zp, &mut u);
-        let se = self.ls * self.ls / self.hs;
+        let se = self.elastic_row_scale();
         let wb = 2 * self.w + 1;
         for i in 1..n - 1 {
             let l = self.lap(i);
