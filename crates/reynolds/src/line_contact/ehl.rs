@@ -509,6 +509,38 @@ impl<'a> Ehl<'a> {
         r.iter().map(|v| v * v).sum::<f64>().sqrt()
     }
 
+    /// Squeeze damping −∂W′/∂V_y by central differences ±ΔV_y at the converged rigid approach
+    /// of `st`, N·s/m².
+    fn squeeze_damping(
+        &mut self,
+        st: &State,
+        options: &LineContactOptions,
+        total_iters: &mut usize,
+    ) -> Result<f64> {
+        let (r, vabs) = (self.c.radius, self.c.sum_speed().abs().max(1e-300));
+        let hm = st.h.iter().fold(f64::MAX, |a, &v| a.min(v));
+        let dv = options.damping_perturbation * vabs * (hm / r).sqrt();
+        let base_vy = self.vy;
+        let mut w = [0.0; 2];
+        for (k, s) in [1.0, -1.0].iter().enumerate() {
+            self.vy = base_vy + s * dv;
+            let mut s2 = st.clone();
+            let (ok, it) = self.newton(&mut s2, Constraint::RigidApproach(st.h0), options)?;
+            *total_iters += it;
+            if !ok {
+                let r = self.residual(&s2, Constraint::RigidApproach(st.h0));
+                return Err(ReynoldsError::NotConverged {
+                    what: "line-contact damping perturbation",
+                    iterations: it,
+                    residual: r.r.iter().fold(0.0f64, |a, &v| a.max(v.abs())),
+                });
+            }
+            w[k] = s2.p.iter().zip(&self.cell).map(|(p, c)| p * c).sum();
+        }
+        self.vy = base_vy;
+        Ok(-(w[0] - w[1]) / (2.0 * dv))
+    }
+
     /// Newton iterations from `st`. Returns (converged, iterations).
     fn newton(
         &self,
@@ -770,6 +802,8 @@ fn solve_min_film_elastic(
     Ok(res)
 }
 
+/// Solves the line contact on one domain (the domain and grid from the film and load estimate
+/// unless the options fix them), with nested grids for elastic problems.
 fn solve_direct(
     contact: &LubricatedLineContact,
     viscosity: &dyn Viscosity,
@@ -777,7 +811,43 @@ fn solve_direct(
     options: &LineContactOptions,
 ) -> Result<LineContactResult> {
     let t0 = Instant::now();
-    let r = positive("radius", contact.radius)?;
+    check_input(contact, constraint, options)?;
+    let plan = Plan::new(contact, viscosity, constraint, options)?;
+    let n = options.nodes;
+    let (xin, xout, lh) = (plan.xin, plan.xout, plan.lh);
+    let grid = match options.grid {
+        LineGrid::Uniform => Grid1d::uniform(xin, xout, n)?,
+        LineGrid::Clustered(s) => Grid1d::clustered(xin, xout, n, 0.0, s)?,
+        LineGrid::Auto if plan.elastic => Grid1d::uniform(xin, xout, n)?,
+        LineGrid::Auto => Grid1d::clustered(xin, xout, n, 0.0, lh / 50.0)?,
+    };
+    let mut prob = build(contact, viscosity, &grid, options, plan.scales);
+    let mut total_iters = 0usize;
+    let (st, converged) = plan.nested_solve(&prob, &mut total_iters)?;
+    let mut damping = 0.0;
+    if options.damping && contact.sum_speed() != 0.0 {
+        damping = prob.squeeze_damping(&st, options, &mut total_iters)?;
+    }
+    Ok(finish(
+        &prob,
+        &st,
+        converged,
+        total_iters,
+        damping,
+        plan.b,
+        plan.ph,
+        t0,
+    ))
+}
+
+/// Rejects inputs without a solution: non-finite data, too few nodes, nothing driving the film,
+/// an invalid constraint value.
+fn check_input(
+    contact: &LubricatedLineContact,
+    constraint: Constraint,
+    options: &LineContactOptions,
+) -> Result<()> {
+    positive("radius", contact.radius)?;
     finite("surface speed", contact.surface_speeds[0])?;
     finite("surface speed", contact.surface_speeds[1])?;
     finite("squeeze velocity", options.squeeze_velocity)?;
@@ -788,8 +858,7 @@ fn solve_direct(
             reason: format!("{} < 20", options.nodes),
         });
     }
-    let v = contact.sum_speed();
-    if v == 0.0 && options.squeeze_velocity == 0.0 {
+    if contact.sum_speed() == 0.0 && options.squeeze_velocity == 0.0 {
         return Err(ReynoldsError::InvalidInput {
             what: "speed",
             reason: "zero rolling speed with zero squeeze velocity: no hydrodynamic film".into(),
@@ -800,14 +869,163 @@ fn solve_direct(
         Constraint::MinFilm(h) => positive("minimum film", h).map(|_| ())?,
         Constraint::LoadPerLength(w) => positive("load per length", w).map(|_| ())?,
     }
-    let mu0 = viscosity.viscosity(0.0, contact.temperature);
-    positive("viscosity μ(0, T)", mu0)?;
-    let alpha0 = viscosity.dln_viscosity_dp(0.0, contact.temperature);
-    let elastic = !contact.compliance.is_rigid();
-    let ep = contact.compliance.e_prime().unwrap_or(0.0);
-    let vabs = v.abs().max(1e-300);
-    // film scale and load estimate
-    let (h_est, w_est) = match constraint {
+    Ok(())
+}
+
+/// Film and load estimate, domain and scales of a direct solve.
+struct Plan<'a> {
+    contact: &'a LubricatedLineContact,
+    viscosity: &'a dyn Viscosity,
+    constraint: Constraint,
+    options: &'a LineContactOptions,
+    elastic: bool,
+    /// Film estimate, m.
+    h_est: f64,
+    /// Hertz half-width (0 when rigid), m.
+    b: f64,
+    /// Hertz pressure (0 when rigid), Pa.
+    ph: f64,
+    /// Rigid inlet length √(R h_est), m.
+    lh: f64,
+    /// Domain [x_in, x_out], m.
+    xin: f64,
+    xout: f64,
+    /// Scales (p_s, h_s, l_s, V_ref).
+    scales: (f64, f64, f64, f64),
+}
+
+impl<'a> Plan<'a> {
+    fn new(
+        contact: &'a LubricatedLineContact,
+        viscosity: &'a dyn Viscosity,
+        constraint: Constraint,
+        options: &'a LineContactOptions,
+    ) -> Result<Self> {
+        let r = contact.radius;
+        let mu0 = viscosity.viscosity(0.0, contact.temperature);
+        positive("viscosity μ(0, T)", mu0)?;
+        let alpha0 = viscosity.dln_viscosity_dp(0.0, contact.temperature);
+        let elastic = !contact.compliance.is_rigid();
+        let ep = contact.compliance.e_prime().unwrap_or(0.0);
+        let vabs = contact.sum_speed().abs().max(1e-300);
+        let (h_est, w_est) = film_and_load_estimate(constraint, mu0, alpha0, vabs, r, elastic, ep);
+        let b = if elastic {
+            line_half_width(w_est, r, ep)
+        } else {
+            0.0
+        };
+        let lh = (r * h_est).sqrt();
+        let xin = options.inlet.unwrap_or(if elastic {
+            -(4.5 * b).max(30.0 * lh)
+        } else {
+            -100.0 * lh
+        });
+        let xout = options.outlet.unwrap_or((1.5 * b).max(5.0 * lh));
+        if !(xin < 0.0 && xout > 0.0) {
+            return Err(ReynoldsError::InvalidInput {
+                what: "domain",
+                reason: format!("need inlet < 0 < outlet, got [{xin}, {xout}]"),
+            });
+        }
+        let p0 = analytic::pressure_scale(mu0, vabs, r, h_est);
+        let ph = if elastic { ep * b / (4.0 * r) } else { 0.0 };
+        let ls = if elastic { b.max(lh) } else { lh };
+        let vref = vabs.max(options.squeeze_velocity.abs() * ls / h_est);
+        Ok(Self {
+            contact,
+            viscosity,
+            constraint,
+            options,
+            elastic,
+            h_est,
+            b,
+            ph,
+            lh,
+            xin,
+            xout,
+            scales: (p0.max(ph), h_est, ls, vref),
+        })
+    }
+
+    /// Node counts of the nested iteration, coarsest first: for elastic problems on fine grids,
+    /// halving the node count down to ≈ 150.
+    fn levels(&self) -> Vec<usize> {
+        let n = self.options.nodes;
+        let mut levels = vec![n];
+        while self.elastic && *levels.last().unwrap_or(&n) / 2 >= 150 {
+            let m = levels.last().copied().unwrap_or(n) / 2;
+            levels.push(m);
+        }
+        levels.reverse();
+        levels
+    }
+
+    /// Nested iteration for elastic problems on fine grids: converge on coarser grids first
+    /// and interpolate; on each finer grid the Newton phase is then short and the pressure spike
+    /// is resolved progressively. `prob` is the finest level.
+    fn nested_solve(&self, prob: &Ehl, total_iters: &mut usize) -> Result<(State, bool)> {
+        let (constraint, h_est, b, ph) = (self.constraint, self.h_est, self.b, self.ph);
+        let levels = self.levels();
+        let mut state: Option<(State, bool)> = None;
+        let mut prev: Option<Ehl> = None;
+        for (li, &m) in levels.iter().enumerate() {
+            let last = li + 1 == levels.len();
+            let pl = if last {
+                None
+            } else {
+                Some(build(
+                    self.contact,
+                    self.viscosity,
+                    &Grid1d::uniform(self.xin, self.xout, m)?,
+                    self.options,
+                    self.scales,
+                ))
+            };
+            let pr: &Ehl = pl.as_ref().unwrap_or(prob);
+            // coarse levels only provide a start: a looser tolerance is enough
+            let lopt = if last {
+                *self.options
+            } else {
+                LineContactOptions {
+                    tolerance: self.options.tolerance.max(1e-4),
+                    ..*self.options
+                }
+            };
+            let options = &lopt;
+            let next = match (&state, &prev) {
+                (Some((s0, true)), Some(pp)) => {
+                    let mut s1 = interpolate(pp, s0, pr);
+                    let (ok, it) = pr.newton(&mut s1, constraint, options)?;
+                    *total_iters += it;
+                    if ok {
+                        (s1, true)
+                    } else {
+                        solve_with_fallback(pr, constraint, options, h_est, b, ph, total_iters)?
+                    }
+                }
+                _ => solve_with_fallback(pr, constraint, options, h_est, b, ph, total_iters)?,
+            };
+            state = Some(next);
+            if !last {
+                prev = pl;
+            }
+        }
+        state.ok_or(ReynoldsError::Singular("line contact"))
+    }
+}
+
+/// Film and load estimates, (h, W′): from the constraint, the Kapitsa rigid load and, for
+/// elastic contacts, the Pan–Hamrock fits.
+fn film_and_load_estimate(
+    constraint: Constraint,
+    mu0: f64,
+    alpha0: f64,
+    vabs: f64,
+    r: f64,
+    elastic: bool,
+    ep: f64,
+) -> (f64, f64) {
+    match constraint {
         Constraint::RigidApproach(h) | Constraint::MinFilm(h) => {
             let h = h.abs().max(1e-9);
             let mut w = analytic::kapitsa(mu0, vabs, r, h).1;
@@ -830,128 +1048,7 @@ fn solve_direct(
             };
             (h.max(1e-10), w)
         }
-    };
-    let b = if elastic {
-        line_half_width(w_est, r, ep)
-    } else {
-        0.0
-    };
-    let lh = (r * h_est).sqrt();
-    let xin = options.inlet.unwrap_or(if elastic {
-        -(4.5 * b).max(30.0 * lh)
-    } else {
-        -100.0 * lh
-    });
-    let xout = options.outlet.unwrap_or((1.5 * b).max(5.0 * lh));
-    if !(xin < 0.0 && xout > 0.0) {
-        return Err(ReynoldsError::InvalidInput {
-            what: "domain",
-            reason: format!("need inlet < 0 < outlet, got [{xin}, {xout}]"),
-        });
     }
-    let n = options.nodes;
-    let grid = match options.grid {
-        LineGrid::Uniform => Grid1d::uniform(xin, xout, n)?,
-        LineGrid::Clustered(s) => Grid1d::clustered(xin, xout, n, 0.0, s)?,
-        LineGrid::Auto if elastic => Grid1d::uniform(xin, xout, n)?,
-        LineGrid::Auto => Grid1d::clustered(xin, xout, n, 0.0, lh / 50.0)?,
-    };
-    let p0 = analytic::pressure_scale(mu0, vabs, r, h_est);
-    let ph = if elastic { ep * b / (4.0 * r) } else { 0.0 };
-    let ls = if elastic { b.max(lh) } else { lh };
-    let vref = vabs.max(options.squeeze_velocity.abs() * ls / h_est);
-    let scales = (p0.max(ph), h_est, ls, vref);
-    let mut prob = build(contact, viscosity, &grid, options, scales);
-    let mut total_iters = 0usize;
-    // nested iteration for elastic problems on fine grids: converge on coarser grids first
-    // (halving the node count down to ≈ 150) and interpolate; on each finer grid the Newton
-    // phase is then short and the pressure spike is resolved progressively
-    let mut levels = vec![n];
-    while elastic && *levels.last().unwrap_or(&n) / 2 >= 150 {
-        let m = levels.last().copied().unwrap_or(n) / 2;
-        levels.push(m);
-    }
-    levels.reverse();
-    let mut state: Option<(State, bool)> = None;
-    let mut prev: Option<Ehl> = None;
-    for (li, &m) in levels.iter().enumerate() {
-        let last = li + 1 == levels.len();
-        let pl = if last {
-            None
-        } else {
-            Some(build(
-                contact,
-                viscosity,
-                &Grid1d::uniform(xin, xout, m)?,
-                options,
-                scales,
-            ))
-        };
-        let pr: &Ehl = pl.as_ref().unwrap_or(&prob);
-        // coarse levels only provide a start: a looser tolerance is enough
-        let lopt = if last {
-            *options
-        } else {
-            LineContactOptions {
-                tolerance: options.tolerance.max(1e-4),
-                ..*options
-            }
-        };
-        let options = &lopt;
-        let next = match (&state, &prev) {
-            (Some((s0, true)), Some(pp)) => {
-                let mut s1 = interpolate(pp, s0, pr);
-                let (ok, it) = pr.newton(&mut s1, constraint, options)?;
-                total_iters += it;
-                if ok {
-                    (s1, true)
-                } else {
-                    solve_with_fallback(pr, constraint, options, h_est, b, ph, &mut total_iters)?
-                }
-            }
-            _ => solve_with_fallback(pr, constraint, options, h_est, b, ph, &mut total_iters)?,
-        };
-        state = Some(next);
-        if !last {
-            prev = pl;
-        }
-    }
-    let (st, converged) = state.ok_or(ReynoldsError::Singular("line contact"))?;
-    // damping: ±ΔV_y at the converged rigid approach
-    let mut damping = 0.0;
-    if options.damping && v != 0.0 {
-        let hm = st.h.iter().fold(f64::MAX, |a, &v| a.min(v));
-        let dv = options.damping_perturbation * vabs * (hm / r).sqrt();
-        let base_vy = prob.vy;
-        let mut w = [0.0; 2];
-        for (k, s) in [1.0, -1.0].iter().enumerate() {
-            prob.vy = base_vy + s * dv;
-            let mut s2 = st.clone();
-            let (ok, it) = prob.newton(&mut s2, Constraint::RigidApproach(st.h0), options)?;
-            total_iters += it;
-            if !ok {
-                let r = prob.residual(&s2, Constraint::RigidApproach(st.h0));
-                return Err(ReynoldsError::NotConverged {
-                    what: "line-contact damping perturbation",
-                    iterations: it,
-                    residual: r.r.iter().fold(0.0f64, |a, &v| a.max(v.abs())),
-                });
-            }
-            w[k] = s2.p.iter().zip(&prob.cell).map(|(p, c)| p * c).sum();
-        }
-        prob.vy = base_vy;
-        damping = -(w[0] - w[1]) / (2.0 * dv);
-    }
-    Ok(finish(
-        &prob,
-        &st,
-        converged,
-        total_iters,
-        damping,
-        b,
-        ph,
-        t0,
-    ))
 }
 
 /// Builds the discrete problem on `grid` with scales (p_s, h_s, l_s, V_ref).
