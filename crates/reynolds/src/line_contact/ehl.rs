@@ -1132,7 +1132,8 @@ fn interpolate(from: &Ehl, st: &State, to: &Ehl) -> State {
     out
 }
 
-#[allow(clippy::too_many_arguments)]
+/// Newton from an initial guess on `prob`; for elastic problems under a load, with load
+/// continuation when the direct attempt fails.
 fn solve_with_fallback(
     prob: &Ehl,
     con: Constraint,
@@ -1142,123 +1143,19 @@ fn solve_with_fallback(
     ph: f64,
     iters: &mut usize,
 ) -> Result<(State, bool)> {
-    let elastic = prob.infl.is_some();
-    // Initial guesses: Hertz pressure with the estimated central film for elastic problems under
-    // a load; otherwise the rigid analytic (Martin, Barus-reduced) solution at the film value.
     let n = prob.n();
-    let initial = |con: Constraint, hload: f64, bb: f64, phh: f64| -> State {
-        let r = prob.c.radius;
-        let mut st = State {
-            p: vec![0.0; n],
-            h: vec![0.0; n],
-            h0: 0.0,
-            cav: vec![false; n],
-        };
-        if elastic && matches!(con, Constraint::LoadPerLength(_)) && bb > 0.0 {
-            for i in 0..n {
-                let xi = prob.x[i];
-                if xi.abs() < bb {
-                    st.p[i] = phh * (1.0 - (xi / bb).powi(2)).sqrt();
-                }
-                st.cav[i] = xi > 1.2 * bb;
-            }
-            let d = prob.deflection(&st.p);
-            let k0 = argmin(&prob.x.iter().map(|v| v.abs()).collect::<Vec<_>>());
-            st.h0 = hload - prob.geom[k0] - d[k0];
-            for i in 0..n {
-                st.h[i] = st.h0 + prob.geom[i] + d[i];
-            }
-        } else {
-            // rigid Martin solution with squeeze
-            let hm = hload;
-            let lh = (r * hm).sqrt();
-            let v = prob.c.sum_speed().abs().max(1e-300);
-            let nu = prob.vy / v * (r / hm).sqrt();
-            let c = analytic::exit_parameter(nu.clamp(-0.2, 0.2)).unwrap_or(0.67);
-            let mu0 = prob.visc.viscosity(0.0, prob.c.temperature);
-            let p0 = analytic::pressure_scale(mu0, v, r, hm);
-            let al = prob.visc.dln_viscosity_dp(0.0, prob.c.temperature) * p0;
-            for i in 0..n {
-                let xt = prob.x[i] / lh;
-                let q = if xt < c {
-                    analytic::q(xt, c, nu.clamp(-0.2, 0.2)).max(0.0)
-                } else {
-                    0.0
-                };
-                let qq = if al > 0.0 && al * q < 0.95 {
-                    -(1.0 - al * q).ln() / al
-                } else {
-                    q
-                };
-                st.p[i] = qq * p0;
-                st.cav[i] = xt > 1.3 * c + 0.2;
-            }
-            st.h0 = hm;
-            let d = prob.deflection(&st.p);
-            for i in 0..n {
-                st.h[i] = hm + prob.geom[i] + d[i];
-            }
-        }
-        st.p[0] = 0.0;
-        st.p[n - 1] = 0.0;
-        st.cav[0] = false;
-        st.cav[n - 1] = false;
-        st
-    };
     match con {
-        Constraint::LoadPerLength(w) if elastic => {
-            // direct attempt, then load continuation (halving the load, Hertz-scaled guesses)
-            #[allow(clippy::too_many_arguments)]
-            fn attempt(
-                prob: &Ehl,
-                w: f64,
-                from: Option<State>,
-                opt: &LineContactOptions,
-                depth: usize,
-                iters: &mut usize,
-                init: &dyn Fn(Constraint, f64, f64, f64) -> State,
-                h_est: f64,
-                b: f64,
-                ph: f64,
-            ) -> Result<(State, bool)> {
-                let mut st =
-                    from.unwrap_or_else(|| init(Constraint::LoadPerLength(w), h_est, b, ph));
-                let (ok, it) = prob.newton(&mut st, Constraint::LoadPerLength(w), opt)?;
-                *iters += it;
-                if ok || depth >= opt.continuation_steps {
-                    return Ok((st, ok));
-                }
-                // continuation: solve at half the load (Hertz scaling of b and p_h), then return
-                let (lighter, ok_l) = attempt(
-                    prob,
-                    0.5 * w,
-                    None,
-                    opt,
-                    depth + 1,
-                    iters,
-                    init,
-                    h_est * 1.1,
-                    b * std::f64::consts::FRAC_1_SQRT_2,
-                    ph * std::f64::consts::FRAC_1_SQRT_2,
-                )?;
-                if !ok_l {
-                    return Ok((lighter, false));
-                }
-                let mut st = lighter;
-                let (ok, it) = prob.newton(&mut st, Constraint::LoadPerLength(w), opt)?;
-                *iters += it;
-                Ok((st, ok))
-            }
-            attempt(prob, w, None, opt, 0, iters, &initial, h_est, b, ph)
+        Constraint::LoadPerLength(w) if prob.infl.is_some() => {
+            prob.load_continuation(w, opt, 0, iters, (h_est, b, ph))
         }
         Constraint::LoadPerLength(_) => {
-            let mut st = initial(con, h_est, 0.0, 0.0);
+            let mut st = prob.initial_state(con, h_est, 0.0, 0.0);
             let (ok, it) = prob.newton(&mut st, con, opt)?;
             *iters += it;
             Ok((st, ok))
         }
         Constraint::RigidApproach(h) | Constraint::MinFilm(h) => {
-            let mut st = initial(con, h.abs().max(1e-12), 0.0, 0.0);
+            let mut st = prob.initial_state(con, h.abs().max(1e-12), 0.0, 0.0);
             if let Constraint::RigidApproach(a) = con {
                 st.h0 = a;
                 let d = prob.deflection(&st.p);
@@ -1270,6 +1167,124 @@ fn solve_with_fallback(
             *iters += it;
             Ok((st, ok))
         }
+    }
+}
+
+impl Ehl<'_> {
+    /// Direct attempt at the load `w` from the Hertz guess with `(h, b, p_h)`, then load
+    /// continuation: solve at half the load (Hertz scaling of b and p_h) and return from there.
+    fn load_continuation(
+        &self,
+        w: f64,
+        opt: &LineContactOptions,
+        depth: usize,
+        iters: &mut usize,
+        (h_est, b, ph): (f64, f64, f64),
+    ) -> Result<(State, bool)> {
+        let mut st = self.initial_state(Constraint::LoadPerLength(w), h_est, b, ph);
+        let (ok, it) = self.newton(&mut st, Constraint::LoadPerLength(w), opt)?;
+        *iters += it;
+        if ok || depth >= opt.continuation_steps {
+            return Ok((st, ok));
+        }
+        let lighter_guess = (
+            h_est * 1.1,
+            b * std::f64::consts::FRAC_1_SQRT_2,
+            ph * std::f64::consts::FRAC_1_SQRT_2,
+        );
+        let (lighter, ok_l) =
+            self.load_continuation(0.5 * w, opt, depth + 1, iters, lighter_guess)?;
+        if !ok_l {
+            return Ok((lighter, false));
+        }
+        let mut st = lighter;
+        let (ok, it) = self.newton(&mut st, Constraint::LoadPerLength(w), opt)?;
+        *iters += it;
+        Ok((st, ok))
+    }
+
+    /// Initial guess: Hertz pressure with the film `hload` for elastic problems under a load
+    /// (half-width `bb`, pressure `phh`); otherwise the rigid analytic (Martin, Barus-reduced)
+    /// solution at the film `hload`. Ambient pressure, full film at both ends.
+    fn initial_state(&self, con: Constraint, hload: f64, bb: f64, phh: f64) -> State {
+        let n = self.n();
+        let mut st =
+            if self.infl.is_some() && matches!(con, Constraint::LoadPerLength(_)) && bb > 0.0 {
+                self.hertz_start(hload, bb, phh)
+            } else {
+                self.martin_start(hload)
+            };
+        st.p[0] = 0.0;
+        st.p[n - 1] = 0.0;
+        st.cav[0] = false;
+        st.cav[n - 1] = false;
+        st
+    }
+
+    /// Hertz pressure over |x| < b, cavitated beyond 1.2 b, film `hload` at the centre.
+    fn hertz_start(&self, hload: f64, bb: f64, phh: f64) -> State {
+        let n = self.n();
+        let mut st = State {
+            p: vec![0.0; n],
+            h: vec![0.0; n],
+            h0: 0.0,
+            cav: vec![false; n],
+        };
+        for i in 0..n {
+            let xi = self.x[i];
+            if xi.abs() < bb {
+                st.p[i] = phh * (1.0 - (xi / bb).powi(2)).sqrt();
+            }
+            st.cav[i] = xi > 1.2 * bb;
+        }
+        let d = self.deflection(&st.p);
+        let k0 = argmin(&self.x.iter().map(|v| v.abs()).collect::<Vec<_>>());
+        st.h0 = hload - self.geom[k0] - d[k0];
+        for i in 0..n {
+            st.h[i] = st.h0 + self.geom[i] + d[i];
+        }
+        st
+    }
+
+    /// Rigid Martin solution with squeeze at the film `hm`, the pressure reduced by Barus with
+    /// the initial pressure–viscosity slope.
+    fn martin_start(&self, hm: f64) -> State {
+        let n = self.n();
+        let r = self.c.radius;
+        let mut st = State {
+            p: vec![0.0; n],
+            h: vec![0.0; n],
+            h0: 0.0,
+            cav: vec![false; n],
+        };
+        let lh = (r * hm).sqrt();
+        let v = self.c.sum_speed().abs().max(1e-300);
+        let nu = self.vy / v * (r / hm).sqrt();
+        let c = analytic::exit_parameter(nu.clamp(-0.2, 0.2)).unwrap_or(0.67);
+        let mu0 = self.visc.viscosity(0.0, self.c.temperature);
+        let p0 = analytic::pressure_scale(mu0, v, r, hm);
+        let al = self.visc.dln_viscosity_dp(0.0, self.c.temperature) * p0;
+        for i in 0..n {
+            let xt = self.x[i] / lh;
+            let q = if xt < c {
+                analytic::q(xt, c, nu.clamp(-0.2, 0.2)).max(0.0)
+            } else {
+                0.0
+            };
+            let qq = if al > 0.0 && al * q < 0.95 {
+                -(1.0 - al * q).ln() / al
+            } else {
+                q
+            };
+            st.p[i] = qq * p0;
+            st.cav[i] = xt > 1.3 * c + 0.2;
+        }
+        st.h0 = hm;
+        let d = self.deflection(&st.p);
+        for i in 0..n {
+            st.h[i] = hm + self.geom[i] + d[i];
+        }
+        st
     }
 }
 
