@@ -554,41 +554,8 @@ impl<'a> Ehl<'a> {
         let mut small_steps = 0;
         for it in 0..opt.max_iterations {
             let (dp, dh, dh0) = self.step(st, &res, con)?;
-            // step length: limit wild pressure changes; films are kept positive by clipping each
-            // node at a tenth of its previous value (a projection, not a global step cut)
-            let mut alpha: f64 = 1.0;
-            let pmax = st.p.iter().fold(self.ps, |a, &v| a.max(v));
-            let dpmax = dp.iter().fold(0.0f64, |a, &v| a.max(v.abs()));
-            if dpmax > 2.0 * pmax {
-                alpha = alpha.min(2.0 * pmax / dpmax);
-            }
-            // trust region on the pressure: no node changes by more than half its value (or 5 %
-            // of the maximum) per iteration
-            let floor = 0.05 * pmax;
-            for i in 0..n {
-                let lim = 0.5 * st.p[i].max(floor);
-                if dp[i].abs() > lim {
-                    alpha = alpha.min(lim / dp[i].abs());
-                }
-            }
-            let f0 = Self::norm(&res.r);
-            let mut trial = st.clone();
-            let mut tres;
-            let mut tries = 0;
-            loop {
-                for i in 0..n {
-                    trial.p[i] = st.p[i] + alpha * dp[i];
-                    trial.h[i] = (st.h[i] + alpha * dh[i]).max(0.1 * st.h[i]);
-                }
-                trial.h0 = st.h0 + alpha * dh0;
-                tres = self.residual(&trial, con);
-                let f1 = Self::norm(&tres.r);
-                if f1.is_finite() && (f1 < f0 * (1.0 - 1e-4 * alpha) || tries >= 6) {
-                    break;
-                }
-                alpha *= 0.5;
-                tries += 1;
-            }
+            let (alpha, pmax, dpmax) = self.step_limit(st, &dp);
+            let (trial, tres, alpha) = self.line_search(st, &res, con, (&dp, &dh, dh0), alpha);
             if !tres.r.iter().all(|v| v.is_finite()) {
                 return Ok((false, it + 1));
             }
@@ -602,37 +569,7 @@ impl<'a> Ehl<'a> {
                 small_steps = 0;
             }
             *st = trial;
-            // complementarity update
-            let mut changed = false;
-            for i in 1..n - 1 {
-                if st.cav[i] {
-                    // release where the flow balance asks for pressure
-                    let lam = -self.reynolds(st, &tres.q, i);
-                    if lam < 0.0 && flips[i] < 8 {
-                        st.cav[i] = false;
-                        flips[i] += 1;
-                        changed = true;
-                    }
-                } else if st.p[i] < self.pcav && flips[i] < 8 {
-                    st.cav[i] = true;
-                    st.p[i] = self.pcav;
-                    flips[i] += 1;
-                    changed = true;
-                }
-            }
-            // free-boundary jump: release the cavitated nodes between the discrete exit and the
-            // flux-balance estimate of the exit at once (the active set alone moves one node per
-            // iteration)
-            let kmax = (0..n).fold(0, |k, i| if st.p[i] > st.p[k] { i } else { k });
-            if let Some((k, xc)) = self.exit(st, kmax) {
-                let mut j = k;
-                while j + 1 < n && st.cav[j] && self.x[j] < xc && flips[j] < 8 {
-                    st.cav[j] = false;
-                    flips[j] += 1;
-                    changed = true;
-                    j += 1;
-                }
-            }
+            let changed = self.update_active_set(st, &tres.q, &mut flips);
             res = if changed {
                 self.residual(st, con)
             } else {
@@ -654,6 +591,95 @@ impl<'a> Ehl<'a> {
             }
         }
         Ok((false, opt.max_iterations))
+    }
+
+    /// Largest step length for the pressure change `dp`, with the pressure maximum (at least
+    /// p_s) and the largest |dp|: (α, p_max, |dp|_max).
+    fn step_limit(&self, st: &State, dp: &[f64]) -> (f64, f64, f64) {
+        // step length: limit wild pressure changes; films are kept positive by clipping each
+        // node at a tenth of its previous value (a projection, not a global step cut)
+        let mut alpha: f64 = 1.0;
+        let pmax = st.p.iter().fold(self.ps, |a, &v| a.max(v));
+        let dpmax = dp.iter().fold(0.0f64, |a, &v| a.max(v.abs()));
+        if dpmax > 2.0 * pmax {
+            alpha = alpha.min(2.0 * pmax / dpmax);
+        }
+        // trust region on the pressure: no node changes by more than half its value (or 5 %
+        // of the maximum) per iteration
+        let floor = 0.05 * pmax;
+        for i in 0..self.n() {
+            let lim = 0.5 * st.p[i].max(floor);
+            if dp[i].abs() > lim {
+                alpha = alpha.min(lim / dp[i].abs());
+            }
+        }
+        (alpha, pmax, dpmax)
+    }
+
+    /// Backtracking from the step length `alpha` (halved up to 6 times) until the residual norm
+    /// decreases sufficiently: the trial state, its residual and the step length taken.
+    fn line_search(
+        &self,
+        st: &State,
+        res: &Residual,
+        con: Constraint,
+        (dp, dh, dh0): (&[f64], &[f64], f64),
+        mut alpha: f64,
+    ) -> (State, Residual, f64) {
+        let f0 = Self::norm(&res.r);
+        let mut trial = st.clone();
+        let mut tries = 0;
+        loop {
+            for i in 0..self.n() {
+                trial.p[i] = st.p[i] + alpha * dp[i];
+                trial.h[i] = (st.h[i] + alpha * dh[i]).max(0.1 * st.h[i]);
+            }
+            trial.h0 = st.h0 + alpha * dh0;
+            let tres = self.residual(&trial, con);
+            let f1 = Self::norm(&tres.r);
+            if f1.is_finite() && (f1 < f0 * (1.0 - 1e-4 * alpha) || tries >= 6) {
+                return (trial, tres, alpha);
+            }
+            alpha *= 0.5;
+            tries += 1;
+        }
+    }
+
+    /// Complementarity update of the cavitated set (each node may flip at most 8 times), then
+    /// the free-boundary jump. Returns whether the set changed.
+    fn update_active_set(&self, st: &mut State, q: &[NodeQ], flips: &mut [u8]) -> bool {
+        let n = self.n();
+        let mut changed = false;
+        for i in 1..n - 1 {
+            if st.cav[i] {
+                // release where the flow balance asks for pressure
+                let lam = -self.reynolds(st, q, i);
+                if lam < 0.0 && flips[i] < 8 {
+                    st.cav[i] = false;
+                    flips[i] += 1;
+                    changed = true;
+                }
+            } else if st.p[i] < self.pcav && flips[i] < 8 {
+                st.cav[i] = true;
+                st.p[i] = self.pcav;
+                flips[i] += 1;
+                changed = true;
+            }
+        }
+        // free-boundary jump: release the cavitated nodes between the discrete exit and the
+        // flux-balance estimate of the exit at once (the active set alone moves one node per
+        // iteration)
+        let kmax = (0..n).fold(0, |k, i| if st.p[i] > st.p[k] { i } else { k });
+        if let Some((k, xc)) = self.exit(st, kmax) {
+            let mut j = k;
+            while j + 1 < n && st.cav[j] && self.x[j] < xc && flips[j] < 8 {
+                st.cav[j] = false;
+                flips[j] += 1;
+                changed = true;
+                j += 1;
+            }
+        }
+        changed
     }
 }
 
