@@ -740,9 +740,7 @@ fn solve_min_film_elastic(
     .unwrap_or(0.0);
     let mu0 = viscosity.viscosity(0.0, contact.temperature);
     let w_rigid = analytic::kapitsa(mu0, contact.sum_speed().abs(), contact.radius, h_target).1;
-    let mut iters = 0usize;
-    let mut lo = est.max(w_rigid).max(1e-12);
-    let mut hi = lo;
+    let start = est.max(w_rigid).max(1e-12);
     let ep = contact.compliance.e_prime().unwrap_or(2.3e11);
     // fixed domain from a generous load bound (16× the start)
     let domain = |w: f64| {
@@ -750,65 +748,26 @@ fn solve_min_film_elastic(
         let lh = (contact.radius * h_target).sqrt();
         (-(4.5 * b).max(30.0 * lh), (1.5 * b).max(5.0 * lh))
     };
-    let (mut xin, mut xout) = domain(16.0 * lo);
+    let (mut xin, mut xout) = domain(16.0 * start);
     if let Some(v) = options.inlet {
         xin = v;
     }
     if let Some(v) = options.outlet {
         xout = v;
     }
-    let opt = LineContactOptions {
-        inlet: Some(xin),
-        outlet: Some(xout),
-        damping: false,
-        ..*options
-    };
-    let eval = |w: f64, iters: &mut usize| -> Result<(f64, LineContactResult)> {
-        let r = solve_direct(contact, viscosity, Constraint::LoadPerLength(w), &opt)?;
-        *iters += r.iterations;
-        Ok(((r.min_film_m / h_target).ln(), r))
-    };
-    let (mut flo, _) = eval(lo, &mut iters)?;
-    let mut fhi = flo;
-    let mut guard = 0;
-    while flo < 0.0 && guard < 12 {
-        hi = lo;
-        fhi = flo;
-        lo *= 0.25;
-        flo = eval(lo, &mut iters)?.0;
-        guard += 1;
-    }
-    while fhi > 0.0 && guard < 12 {
-        lo = hi;
-        flo = fhi;
-        hi *= 4.0;
-        fhi = eval(hi, &mut iters)?.0;
-        guard += 1;
-    }
-    if flo * fhi > 0.0 {
-        return Err(ReynoldsError::NoSolution(format!(
-            "no load gives the minimum film {h_target} m within [{lo:.3e}, {hi:.3e}] N/m"
-        )));
-    }
-    let mut last = None;
-    let (lw, _, _) = crate::roots::brent(
-        |u| {
-            let (f, r) = eval(u.exp(), &mut iters)?;
-            last = Some(r);
-            Ok(f)
+    let mut search = FilmSearch {
+        contact,
+        viscosity,
+        h_target,
+        options: LineContactOptions {
+            inlet: Some(xin),
+            outlet: Some(xout),
+            damping: false,
+            ..*options
         },
-        lo.ln(),
-        hi.ln(),
-        flo,
-        fhi,
-        1e-10,
-        1e-7,
-        60,
-    )?;
-    let mut res = match last {
-        Some(r) if (r.load_per_length_n_per_m.ln() - lw).abs() < 1e-9 => r,
-        _ => eval(lw.exp(), &mut iters)?.1,
+        iters: 0,
     };
+    let mut res = search.root(start)?;
     if options.damping {
         // damping at the converged rigid approach (same domain)
         let d = solve_direct(
@@ -817,15 +776,95 @@ fn solve_min_film_elastic(
             Constraint::RigidApproach(res.rigid_approach_m),
             &LineContactOptions {
                 damping: true,
-                ..opt
+                ..search.options
             },
         )?;
-        iters += d.iterations;
+        search.iters += d.iterations;
         res.damping_ns_per_m2 = d.damping_ns_per_m2;
     }
-    res.iterations = iters;
+    res.iterations = search.iters;
     res.solve_time_s = t0.elapsed().as_secs_f64();
     Ok(res)
+}
+
+/// The load search of [`solve_min_film_elastic`]: ln(h_min(W)/h) on a fixed domain.
+struct FilmSearch<'a> {
+    contact: &'a LubricatedLineContact,
+    viscosity: &'a dyn Viscosity,
+    /// Target minimum film, m.
+    h_target: f64,
+    /// Options of the load-controlled solves (fixed domain, no damping).
+    options: LineContactOptions,
+    /// Newton iterations of all solves.
+    iters: usize,
+}
+
+impl FilmSearch<'_> {
+    /// ln(h_min/h) of the load-controlled solution at `w` (N/m), and that solution.
+    fn eval(&mut self, w: f64) -> Result<(f64, LineContactResult)> {
+        let r = solve_direct(
+            self.contact,
+            self.viscosity,
+            Constraint::LoadPerLength(w),
+            &self.options,
+        )?;
+        self.iters += r.iterations;
+        Ok(((r.min_film_m / self.h_target).ln(), r))
+    }
+
+    /// Bracket of the load from `start` (N/m): lowered, then raised, fourfold (12 steps in
+    /// all) until ln(h_min/h) changes sign: (lo, hi, f(lo), f(hi)).
+    fn bracket(&mut self, start: f64) -> Result<(f64, f64, f64, f64)> {
+        let (mut lo, mut hi) = (start, start);
+        let (mut flo, _) = self.eval(lo)?;
+        let mut fhi = flo;
+        let mut guard = 0;
+        while flo < 0.0 && guard < 12 {
+            hi = lo;
+            fhi = flo;
+            lo *= 0.25;
+            flo = self.eval(lo)?.0;
+            guard += 1;
+        }
+        while fhi > 0.0 && guard < 12 {
+            lo = hi;
+            flo = fhi;
+            hi *= 4.0;
+            fhi = self.eval(hi)?.0;
+            guard += 1;
+        }
+        if flo * fhi > 0.0 {
+            return Err(ReynoldsError::NoSolution(format!(
+                "no load gives the minimum film {} m within [{lo:.3e}, {hi:.3e}] N/m",
+                self.h_target
+            )));
+        }
+        Ok((lo, hi, flo, fhi))
+    }
+
+    /// Brent search on ln W of the bracket from `start`: the solution at the root.
+    fn root(&mut self, start: f64) -> Result<LineContactResult> {
+        let (lo, hi, flo, fhi) = self.bracket(start)?;
+        let mut last = None;
+        let (lw, _, _) = crate::roots::brent(
+            |u| {
+                let (f, r) = self.eval(u.exp())?;
+                last = Some(r);
+                Ok(f)
+            },
+            lo.ln(),
+            hi.ln(),
+            flo,
+            fhi,
+            1e-10,
+            1e-7,
+            60,
+        )?;
+        match last {
+            Some(r) if (r.load_per_length_n_per_m.ln() - lw).abs() < 1e-9 => Ok(r),
+            _ => Ok(self.eval(lw.exp())?.1),
+        }
+    }
 }
 
 /// Solves the line contact on one domain (the domain and grid from the film and load estimate
