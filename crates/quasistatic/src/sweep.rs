@@ -70,3 +70,36 @@ pub fn sweep(
         })
         .collect()
 }
+
+/// The error of the first point when every point of the sweep failed (the sweep then has no
+/// result at all); `None` when some point solved or the sweep is empty.
+pub fn all_failed(points: &[SweepPoint]) -> Option<&QsError> {
+    if points.iter().all(|p| p.result.is_err()) {
+        points.first().and_then(|p| p.result.as_ref().err())
+    } else {
+        None
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn failed(value: f64) -> SweepPoint {
+        SweepPoint {
+            value,
+            result: Err(QsError::InvalidInput(format!("point {value}"))),
+        }
+    }
+
+    /// Only a sweep without any solved point reports an error, that of its first point.
+    #[test]
+    fn all_failed_reports_the_first_error() {
+        assert!(all_failed(&[]).is_none());
+        let points = [failed(1.0), failed(2.0)];
+        assert_eq!(
+            all_failed(&points).unwrap().to_string(),
+            "invalid input: point 1"
+        );
+    }
+}

@@ -6,13 +6,15 @@ use crate::output::{load_model, out_dir, print_json, write_csv};
 use rolldyn_geometry::BearingModel;
 use rolldyn_model::{Model, Temperatures};
 use rolldyn_plot::{Labels, Series, line_plot};
-use rolldyn_quasistatic::{QuasiStaticConditions, QuasiStaticOptions, SkidResult, SweepVariable};
+use rolldyn_quasistatic::{
+    QuasiStaticConditions, QuasiStaticOptions, SkidResult, SweepPoint, SweepVariable,
+};
 use rolldyn_setup::quasi_static::{
     LandChoice, QuasiStaticOverrides, RacewayFriction, cage_land_model, quasi_static_conditions,
 };
 use rolldyn_units::{AngularSpeed, Force, Quantity, QuantityRange, Temperature};
 use serde::Serialize;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 #[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
 pub enum FrictionName {
@@ -96,11 +98,16 @@ fn parse_temperatures(text: &str) -> Result<Temperatures, String> {
     Ok(parts)
 }
 
-fn single<D: rolldyn_units::Dim>(range: &Option<QuantityRange<D>>) -> Option<f64> {
+/// The values of a flag, SI.
+fn values<D: rolldyn_units::Dim>(range: &Option<QuantityRange<D>>) -> Option<Vec<f64>> {
     range
         .as_ref()
-        .and_then(|r| r.values.first())
-        .map(|q| q.si())
+        .map(|r| r.values.iter().map(|q| q.si()).collect())
+}
+
+/// The first value of a flag (the operating point of a sweep), SI.
+fn single<D: rolldyn_units::Dim>(range: &Option<QuantityRange<D>>) -> Option<f64> {
+    values(range).and_then(|v| v.first().copied())
 }
 
 /// The operating point of the model file, overridden by the flags (first value of a sweep).
@@ -118,6 +125,67 @@ fn conditions(args: &Args, model: &Model) -> Result<QuasiStaticConditions, Failu
     Ok(quasi_static_conditions(model, &overrides)?)
 }
 
+/// The variable swept by the flags and its values (SI), with its JSON/CSV key and plot label.
+struct Swept {
+    variable: SweepVariable,
+    key: &'static str,
+    label: &'static str,
+    values: Vec<f64>,
+}
+
+impl Swept {
+    /// The swept value as printed and plotted: rpm for speeds, N for the load.
+    fn shown(&self, v: f64) -> f64 {
+        if self.variable != SweepVariable::RadialLoad {
+            v * 30.0 / std::f64::consts::PI
+        } else {
+            v
+        }
+    }
+}
+
+/// The flag given with more than one value, if any (a single value only overrides the
+/// operating point); more than one swept flag is an error.
+fn swept(args: &Args) -> Result<Option<Swept>, Failure> {
+    let mut swept: Vec<Swept> = [
+        (
+            SweepVariable::InnerSpeed,
+            "inner_speed_rad_s",
+            "inner-ring speed, rpm",
+            values(&args.speed),
+        ),
+        (
+            SweepVariable::OuterSpeed,
+            "outer_speed_rad_s",
+            "outer-ring speed, rpm",
+            values(&args.outer_speed),
+        ),
+        (
+            SweepVariable::RadialLoad,
+            "radial_load_n",
+            "radial load, N",
+            values(&args.radial_load),
+        ),
+    ]
+    .into_iter()
+    .filter_map(|(variable, key, label, values)| {
+        values.filter(|v| v.len() > 1).map(|values| Swept {
+            variable,
+            key,
+            label,
+            values,
+        })
+    })
+    .collect();
+    match swept.len() {
+        0 => Ok(None),
+        1 => Ok(swept.pop()),
+        _ => Err(Failure::Input(
+            "sweep one variable at a time (--speed, --outer-speed or --radial-load)".into(),
+        )),
+    }
+}
+
 /// One row of a sweep table / JSON.
 #[derive(Serialize)]
 struct SweepRow {
@@ -131,6 +199,35 @@ struct SweepRow {
     error: Option<String>,
 }
 
+impl SweepRow {
+    fn new(p: &SweepPoint) -> Self {
+        match &p.result {
+            Ok(r) => SweepRow {
+                value: p.value,
+                cage_slip: Some(r.cage_slip),
+                cage_speed_rad_s: Some(r.cage_speed_rad_s),
+                epicyclic_cage_speed_rad_s: Some(r.epicyclic_cage_speed_rad_s),
+                max_roller_load_n: Some(r.max_roller_load_n),
+                power_loss_w: Some(r.power_loss_w),
+                min_scuffing_margin: r.min_scuffing_margin,
+                error: None,
+            },
+            Err(e) => SweepRow {
+                value: p.value,
+                cage_slip: None,
+                cage_speed_rad_s: None,
+                epicyclic_cage_speed_rad_s: None,
+                max_roller_load_n: None,
+                power_loss_w: None,
+                min_scuffing_margin: None,
+                error: Some(e.to_string()),
+            },
+        }
+    }
+}
+
+/// Solves the operating point, or the sweep, and prints it (text or JSON); a sweep also writes
+/// its table and plot to `--out`.
 pub fn run(args: Args) -> Result<(), Failure> {
     let model = load_model(args.model.as_deref())?;
     let BearingModel::Cylindrical(bearing) = &model.bearing else {
@@ -148,175 +245,111 @@ pub fn run(args: Args) -> Result<(), Failure> {
             LandName::Short => LandChoice::Short,
         },
     );
-    let swept: Vec<(SweepVariable, &str, &str, Vec<f64>)> = [
-        (
-            SweepVariable::InnerSpeed,
-            "inner_speed_rad_s",
-            "inner-ring speed, rpm",
-            args.speed
-                .as_ref()
-                .map(|r| r.values.iter().map(|q| q.si()).collect::<Vec<_>>()),
-        ),
-        (
-            SweepVariable::OuterSpeed,
-            "outer_speed_rad_s",
-            "outer-ring speed, rpm",
-            args.outer_speed
-                .as_ref()
-                .map(|r| r.values.iter().map(|q| q.si()).collect()),
-        ),
-        (
-            SweepVariable::RadialLoad,
-            "radial_load_n",
-            "radial load, N",
-            args.radial_load
-                .as_ref()
-                .map(|r| r.values.iter().map(|q| q.si()).collect()),
-        ),
-    ]
-    .into_iter()
-    .filter_map(|(v, key, label, values)| {
-        values
-            .filter(|v| v.len() > 1)
-            .map(|values| (v, key, label, values))
-    })
-    .collect();
-    match swept.as_slice() {
-        [] => {
-            let result =
-                rolldyn_quasistatic::solve_with_land_model(bearing, &base, &options, land.as_ref())
-                    .map_err(|e| Failure::Run(e.to_string()))?;
-            if args.json {
-                print_json(&result)
-            } else {
-                print_point(model.bearing.name(), &result);
-                Ok(())
-            }
+    let name = model.bearing.name();
+    let Some(swept) = swept(&args)? else {
+        let result =
+            rolldyn_quasistatic::solve_with_land_model(bearing, &base, &options, land.as_ref())
+                .map_err(|e| Failure::Run(e.to_string()))?;
+        if args.json {
+            return print_json(&result);
         }
-        [(variable, key, label, values)] => {
-            let points = rolldyn_quasistatic::sweep(
-                bearing,
-                &base,
-                &options,
-                land.as_ref(),
-                *variable,
-                values,
-            );
-            if let Some(Err(e)) = points
-                .iter()
-                .map(|p| &p.result)
-                .find(|r| r.is_err())
-                .filter(|_| points.iter().all(|p| p.result.is_err()))
-            {
-                return Err(Failure::Input(format!(
-                    "every point of the sweep failed: {e}"
-                )));
-            }
-            let rows: Vec<SweepRow> = points
-                .iter()
-                .map(|p| match &p.result {
-                    Ok(r) => SweepRow {
-                        value: p.value,
-                        cage_slip: Some(r.cage_slip),
-                        cage_speed_rad_s: Some(r.cage_speed_rad_s),
-                        epicyclic_cage_speed_rad_s: Some(r.epicyclic_cage_speed_rad_s),
-                        max_roller_load_n: Some(r.max_roller_load_n),
-                        power_loss_w: Some(r.power_loss_w),
-                        min_scuffing_margin: r.min_scuffing_margin,
-                        error: None,
-                    },
-                    Err(e) => SweepRow {
-                        value: p.value,
-                        cage_slip: None,
-                        cage_speed_rad_s: None,
-                        epicyclic_cage_speed_rad_s: None,
-                        max_roller_load_n: None,
-                        power_loss_w: None,
-                        min_scuffing_margin: None,
-                        error: Some(e.to_string()),
-                    },
-                })
-                .collect();
-            let is_speed = *variable != SweepVariable::RadialLoad;
-            let shown = |v: f64| {
-                if is_speed {
-                    v * 30.0 / std::f64::consts::PI
-                } else {
-                    v
-                }
-            };
-            if let Some(dir) = &args.out {
-                let dir = out_dir(dir)?;
-                let nan = f64::NAN;
-                write_csv(
-                    &dir.join("skid_sweep.csv"),
-                    &[
-                        key,
-                        "cage_slip",
-                        "cage_speed_rad_s",
-                        "epicyclic_cage_speed_rad_s",
-                        "max_roller_load_n",
-                        "power_loss_w",
-                        "min_scuffing_margin",
-                    ],
-                    rows.iter().map(|r| {
-                        vec![
-                            r.value,
-                            r.cage_slip.unwrap_or(nan),
-                            r.cage_speed_rad_s.unwrap_or(nan),
-                            r.epicyclic_cage_speed_rad_s.unwrap_or(nan),
-                            r.max_roller_load_n.unwrap_or(nan),
-                            r.power_loss_w.unwrap_or(nan),
-                            r.min_scuffing_margin.unwrap_or(nan),
-                        ]
-                    }),
-                )?;
-                let points: Vec<(f64, f64)> = rows
-                    .iter()
-                    .filter_map(|r| r.cage_slip.map(|s| (shown(r.value), s)))
-                    .collect();
-                line_plot(
-                    &dir.join("cage_slip.svg"),
-                    &Labels {
-                        title: &format!("{}: cage slip (quasi-static)", model.bearing.name()),
-                        x: label,
-                        y: "cage slip ε0",
-                    },
-                    &[Series {
-                        label: "",
-                        points: &points,
-                    }],
-                )?;
-            }
-            if args.json {
-                return print_json(&serde_json::json!({ "variable": key, "points": rows }));
-            }
-            println!(
-                "{}: quasi-static cage slip, sweep over {label}",
-                model.bearing.name()
-            );
-            for r in &rows {
-                match (r.cage_slip, &r.error) {
-                    (Some(s), _) => println!(
-                        "  {:>10.1}  slip {:>9.5}  cage {:>8.2} rad/s  max roller load {:>8.1} N  loss {:>7.2} W",
-                        shown(r.value),
-                        s,
-                        r.cage_speed_rad_s.unwrap_or(f64::NAN),
-                        r.max_roller_load_n.unwrap_or(f64::NAN),
-                        r.power_loss_w.unwrap_or(f64::NAN)
-                    ),
-                    (None, e) => println!(
-                        "  {:>10.1}  failed: {}",
-                        shown(r.value),
-                        e.as_deref().unwrap_or("")
-                    ),
-                }
-            }
-            Ok(())
+        print_point(name, &result);
+        return Ok(());
+    };
+    let points = rolldyn_quasistatic::sweep(
+        bearing,
+        &base,
+        &options,
+        land.as_ref(),
+        swept.variable,
+        &swept.values,
+    );
+    if let Some(e) = rolldyn_quasistatic::sweep::all_failed(&points) {
+        return Err(Failure::Input(format!(
+            "every point of the sweep failed: {e}"
+        )));
+    }
+    let rows: Vec<SweepRow> = points.iter().map(SweepRow::new).collect();
+    if let Some(dir) = &args.out {
+        write_sweep_files(&out_dir(dir)?, name, &swept, &rows)?;
+    }
+    if args.json {
+        return print_json(&serde_json::json!({ "variable": swept.key, "points": rows }));
+    }
+    print_sweep(name, &swept, &rows);
+    Ok(())
+}
+
+/// The sweep table (skid_sweep.csv, NaN where a point failed) and the cage-slip plot
+/// (cage_slip.svg) in `dir`.
+fn write_sweep_files(
+    dir: &Path,
+    name: &str,
+    swept: &Swept,
+    rows: &[SweepRow],
+) -> Result<(), Failure> {
+    let nan = f64::NAN;
+    write_csv(
+        &dir.join("skid_sweep.csv"),
+        &[
+            swept.key,
+            "cage_slip",
+            "cage_speed_rad_s",
+            "epicyclic_cage_speed_rad_s",
+            "max_roller_load_n",
+            "power_loss_w",
+            "min_scuffing_margin",
+        ],
+        rows.iter().map(|r| {
+            vec![
+                r.value,
+                r.cage_slip.unwrap_or(nan),
+                r.cage_speed_rad_s.unwrap_or(nan),
+                r.epicyclic_cage_speed_rad_s.unwrap_or(nan),
+                r.max_roller_load_n.unwrap_or(nan),
+                r.power_loss_w.unwrap_or(nan),
+                r.min_scuffing_margin.unwrap_or(nan),
+            ]
+        }),
+    )?;
+    let points: Vec<(f64, f64)> = rows
+        .iter()
+        .filter_map(|r| r.cage_slip.map(|s| (swept.shown(r.value), s)))
+        .collect();
+    line_plot(
+        &dir.join("cage_slip.svg"),
+        &Labels {
+            title: &format!("{name}: cage slip (quasi-static)"),
+            x: swept.label,
+            y: "cage slip ε0",
+        },
+        &[Series {
+            label: "",
+            points: &points,
+        }],
+    )?;
+    Ok(())
+}
+
+/// The sweep as a text table (speeds in rpm).
+fn print_sweep(name: &str, swept: &Swept, rows: &[SweepRow]) {
+    println!("{name}: quasi-static cage slip, sweep over {}", swept.label);
+    for r in rows {
+        match (r.cage_slip, &r.error) {
+            (Some(s), _) => println!(
+                "  {:>10.1}  slip {:>9.5}  cage {:>8.2} rad/s  max roller load {:>8.1} N  loss {:>7.2} W",
+                swept.shown(r.value),
+                s,
+                r.cage_speed_rad_s.unwrap_or(f64::NAN),
+                r.max_roller_load_n.unwrap_or(f64::NAN),
+                r.power_loss_w.unwrap_or(f64::NAN)
+            ),
+            (None, e) => println!(
+                "  {:>10.1}  failed: {}",
+                swept.shown(r.value),
+                e.as_deref().unwrap_or("")
+            ),
         }
-        _ => Err(Failure::Input(
-            "sweep one variable at a time (--speed, --outer-speed or --radial-load)".into(),
-        )),
     }
 }
 

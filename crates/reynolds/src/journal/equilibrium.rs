@@ -69,96 +69,151 @@ pub fn solve_load(
             reason: format!("{load_n} N: must be finite and > 0"),
         });
     }
-    let c = bearing.clearance;
-    let dir = {
-        let a = working_angle(options);
-        (a.cos(), a.sin())
+    let a = working_angle(options);
+    let mut search = LoadSearch {
+        bearing,
+        viscosity,
+        op,
+        options,
+        dir: (a.cos(), a.sin()),
+        load_n,
+        target: load_n.ln(),
+        evals: 0,
+        solves: 0,
+        last: None,
     };
-    let target = load_n.ln();
-    let mut evals = 0usize;
-    let mut solves = 0usize;
-    let mut last: Option<JournalState> = None;
-    let mut eval = |eps: f64, last: &mut Option<JournalState>| -> Result<f64> {
-        let st = solve_state_impl(
-            bearing,
-            viscosity,
-            op,
-            [eps * c * dir.0, eps * c * dir.1],
-            [0.0, 0.0],
-            options,
-            last.as_ref(),
-            None,
-        )?;
-        evals += 1;
-        solves += st.iterations;
-        let f = st.force[0].hypot(st.force[1]).max(1e-300).ln() - target;
-        *last = Some(st);
-        Ok(f)
-    };
-    // bracket, then Brent in u = −ln(1 − ε) (ln W is close to linear in u at large ε)
-    let emax = options.max_eccentricity.min(0.9999);
-    let (mut a, mut b) = (0.05f64, emax);
-    let mut fb = eval(b, &mut last)?;
-    if fb < 0.0 {
-        return Err(ReynoldsError::NoSolution(format!(
-            "load {load_n} N exceeds the capacity {:.4e} N at ε = {emax}",
-            (fb + target).exp()
-        )));
-    }
-    let mut fa = eval(a, &mut last)?;
-    while fa > 0.0 {
-        b = a;
-        fb = fa;
-        a *= 0.1;
-        if a < 1e-9 {
-            return Err(ReynoldsError::NoSolution(format!(
-                "load {load_n} N is below the capacity at ε = 1e-9"
-            )));
-        }
-        fa = eval(a, &mut last)?;
-    }
-    let u = |e: f64| -(1.0 - e).ln();
-    let inv = |u: f64| 1.0 - (-u).exp();
-    let (root, _, _) = match crate::roots::brent(
-        |uu| eval(inv(uu), &mut last),
-        u(a),
-        u(b),
-        fa,
-        fb,
-        1e-13,
-        options.load_tolerance,
-        options.max_load_iterations,
-    ) {
-        Ok(v) => v,
-        Err(ReynoldsError::NotConverged { .. }) => (f64::NAN, 0.0, 0),
-        Err(e) => return Err(e),
-    };
-    let converged = root.is_finite();
-    // re-evaluate at the root so that the returned state is the one at ε (Brent's last
-    // evaluation is not always the best point)
-    let eps = if converged { inv(root) } else { 0.5 * (a + b) };
-    if converged
-        && last
-            .as_ref()
-            .map(|s| ((s.force[0].hypot(s.force[1])).ln() - target).abs())
-            > Some(options.load_tolerance)
-    {
-        eval(eps, &mut last)?;
-    }
-    let st = last.ok_or(ReynoldsError::Singular("equilibrium search"))?;
+    let (eps, converged) = search.equilibrium()?;
+    let e = search.position(eps);
+    let st = search
+        .last
+        .ok_or(ReynoldsError::Singular("equilibrium search"))?;
     let mut res = finish(
         bearing,
         viscosity,
         op,
-        [eps * c * dir.0, eps * c * dir.1],
+        e,
         st,
         options,
-        evals,
+        search.evals,
         converged,
         t0,
     )?;
-    res.iterations = solves;
+    res.iterations = search.solves;
     Ok(res)
+}
+
+/// The equilibrium search of [`solve_load`]: ln|F|(ε) − ln W bracketed, then its root by Brent.
+struct LoadSearch<'a> {
+    bearing: &'a JournalBearing,
+    viscosity: &'a dyn Viscosity,
+    op: &'a JournalOperating,
+    options: &'a JournalOptions,
+    /// Direction of the journal displacement in the bearing frame (cos, sin).
+    dir: (f64, f64),
+    /// Load W, N.
+    load_n: f64,
+    /// ln W.
+    target: f64,
+    /// States evaluated.
+    evals: usize,
+    /// Direct Reynolds solves of those states.
+    solves: usize,
+    /// Last state evaluated (the warm start of the next).
+    last: Option<JournalState>,
+}
+
+impl LoadSearch<'_> {
+    /// Journal position at eccentricity ratio `eps`, m.
+    fn position(&self, eps: f64) -> [f64; 2] {
+        let c = self.bearing.clearance;
+        [eps * c * self.dir.0, eps * c * self.dir.1]
+    }
+
+    /// ln|F(ε)| − ln W, warm-started from the last state.
+    fn eval(&mut self, eps: f64) -> Result<f64> {
+        let st = solve_state_impl(
+            self.bearing,
+            self.viscosity,
+            self.op,
+            self.position(eps),
+            [0.0, 0.0],
+            self.options,
+            self.last.as_ref(),
+            None,
+        )?;
+        self.evals += 1;
+        self.solves += st.iterations;
+        let f = st.force[0].hypot(st.force[1]).max(1e-300).ln() - self.target;
+        self.last = Some(st);
+        Ok(f)
+    }
+
+    /// Equilibrium eccentricity ratio and whether the search converged (otherwise the middle of
+    /// the bracket); `last` holds the state there.
+    fn equilibrium(&mut self) -> Result<(f64, bool)> {
+        let (a, b, fa, fb) = self.bracket()?;
+        let options = self.options;
+        // Brent in u = −ln(1 − ε) (ln W is close to linear in u at large ε)
+        let u = |e: f64| -(1.0 - e).ln();
+        let inv = |u: f64| 1.0 - (-u).exp();
+        let (root, _, _) = match crate::roots::brent(
+            |uu| self.eval(inv(uu)),
+            u(a),
+            u(b),
+            fa,
+            fb,
+            1e-13,
+            options.load_tolerance,
+            options.max_load_iterations,
+        ) {
+            Ok(v) => v,
+            Err(ReynoldsError::NotConverged { .. }) => (f64::NAN, 0.0, 0),
+            Err(e) => return Err(e),
+        };
+        let converged = root.is_finite();
+        // re-evaluate at the root so that the returned state is the one at ε (Brent's last
+        // evaluation is not always the best point)
+        let eps = if converged { inv(root) } else { 0.5 * (a + b) };
+        if converged
+            && self
+                .last
+                .as_ref()
+                .map(|s| ((s.force[0].hypot(s.force[1])).ln() - self.target).abs())
+                > Some(options.load_tolerance)
+        {
+            self.eval(eps)?;
+        }
+        Ok((eps, converged))
+    }
+
+    /// Bracket [a, b] of the equilibrium with the function values (f(a) ≤ 0 ≤ f(b)): b at the
+    /// largest eccentricity allowed, a lowered tenfold from 0.05 until the load exceeds the
+    /// capacity there.
+    fn bracket(&mut self) -> Result<(f64, f64, f64, f64)> {
+        let load_n = self.load_n;
+        let emax = self.options.max_eccentricity.min(0.9999);
+        let (mut a, mut b) = (0.05f64, emax);
+        let mut fb = self.eval(b)?;
+        if fb < 0.0 {
+            return Err(ReynoldsError::NoSolution(format!(
+                "load {load_n} N exceeds the capacity {:.4e} N at ε = {emax}",
+                (fb + self.target).exp()
+            )));
+        }
+        let mut fa = self.eval(a)?;
+        while fa > 0.0 {
+            b = a;
+            fb = fa;
+            a *= 0.1;
+            if a < 1e-9 {
+                return Err(ReynoldsError::NoSolution(format!(
+                    "load {load_n} N is below the capacity at ε = 1e-9"
+                )));
+            }
+            fa = self.eval(a)?;
+        }
+        Ok((a, b, fa, fb))
+    }
 }
 
 #[allow(clippy::too_many_arguments)]

@@ -115,6 +115,18 @@ pub enum CavitatedShear {
     None,
 }
 
+impl CavitatedShear {
+    /// Fraction of the full-film Couette shear carried by a cavitated node of fill fraction
+    /// `fill`.
+    pub(crate) fn factor(self, fill: f64) -> f64 {
+        match self {
+            CavitatedShear::FillFraction => fill,
+            CavitatedShear::FullFilm => 1.0,
+            CavitatedShear::None => 0.0,
+        }
+    }
+}
+
 /// Where the pressure film may start when no feed groove is given.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum FilmStart {

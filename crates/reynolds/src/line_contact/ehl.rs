@@ -3,7 +3,7 @@
 
 use super::analytic;
 use super::{Constraint, LineContactOptions, LineContactResult, LineGrid, LubricatedLineContact};
-use crate::banded::{BandMatrix, Bordered};
+use crate::banded::{BandLu, BandMatrix, Bordered, BorderedFactor};
 use crate::compliance::Influence;
 use crate::error::{Result, ReynoldsError, finite, positive};
 use crate::grid::Grid1d;
@@ -54,6 +54,20 @@ struct State {
     h: Vec<f64>,
     h0: f64,
     cav: Vec<bool>,
+}
+
+/// Column of an unknown in the bordered Jacobian: band block or border.
+enum Col {
+    A(usize),
+    B(usize),
+}
+
+/// Scaled bordered Jacobian [[A, E], [F, G]] of a Newton step (see [`Bordered`]).
+struct Jacobian {
+    a: BandMatrix,
+    e: Vec<Vec<f64>>,
+    f: Vec<Vec<f64>>,
+    g: [f64; 9],
 }
 
 struct Residual {
@@ -146,12 +160,24 @@ impl<'a> Ehl<'a> {
         self.ls / (self.vref * self.hs * self.cell[i].max(1e-300))
     }
 
-    /// Unscaled Reynolds residual of node i (1 ≤ i ≤ n−2).
-    fn reynolds(&self, st: &State, q: &[NodeQ], i: usize) -> f64 {
+    /// Scale of the elastic rows, l_s²/h_s.
+    fn elastic_row_scale(&self) -> f64 {
+        self.ls * self.ls / self.hs
+    }
+
+    /// Spacings east and west of interior node i and the Poiseuille conductances of those
+    /// faces: (Δx_e, Δx_w, a_e, a_w), a = ε̄/Δx with ε̄ the face mean.
+    fn conductances(&self, q: &[NodeQ], i: usize) -> (f64, f64, f64, f64) {
         let x = &self.x;
         let (dxe, dxw) = (x[i + 1] - x[i], x[i] - x[i - 1]);
         let ae = 0.5 * (q[i].eps + q[i + 1].eps) / dxe;
         let aw = 0.5 * (q[i - 1].eps + q[i].eps) / dxw;
+        (dxe, dxw, ae, aw)
+    }
+
+    /// Unscaled Reynolds residual of node i (1 ≤ i ≤ n−2).
+    fn reynolds(&self, st: &State, q: &[NodeQ], i: usize) -> f64 {
+        let (_, _, ae, aw) = self.conductances(q, i);
         let ge: f64 = self.face(i).iter().map(|&(k, w)| w * q[k].g).sum();
         let gw: f64 = self.face(i - 1).iter().map(|&(k, w)| w * q[k].g).sum();
         ae * (st.p[i + 1] - st.p[i])
@@ -175,7 +201,7 @@ impl<'a> Ehl<'a> {
             };
         }
         // elastic rows
-        let se = self.ls * self.ls / self.hs;
+        let se = self.elastic_row_scale();
         for i in 1..n - 1 {
             let l = self.lap(i);
             let mut v = 0.0;
@@ -209,91 +235,125 @@ impl<'a> Ehl<'a> {
         res: &Residual,
         con: Constraint,
     ) -> Result<(Vec<f64>, Vec<f64>, f64)> {
-        let n = self.n();
         let na = self.na();
         let bw = (2 * self.w + 2).max(6);
-        let mut a = BandMatrix::new(na, bw, bw);
-        let mut e = vec![vec![0.0; na]; 3];
-        let mut f = vec![vec![0.0; na]; 3];
-        let mut g = [0.0; 9];
-        let (ps, hs) = (self.ps, self.hs);
-        // column helper: (block column, scale) for p_k / h_k
-        enum Col {
-            A(usize),
-            B(usize),
-        }
-        let col_p = |k: usize| Col::A(self.pos_p(k));
-        let col_h = |k: usize| {
-            if k == 0 {
-                Col::B(0)
-            } else if k == n - 1 {
-                Col::B(1)
-            } else {
-                Col::A(self.pos_h(k))
-            }
+        let mut jac = Jacobian {
+            a: BandMatrix::new(na, bw, bw),
+            e: vec![vec![0.0; na]; 3],
+            f: vec![vec![0.0; na]; 3],
+            g: [0.0; 9],
         };
-        let q = &res.q;
-        // Reynolds rows
+        self.reynolds_rows(st, &res.q, &mut jac);
+        self.elastic_rows(&mut jac);
+        self.border_rows(st, con, &mut jac);
+        let Jacobian { a, e, f, g } = jac;
+        let lu = a.factor()?;
+        let bf = Bordered {
+            a: &lu,
+            e: &e,
+            f: &f,
+            g: &g,
+        }
+        .factor()?;
+        let mut rhs: Vec<f64> = res.r[..na].iter().map(|v| -v).collect();
+        let mut rb: Vec<f64> = res.r[na..].iter().map(|v| -v).collect();
+        self.solve_linear(&bf, &mut rhs, &mut rb);
+        let (n, ps, hs) = (self.n(), self.ps, self.hs);
+        let mut dpv = vec![0.0; n];
+        let mut dhv = vec![0.0; n];
+        for i in 0..n {
+            dpv[i] = rhs[self.pos_p(i)] * ps;
+            dhv[i] = match self.col_h(i) {
+                Col::A(c) => rhs[c] * hs,
+                Col::B(b) => rb[b] * hs,
+            };
+        }
+        Ok((dpv, dhv, rb[2] * hs))
+    }
+
+    /// Jacobian column of h_k: the band block, or border column 0 / 1 for the end films.
+    fn col_h(&self, k: usize) -> Col {
+        if k == 0 {
+            Col::B(0)
+        } else if k == self.n() - 1 {
+            Col::B(1)
+        } else {
+            Col::A(self.pos_h(k))
+        }
+    }
+
+    /// Unscaled derivatives dR/dp_k and dR/dh_k of the Reynolds residual of interior node i,
+    /// k = i−2 … i+2 (index k + 2 − i).
+    fn reynolds_derivatives(&self, st: &State, q: &[NodeQ], i: usize) -> ([f64; 5], [f64; 5]) {
+        let (dxe, dxw, ae, aw) = self.conductances(q, i);
+        let (gpe, gpw) = (st.p[i + 1] - st.p[i], st.p[i] - st.p[i - 1]);
+        let mut dp = [0.0; 5];
+        let mut dh = [0.0; 5];
+        let o = |k: usize| k + 2 - i;
+        dp[o(i + 1)] += ae + 0.5 * q[i + 1].deps_dp / dxe * gpe;
+        dh[o(i + 1)] += 0.5 * q[i + 1].deps_dh / dxe * gpe;
+        dp[o(i)] += -ae - aw + 0.5 * q[i].deps_dp * (gpe / dxe - gpw / dxw);
+        dh[o(i)] += 0.5 * q[i].deps_dh * (gpe / dxe - gpw / dxw);
+        dp[o(i - 1)] += aw - 0.5 * q[i - 1].deps_dp / dxw * gpw;
+        dh[o(i - 1)] += -0.5 * q[i - 1].deps_dh / dxw * gpw;
+        for (face, sign) in [(i, -1.0), (i - 1, 1.0)] {
+            for (k, wgt) in self.face(face) {
+                if wgt != 0.0 {
+                    dp[o(k)] += sign * wgt * q[k].dg_dp;
+                    dh[o(k)] += sign * wgt * q[k].dg_dh;
+                }
+            }
+        }
+        dp[o(i)] -= q[i].drho * self.vy * self.cell[i];
+        (dp, dh)
+    }
+
+    /// Pressure rows: identity at the ends and cavitated nodes, the scaled Reynolds derivatives
+    /// elsewhere.
+    fn reynolds_rows(&self, st: &State, q: &[NodeQ], jac: &mut Jacobian) {
+        let n = self.n();
+        let (ps, hs) = (self.ps, self.hs);
         for i in 0..n {
             let row = self.pos_p(i);
             if i == 0 || i == n - 1 || st.cav[i] {
-                a.add(row, row, 1.0);
+                jac.a.add(row, row, 1.0);
                 continue;
             }
             let sr = self.reynolds_row_scale(i);
-            let x = &self.x;
-            let (dxe, dxw) = (x[i + 1] - x[i], x[i] - x[i - 1]);
-            let ae = 0.5 * (q[i].eps + q[i + 1].eps) / dxe;
-            let aw = 0.5 * (q[i - 1].eps + q[i].eps) / dxw;
-            let (gpe, gpw) = (st.p[i + 1] - st.p[i], st.p[i] - st.p[i - 1]);
-            // dR/dp_k and dR/dh_k, k = i−2 … i+2
-            let mut dp = [0.0; 5];
-            let mut dh = [0.0; 5];
-            let o = |k: usize| k + 2 - i;
-            dp[o(i + 1)] += ae + 0.5 * q[i + 1].deps_dp / dxe * gpe;
-            dh[o(i + 1)] += 0.5 * q[i + 1].deps_dh / dxe * gpe;
-            dp[o(i)] += -ae - aw + 0.5 * q[i].deps_dp * (gpe / dxe - gpw / dxw);
-            dh[o(i)] += 0.5 * q[i].deps_dh * (gpe / dxe - gpw / dxw);
-            dp[o(i - 1)] += aw - 0.5 * q[i - 1].deps_dp / dxw * gpw;
-            dh[o(i - 1)] += -0.5 * q[i - 1].deps_dh / dxw * gpw;
-            for (face, sign) in [(i, -1.0), (i - 1, 1.0)] {
-                for (k, wgt) in self.face(face) {
-                    if wgt != 0.0 {
-                        dp[o(k)] += sign * wgt * q[k].dg_dp;
-                        dh[o(k)] += sign * wgt * q[k].dg_dh;
-                    }
-                }
-            }
-            dp[o(i)] -= q[i].drho * self.vy * self.cell[i];
+            let (dp, dh) = self.reynolds_derivatives(st, q, i);
             for t in 0..5 {
                 let k = i + t;
                 if k < 2 || k - 2 >= n {
                     continue;
                 }
                 let k = k - 2;
-                if dp[t] != 0.0
-                    && let Col::A(c) = col_p(k)
-                {
-                    a.add(row, c, sr * dp[t] * ps);
+                if dp[t] != 0.0 {
+                    jac.a.add(row, self.pos_p(k), sr * dp[t] * ps);
                 }
                 if dh[t] != 0.0 {
-                    match col_h(k) {
-                        Col::A(c) => a.add(row, c, sr * dh[t] * hs),
-                        Col::B(b) => e[b][row] += sr * dh[t] * hs,
+                    match self.col_h(k) {
+                        Col::A(c) => jac.a.add(row, c, sr * dh[t] * hs),
+                        Col::B(b) => jac.e[b][row] += sr * dh[t] * hs,
                     }
                 }
             }
         }
-        // elastic rows
-        let se = self.ls * self.ls / hs;
+    }
+
+    /// Elastic rows: the second difference of the film and, within the near band, of the
+    /// deflection (L·D); the far part is applied by [`Self::far_apply`].
+    fn elastic_rows(&self, jac: &mut Jacobian) {
+        let n = self.n();
+        let (ps, hs) = (self.ps, self.hs);
+        let se = self.elastic_row_scale();
         for i in 1..n - 1 {
             let row = self.pos_h(i);
             let l = self.lap(i);
             for (t, c) in l.iter().enumerate() {
                 let k = i + t - 1;
-                match col_h(k) {
-                    Col::A(cc) => a.add(row, cc, se * c * hs),
-                    Col::B(b) => e[b][row] += se * c * hs,
+                match self.col_h(k) {
+                    Col::A(cc) => jac.a.add(row, cc, se * c * hs),
+                    Col::B(b) => jac.e[b][row] += se * c * hs,
                 }
             }
             if self.infl.is_some() {
@@ -302,11 +362,17 @@ impl<'a> Ehl<'a> {
                 let wb = 2 * self.w + 1;
                 for j in lo..=hi {
                     let ldij = self.ld_near[i * wb + (j + self.w - i)];
-                    a.add(row, self.pos_p(j), -se * ldij * ps);
+                    jac.a.add(row, self.pos_p(j), -se * ldij * ps);
                 }
             }
         }
-        // border rows: h end conditions and the constraint
+    }
+
+    /// Border rows: the film conditions at both ends and the constraint.
+    fn border_rows(&self, st: &State, con: Constraint, jac: &mut Jacobian) {
+        let n = self.n();
+        let (ps, hs) = (self.ps, self.hs);
+        let (f, g) = (&mut jac.f, &mut jac.g);
         if let Some(inf) = &self.infl {
             for j in 1..n - 1 {
                 f[0][self.pos_p(j)] = -inf.get(0, j) * ps / hs;
@@ -321,7 +387,7 @@ impl<'a> Ehl<'a> {
             Constraint::RigidApproach(_) => g[8] = 1.0,
             Constraint::MinFilm(_) => {
                 let k = argmin(&st.h);
-                match col_h(k) {
+                match self.col_h(k) {
                     Col::A(c) => f[2][c] = 1.0,
                     Col::B(b) => g[6 + b] = 1.0,
                 }
@@ -332,57 +398,43 @@ impl<'a> Ehl<'a> {
                 }
             }
         }
-        let lu = a.factor()?;
-        let bf = Bordered {
-            a: &lu,
-            e: &e,
-            f: &f,
-            g: &g,
-        }
-        .factor()?;
-        let mut rhs: Vec<f64> = res.r[..na].iter().map(|v| -v).collect();
-        let mut rb: Vec<f64> = res.r[na..].iter().map(|v| -v).collect();
+    }
+
+    /// Solves the scaled Newton system in place: directly when rigid; for elastic problems by
+    /// GMRES preconditioned with the near-band factorisation `bf`.
+    fn solve_linear(&self, bf: &BorderedFactor<'_, BandLu>, rhs: &mut [f64], rb: &mut [f64]) {
         if self.infl.is_none() {
-            bf.solve(&mut rhs, &mut rb);
-        } else {
-            // right-preconditioned GMRES: (J M⁻¹) y = −r with J = M + J_far, J_far the elastic
-            // influence beyond the near band (dense, applied by a matrix–vector product)
-            let mut b = rhs.clone();
-            b.extend_from_slice(&rb);
-            let bn = Self::norm(&b);
-            let tol = (self.lin_tol * bn).max(1e-14);
-            let prec = |v: &[f64]| -> Vec<f64> {
-                let mut va = v[..na].to_vec();
-                let mut vb = v[na..].to_vec();
-                bf.solve(&mut va, &mut vb);
-                va.extend_from_slice(&vb);
-                va
-            };
-            let (y, _, _) = crate::krylov::gmres(
-                |v, out| {
-                    let z = prec(v);
-                    out.copy_from_slice(v);
-                    self.far_apply(&z, out);
-                },
-                &b,
-                tol,
-                40,
-                400,
-            );
-            let z = prec(&y);
-            rhs.copy_from_slice(&z[..na]);
-            rb.copy_from_slice(&z[na..]);
+            bf.solve(rhs, rb);
+            return;
         }
-        let mut dpv = vec![0.0; n];
-        let mut dhv = vec![0.0; n];
-        for i in 0..n {
-            dpv[i] = rhs[self.pos_p(i)] * ps;
-            dhv[i] = match col_h(i) {
-                Col::A(c) => rhs[c] * hs,
-                Col::B(b) => rb[b] * hs,
-            };
-        }
-        Ok((dpv, dhv, rb[2] * hs))
+        let na = self.na();
+        // right-preconditioned GMRES: (J M⁻¹) y = −r with J = M + J_far, J_far the elastic
+        // influence beyond the near band (dense, applied by a matrix–vector product)
+        let mut b = rhs.to_vec();
+        b.extend_from_slice(rb);
+        let bn = Self::norm(&b);
+        let tol = (self.lin_tol * bn).max(1e-14);
+        let prec = |v: &[f64]| -> Vec<f64> {
+            let mut va = v[..na].to_vec();
+            let mut vb = v[na..].to_vec();
+            bf.solve(&mut va, &mut vb);
+            va.extend_from_slice(&vb);
+            va
+        };
+        let (y, _, _) = crate::krylov::gmres(
+            |v, out| {
+                let z = prec(v);
+                out.copy_from_slice(v);
+                self.far_apply(&z, out);
+            },
+            &b,
+            tol,
+            40,
+            400,
+        );
+        let z = prec(&y);
+        rhs.copy_from_slice(&z[..na]);
+        rb.copy_from_slice(&z[na..]);
     }
 
     /// Exit of the full film: first cavitated (or zero) node k after the pressure maximum `kmax`
@@ -438,7 +490,7 @@ impl<'a> Ehl<'a> {
         }
         let mut u = vec![0.0; n];
         inf.apply(&zp, &mut u);
-        let se = self.ls * self.ls / self.hs;
+        let se = self.elastic_row_scale();
         let wb = 2 * self.w + 1;
         for i in 1..n - 1 {
             let l = self.lap(i);
@@ -457,6 +509,38 @@ impl<'a> Ehl<'a> {
         r.iter().map(|v| v * v).sum::<f64>().sqrt()
     }
 
+    /// Squeeze damping −∂W′/∂V_y by central differences ±ΔV_y at the converged rigid approach
+    /// of `st`, N·s/m².
+    fn squeeze_damping(
+        &mut self,
+        st: &State,
+        options: &LineContactOptions,
+        total_iters: &mut usize,
+    ) -> Result<f64> {
+        let (r, vabs) = (self.c.radius, self.c.sum_speed().abs().max(1e-300));
+        let hm = st.h.iter().fold(f64::MAX, |a, &v| a.min(v));
+        let dv = options.damping_perturbation * vabs * (hm / r).sqrt();
+        let base_vy = self.vy;
+        let mut w = [0.0; 2];
+        for (k, s) in [1.0, -1.0].iter().enumerate() {
+            self.vy = base_vy + s * dv;
+            let mut s2 = st.clone();
+            let (ok, it) = self.newton(&mut s2, Constraint::RigidApproach(st.h0), options)?;
+            *total_iters += it;
+            if !ok {
+                let r = self.residual(&s2, Constraint::RigidApproach(st.h0));
+                return Err(ReynoldsError::NotConverged {
+                    what: "line-contact damping perturbation",
+                    iterations: it,
+                    residual: r.r.iter().fold(0.0f64, |a, &v| a.max(v.abs())),
+                });
+            }
+            w[k] = s2.p.iter().zip(&self.cell).map(|(p, c)| p * c).sum();
+        }
+        self.vy = base_vy;
+        Ok(-(w[0] - w[1]) / (2.0 * dv))
+    }
+
     /// Newton iterations from `st`. Returns (converged, iterations).
     fn newton(
         &self,
@@ -470,41 +554,8 @@ impl<'a> Ehl<'a> {
         let mut small_steps = 0;
         for it in 0..opt.max_iterations {
             let (dp, dh, dh0) = self.step(st, &res, con)?;
-            // step length: limit wild pressure changes; films are kept positive by clipping each
-            // node at a tenth of its previous value (a projection, not a global step cut)
-            let mut alpha: f64 = 1.0;
-            let pmax = st.p.iter().fold(self.ps, |a, &v| a.max(v));
-            let dpmax = dp.iter().fold(0.0f64, |a, &v| a.max(v.abs()));
-            if dpmax > 2.0 * pmax {
-                alpha = alpha.min(2.0 * pmax / dpmax);
-            }
-            // trust region on the pressure: no node changes by more than half its value (or 5 %
-            // of the maximum) per iteration
-            let floor = 0.05 * pmax;
-            for i in 0..n {
-                let lim = 0.5 * st.p[i].max(floor);
-                if dp[i].abs() > lim {
-                    alpha = alpha.min(lim / dp[i].abs());
-                }
-            }
-            let f0 = Self::norm(&res.r);
-            let mut trial = st.clone();
-            let mut tres;
-            let mut tries = 0;
-            loop {
-                for i in 0..n {
-                    trial.p[i] = st.p[i] + alpha * dp[i];
-                    trial.h[i] = (st.h[i] + alpha * dh[i]).max(0.1 * st.h[i]);
-                }
-                trial.h0 = st.h0 + alpha * dh0;
-                tres = self.residual(&trial, con);
-                let f1 = Self::norm(&tres.r);
-                if f1.is_finite() && (f1 < f0 * (1.0 - 1e-4 * alpha) || tries >= 6) {
-                    break;
-                }
-                alpha *= 0.5;
-                tries += 1;
-            }
+            let (alpha, pmax, dpmax) = self.step_limit(st, &dp);
+            let (trial, tres, alpha) = self.line_search(st, &res, con, (&dp, &dh, dh0), alpha);
             if !tres.r.iter().all(|v| v.is_finite()) {
                 return Ok((false, it + 1));
             }
@@ -518,37 +569,7 @@ impl<'a> Ehl<'a> {
                 small_steps = 0;
             }
             *st = trial;
-            // complementarity update
-            let mut changed = false;
-            for i in 1..n - 1 {
-                if st.cav[i] {
-                    // release where the flow balance asks for pressure
-                    let lam = -self.reynolds(st, &tres.q, i);
-                    if lam < 0.0 && flips[i] < 8 {
-                        st.cav[i] = false;
-                        flips[i] += 1;
-                        changed = true;
-                    }
-                } else if st.p[i] < self.pcav && flips[i] < 8 {
-                    st.cav[i] = true;
-                    st.p[i] = self.pcav;
-                    flips[i] += 1;
-                    changed = true;
-                }
-            }
-            // free-boundary jump: release the cavitated nodes between the discrete exit and the
-            // flux-balance estimate of the exit at once (the active set alone moves one node per
-            // iteration)
-            let kmax = (0..n).fold(0, |k, i| if st.p[i] > st.p[k] { i } else { k });
-            if let Some((k, xc)) = self.exit(st, kmax) {
-                let mut j = k;
-                while j + 1 < n && st.cav[j] && self.x[j] < xc && flips[j] < 8 {
-                    st.cav[j] = false;
-                    flips[j] += 1;
-                    changed = true;
-                    j += 1;
-                }
-            }
+            let changed = self.update_active_set(st, &tres.q, &mut flips);
             res = if changed {
                 self.residual(st, con)
             } else {
@@ -570,6 +591,95 @@ impl<'a> Ehl<'a> {
             }
         }
         Ok((false, opt.max_iterations))
+    }
+
+    /// Largest step length for the pressure change `dp`, with the pressure maximum (at least
+    /// p_s) and the largest |dp|: (α, p_max, |dp|_max).
+    fn step_limit(&self, st: &State, dp: &[f64]) -> (f64, f64, f64) {
+        // step length: limit wild pressure changes; films are kept positive by clipping each
+        // node at a tenth of its previous value (a projection, not a global step cut)
+        let mut alpha: f64 = 1.0;
+        let pmax = st.p.iter().fold(self.ps, |a, &v| a.max(v));
+        let dpmax = dp.iter().fold(0.0f64, |a, &v| a.max(v.abs()));
+        if dpmax > 2.0 * pmax {
+            alpha = alpha.min(2.0 * pmax / dpmax);
+        }
+        // trust region on the pressure: no node changes by more than half its value (or 5 %
+        // of the maximum) per iteration
+        let floor = 0.05 * pmax;
+        for i in 0..self.n() {
+            let lim = 0.5 * st.p[i].max(floor);
+            if dp[i].abs() > lim {
+                alpha = alpha.min(lim / dp[i].abs());
+            }
+        }
+        (alpha, pmax, dpmax)
+    }
+
+    /// Backtracking from the step length `alpha` (halved up to 6 times) until the residual norm
+    /// decreases sufficiently: the trial state, its residual and the step length taken.
+    fn line_search(
+        &self,
+        st: &State,
+        res: &Residual,
+        con: Constraint,
+        (dp, dh, dh0): (&[f64], &[f64], f64),
+        mut alpha: f64,
+    ) -> (State, Residual, f64) {
+        let f0 = Self::norm(&res.r);
+        let mut trial = st.clone();
+        let mut tries = 0;
+        loop {
+            for i in 0..self.n() {
+                trial.p[i] = st.p[i] + alpha * dp[i];
+                trial.h[i] = (st.h[i] + alpha * dh[i]).max(0.1 * st.h[i]);
+            }
+            trial.h0 = st.h0 + alpha * dh0;
+            let tres = self.residual(&trial, con);
+            let f1 = Self::norm(&tres.r);
+            if f1.is_finite() && (f1 < f0 * (1.0 - 1e-4 * alpha) || tries >= 6) {
+                return (trial, tres, alpha);
+            }
+            alpha *= 0.5;
+            tries += 1;
+        }
+    }
+
+    /// Complementarity update of the cavitated set (each node may flip at most 8 times), then
+    /// the free-boundary jump. Returns whether the set changed.
+    fn update_active_set(&self, st: &mut State, q: &[NodeQ], flips: &mut [u8]) -> bool {
+        let n = self.n();
+        let mut changed = false;
+        for i in 1..n - 1 {
+            if st.cav[i] {
+                // release where the flow balance asks for pressure
+                let lam = -self.reynolds(st, q, i);
+                if lam < 0.0 && flips[i] < 8 {
+                    st.cav[i] = false;
+                    flips[i] += 1;
+                    changed = true;
+                }
+            } else if st.p[i] < self.pcav && flips[i] < 8 {
+                st.cav[i] = true;
+                st.p[i] = self.pcav;
+                flips[i] += 1;
+                changed = true;
+            }
+        }
+        // free-boundary jump: release the cavitated nodes between the discrete exit and the
+        // flux-balance estimate of the exit at once (the active set alone moves one node per
+        // iteration)
+        let kmax = (0..n).fold(0, |k, i| if st.p[i] > st.p[k] { i } else { k });
+        if let Some((k, xc)) = self.exit(st, kmax) {
+            let mut j = k;
+            while j + 1 < n && st.cav[j] && self.x[j] < xc && flips[j] < 8 {
+                st.cav[j] = false;
+                flips[j] += 1;
+                changed = true;
+                j += 1;
+            }
+        }
+        changed
     }
 }
 
@@ -630,9 +740,7 @@ fn solve_min_film_elastic(
     .unwrap_or(0.0);
     let mu0 = viscosity.viscosity(0.0, contact.temperature);
     let w_rigid = analytic::kapitsa(mu0, contact.sum_speed().abs(), contact.radius, h_target).1;
-    let mut iters = 0usize;
-    let mut lo = est.max(w_rigid).max(1e-12);
-    let mut hi = lo;
+    let start = est.max(w_rigid).max(1e-12);
     let ep = contact.compliance.e_prime().unwrap_or(2.3e11);
     // fixed domain from a generous load bound (16× the start)
     let domain = |w: f64| {
@@ -640,65 +748,26 @@ fn solve_min_film_elastic(
         let lh = (contact.radius * h_target).sqrt();
         (-(4.5 * b).max(30.0 * lh), (1.5 * b).max(5.0 * lh))
     };
-    let (mut xin, mut xout) = domain(16.0 * lo);
+    let (mut xin, mut xout) = domain(16.0 * start);
     if let Some(v) = options.inlet {
         xin = v;
     }
     if let Some(v) = options.outlet {
         xout = v;
     }
-    let opt = LineContactOptions {
-        inlet: Some(xin),
-        outlet: Some(xout),
-        damping: false,
-        ..*options
-    };
-    let eval = |w: f64, iters: &mut usize| -> Result<(f64, LineContactResult)> {
-        let r = solve_direct(contact, viscosity, Constraint::LoadPerLength(w), &opt)?;
-        *iters += r.iterations;
-        Ok(((r.min_film_m / h_target).ln(), r))
-    };
-    let (mut flo, _) = eval(lo, &mut iters)?;
-    let mut fhi = flo;
-    let mut guard = 0;
-    while flo < 0.0 && guard < 12 {
-        hi = lo;
-        fhi = flo;
-        lo *= 0.25;
-        flo = eval(lo, &mut iters)?.0;
-        guard += 1;
-    }
-    while fhi > 0.0 && guard < 12 {
-        lo = hi;
-        flo = fhi;
-        hi *= 4.0;
-        fhi = eval(hi, &mut iters)?.0;
-        guard += 1;
-    }
-    if flo * fhi > 0.0 {
-        return Err(ReynoldsError::NoSolution(format!(
-            "no load gives the minimum film {h_target} m within [{lo:.3e}, {hi:.3e}] N/m"
-        )));
-    }
-    let mut last = None;
-    let (lw, _, _) = crate::roots::brent(
-        |u| {
-            let (f, r) = eval(u.exp(), &mut iters)?;
-            last = Some(r);
-            Ok(f)
+    let mut search = FilmSearch {
+        contact,
+        viscosity,
+        h_target,
+        options: LineContactOptions {
+            inlet: Some(xin),
+            outlet: Some(xout),
+            damping: false,
+            ..*options
         },
-        lo.ln(),
-        hi.ln(),
-        flo,
-        fhi,
-        1e-10,
-        1e-7,
-        60,
-    )?;
-    let mut res = match last {
-        Some(r) if (r.load_per_length_n_per_m.ln() - lw).abs() < 1e-9 => r,
-        _ => eval(lw.exp(), &mut iters)?.1,
+        iters: 0,
     };
+    let mut res = search.root(start)?;
     if options.damping {
         // damping at the converged rigid approach (same domain)
         let d = solve_direct(
@@ -707,17 +776,99 @@ fn solve_min_film_elastic(
             Constraint::RigidApproach(res.rigid_approach_m),
             &LineContactOptions {
                 damping: true,
-                ..opt
+                ..search.options
             },
         )?;
-        iters += d.iterations;
+        search.iters += d.iterations;
         res.damping_ns_per_m2 = d.damping_ns_per_m2;
     }
-    res.iterations = iters;
+    res.iterations = search.iters;
     res.solve_time_s = t0.elapsed().as_secs_f64();
     Ok(res)
 }
 
+/// The load search of [`solve_min_film_elastic`]: ln(h_min(W)/h) on a fixed domain.
+struct FilmSearch<'a> {
+    contact: &'a LubricatedLineContact,
+    viscosity: &'a dyn Viscosity,
+    /// Target minimum film, m.
+    h_target: f64,
+    /// Options of the load-controlled solves (fixed domain, no damping).
+    options: LineContactOptions,
+    /// Newton iterations of all solves.
+    iters: usize,
+}
+
+impl FilmSearch<'_> {
+    /// ln(h_min/h) of the load-controlled solution at `w` (N/m), and that solution.
+    fn eval(&mut self, w: f64) -> Result<(f64, LineContactResult)> {
+        let r = solve_direct(
+            self.contact,
+            self.viscosity,
+            Constraint::LoadPerLength(w),
+            &self.options,
+        )?;
+        self.iters += r.iterations;
+        Ok(((r.min_film_m / self.h_target).ln(), r))
+    }
+
+    /// Bracket of the load from `start` (N/m): lowered, then raised, fourfold (12 steps in
+    /// all) until ln(h_min/h) changes sign: (lo, hi, f(lo), f(hi)).
+    fn bracket(&mut self, start: f64) -> Result<(f64, f64, f64, f64)> {
+        let (mut lo, mut hi) = (start, start);
+        let (mut flo, _) = self.eval(lo)?;
+        let mut fhi = flo;
+        let mut guard = 0;
+        while flo < 0.0 && guard < 12 {
+            hi = lo;
+            fhi = flo;
+            lo *= 0.25;
+            flo = self.eval(lo)?.0;
+            guard += 1;
+        }
+        while fhi > 0.0 && guard < 12 {
+            lo = hi;
+            flo = fhi;
+            hi *= 4.0;
+            fhi = self.eval(hi)?.0;
+            guard += 1;
+        }
+        if flo * fhi > 0.0 {
+            return Err(ReynoldsError::NoSolution(format!(
+                "no load gives the minimum film {} m within [{lo:.3e}, {hi:.3e}] N/m",
+                self.h_target
+            )));
+        }
+        Ok((lo, hi, flo, fhi))
+    }
+
+    /// Brent search on ln W of the bracket from `start`: the solution at the root.
+    fn root(&mut self, start: f64) -> Result<LineContactResult> {
+        let (lo, hi, flo, fhi) = self.bracket(start)?;
+        let mut last = None;
+        let (lw, _, _) = crate::roots::brent(
+            |u| {
+                let (f, r) = self.eval(u.exp())?;
+                last = Some(r);
+                Ok(f)
+            },
+            lo.ln(),
+            hi.ln(),
+            flo,
+            fhi,
+            1e-10,
+            1e-7,
+            60,
+        )?;
+        match last {
+            Some(r) if (r.load_per_length_n_per_m.ln() - lw).abs() < 1e-9 => Ok(r),
+            _ => Ok(self.eval(lw.exp())?.1),
+        }
+    }
+}
+
+/// Solves the line contact on one domain (the domain and grid from the film and load estimate
+/// unless the options fix them), with nested grids for elastic problems.
 fn solve_direct(
     contact: &LubricatedLineContact,
     viscosity: &dyn Viscosity,
@@ -725,7 +876,43 @@ fn solve_direct(
     options: &LineContactOptions,
 ) -> Result<LineContactResult> {
     let t0 = Instant::now();
-    let r = positive("radius", contact.radius)?;
+    check_input(contact, constraint, options)?;
+    let plan = Plan::new(contact, viscosity, constraint, options)?;
+    let n = options.nodes;
+    let (xin, xout, lh) = (plan.xin, plan.xout, plan.lh);
+    let grid = match options.grid {
+        LineGrid::Uniform => Grid1d::uniform(xin, xout, n)?,
+        LineGrid::Clustered(s) => Grid1d::clustered(xin, xout, n, 0.0, s)?,
+        LineGrid::Auto if plan.elastic => Grid1d::uniform(xin, xout, n)?,
+        LineGrid::Auto => Grid1d::clustered(xin, xout, n, 0.0, lh / 50.0)?,
+    };
+    let mut prob = build(contact, viscosity, &grid, options, plan.scales);
+    let mut total_iters = 0usize;
+    let (st, converged) = plan.nested_solve(&prob, &mut total_iters)?;
+    let mut damping = 0.0;
+    if options.damping && contact.sum_speed() != 0.0 {
+        damping = prob.squeeze_damping(&st, options, &mut total_iters)?;
+    }
+    Ok(finish(
+        &prob,
+        &st,
+        converged,
+        total_iters,
+        damping,
+        plan.b,
+        plan.ph,
+        t0,
+    ))
+}
+
+/// Rejects inputs without a solution: non-finite data, too few nodes, nothing driving the film,
+/// an invalid constraint value.
+fn check_input(
+    contact: &LubricatedLineContact,
+    constraint: Constraint,
+    options: &LineContactOptions,
+) -> Result<()> {
+    positive("radius", contact.radius)?;
     finite("surface speed", contact.surface_speeds[0])?;
     finite("surface speed", contact.surface_speeds[1])?;
     finite("squeeze velocity", options.squeeze_velocity)?;
@@ -736,8 +923,7 @@ fn solve_direct(
             reason: format!("{} < 20", options.nodes),
         });
     }
-    let v = contact.sum_speed();
-    if v == 0.0 && options.squeeze_velocity == 0.0 {
+    if contact.sum_speed() == 0.0 && options.squeeze_velocity == 0.0 {
         return Err(ReynoldsError::InvalidInput {
             what: "speed",
             reason: "zero rolling speed with zero squeeze velocity: no hydrodynamic film".into(),
@@ -748,14 +934,163 @@ fn solve_direct(
         Constraint::MinFilm(h) => positive("minimum film", h).map(|_| ())?,
         Constraint::LoadPerLength(w) => positive("load per length", w).map(|_| ())?,
     }
-    let mu0 = viscosity.viscosity(0.0, contact.temperature);
-    positive("viscosity μ(0, T)", mu0)?;
-    let alpha0 = viscosity.dln_viscosity_dp(0.0, contact.temperature);
-    let elastic = !contact.compliance.is_rigid();
-    let ep = contact.compliance.e_prime().unwrap_or(0.0);
-    let vabs = v.abs().max(1e-300);
-    // film scale and load estimate
-    let (h_est, w_est) = match constraint {
+    Ok(())
+}
+
+/// Film and load estimate, domain and scales of a direct solve.
+struct Plan<'a> {
+    contact: &'a LubricatedLineContact,
+    viscosity: &'a dyn Viscosity,
+    constraint: Constraint,
+    options: &'a LineContactOptions,
+    elastic: bool,
+    /// Film estimate, m.
+    h_est: f64,
+    /// Hertz half-width (0 when rigid), m.
+    b: f64,
+    /// Hertz pressure (0 when rigid), Pa.
+    ph: f64,
+    /// Rigid inlet length √(R h_est), m.
+    lh: f64,
+    /// Domain [x_in, x_out], m.
+    xin: f64,
+    xout: f64,
+    /// Scales (p_s, h_s, l_s, V_ref).
+    scales: (f64, f64, f64, f64),
+}
+
+impl<'a> Plan<'a> {
+    fn new(
+        contact: &'a LubricatedLineContact,
+        viscosity: &'a dyn Viscosity,
+        constraint: Constraint,
+        options: &'a LineContactOptions,
+    ) -> Result<Self> {
+        let r = contact.radius;
+        let mu0 = viscosity.viscosity(0.0, contact.temperature);
+        positive("viscosity μ(0, T)", mu0)?;
+        let alpha0 = viscosity.dln_viscosity_dp(0.0, contact.temperature);
+        let elastic = !contact.compliance.is_rigid();
+        let ep = contact.compliance.e_prime().unwrap_or(0.0);
+        let vabs = contact.sum_speed().abs().max(1e-300);
+        let (h_est, w_est) = film_and_load_estimate(constraint, mu0, alpha0, vabs, r, elastic, ep);
+        let b = if elastic {
+            line_half_width(w_est, r, ep)
+        } else {
+            0.0
+        };
+        let lh = (r * h_est).sqrt();
+        let xin = options.inlet.unwrap_or(if elastic {
+            -(4.5 * b).max(30.0 * lh)
+        } else {
+            -100.0 * lh
+        });
+        let xout = options.outlet.unwrap_or((1.5 * b).max(5.0 * lh));
+        if !(xin < 0.0 && xout > 0.0) {
+            return Err(ReynoldsError::InvalidInput {
+                what: "domain",
+                reason: format!("need inlet < 0 < outlet, got [{xin}, {xout}]"),
+            });
+        }
+        let p0 = analytic::pressure_scale(mu0, vabs, r, h_est);
+        let ph = if elastic { ep * b / (4.0 * r) } else { 0.0 };
+        let ls = if elastic { b.max(lh) } else { lh };
+        let vref = vabs.max(options.squeeze_velocity.abs() * ls / h_est);
+        Ok(Self {
+            contact,
+            viscosity,
+            constraint,
+            options,
+            elastic,
+            h_est,
+            b,
+            ph,
+            lh,
+            xin,
+            xout,
+            scales: (p0.max(ph), h_est, ls, vref),
+        })
+    }
+
+    /// Node counts of the nested iteration, coarsest first: for elastic problems on fine grids,
+    /// halving the node count down to ≈ 150.
+    fn levels(&self) -> Vec<usize> {
+        let n = self.options.nodes;
+        let mut levels = vec![n];
+        while self.elastic && *levels.last().unwrap_or(&n) / 2 >= 150 {
+            let m = levels.last().copied().unwrap_or(n) / 2;
+            levels.push(m);
+        }
+        levels.reverse();
+        levels
+    }
+
+    /// Nested iteration for elastic problems on fine grids: converge on coarser grids first
+    /// and interpolate; on each finer grid the Newton phase is then short and the pressure spike
+    /// is resolved progressively. `prob` is the finest level.
+    fn nested_solve(&self, prob: &Ehl, total_iters: &mut usize) -> Result<(State, bool)> {
+        let (constraint, h_est, b, ph) = (self.constraint, self.h_est, self.b, self.ph);
+        let levels = self.levels();
+        let mut state: Option<(State, bool)> = None;
+        let mut prev: Option<Ehl> = None;
+        for (li, &m) in levels.iter().enumerate() {
+            let last = li + 1 == levels.len();
+            let pl = if last {
+                None
+            } else {
+                Some(build(
+                    self.contact,
+                    self.viscosity,
+                    &Grid1d::uniform(self.xin, self.xout, m)?,
+                    self.options,
+                    self.scales,
+                ))
+            };
+            let pr: &Ehl = pl.as_ref().unwrap_or(prob);
+            // coarse levels only provide a start: a looser tolerance is enough
+            let lopt = if last {
+                *self.options
+            } else {
+                LineContactOptions {
+                    tolerance: self.options.tolerance.max(1e-4),
+                    ..*self.options
+                }
+            };
+            let options = &lopt;
+            let next = match (&state, &prev) {
+                (Some((s0, true)), Some(pp)) => {
+                    let mut s1 = interpolate(pp, s0, pr);
+                    let (ok, it) = pr.newton(&mut s1, constraint, options)?;
+                    *total_iters += it;
+                    if ok {
+                        (s1, true)
+                    } else {
+                        solve_with_fallback(pr, constraint, options, h_est, b, ph, total_iters)?
+                    }
+                }
+                _ => solve_with_fallback(pr, constraint, options, h_est, b, ph, total_iters)?,
+            };
+            state = Some(next);
+            if !last {
+                prev = pl;
+            }
+        }
+        state.ok_or(ReynoldsError::Singular("line contact"))
+    }
+}
+
+/// Film and load estimates, (h, W′): from the constraint, the Kapitsa rigid load and, for
+/// elastic contacts, the Pan–Hamrock fits.
+fn film_and_load_estimate(
+    constraint: Constraint,
+    mu0: f64,
+    alpha0: f64,
+    vabs: f64,
+    r: f64,
+    elastic: bool,
+    ep: f64,
+) -> (f64, f64) {
+    match constraint {
         Constraint::RigidApproach(h) | Constraint::MinFilm(h) => {
             let h = h.abs().max(1e-9);
             let mut w = analytic::kapitsa(mu0, vabs, r, h).1;
@@ -778,128 +1113,7 @@ fn solve_direct(
             };
             (h.max(1e-10), w)
         }
-    };
-    let b = if elastic {
-        line_half_width(w_est, r, ep)
-    } else {
-        0.0
-    };
-    let lh = (r * h_est).sqrt();
-    let xin = options.inlet.unwrap_or(if elastic {
-        -(4.5 * b).max(30.0 * lh)
-    } else {
-        -100.0 * lh
-    });
-    let xout = options.outlet.unwrap_or((1.5 * b).max(5.0 * lh));
-    if !(xin < 0.0 && xout > 0.0) {
-        return Err(ReynoldsError::InvalidInput {
-            what: "domain",
-            reason: format!("need inlet < 0 < outlet, got [{xin}, {xout}]"),
-        });
     }
-    let n = options.nodes;
-    let grid = match options.grid {
-        LineGrid::Uniform => Grid1d::uniform(xin, xout, n)?,
-        LineGrid::Clustered(s) => Grid1d::clustered(xin, xout, n, 0.0, s)?,
-        LineGrid::Auto if elastic => Grid1d::uniform(xin, xout, n)?,
-        LineGrid::Auto => Grid1d::clustered(xin, xout, n, 0.0, lh / 50.0)?,
-    };
-    let p0 = analytic::pressure_scale(mu0, vabs, r, h_est);
-    let ph = if elastic { ep * b / (4.0 * r) } else { 0.0 };
-    let ls = if elastic { b.max(lh) } else { lh };
-    let vref = vabs.max(options.squeeze_velocity.abs() * ls / h_est);
-    let scales = (p0.max(ph), h_est, ls, vref);
-    let mut prob = build(contact, viscosity, &grid, options, scales);
-    let mut total_iters = 0usize;
-    // nested iteration for elastic problems on fine grids: converge on coarser grids first
-    // (halving the node count down to ≈ 150) and interpolate; on each finer grid the Newton
-    // phase is then short and the pressure spike is resolved progressively
-    let mut levels = vec![n];
-    while elastic && *levels.last().unwrap_or(&n) / 2 >= 150 {
-        let m = levels.last().copied().unwrap_or(n) / 2;
-        levels.push(m);
-    }
-    levels.reverse();
-    let mut state: Option<(State, bool)> = None;
-    let mut prev: Option<Ehl> = None;
-    for (li, &m) in levels.iter().enumerate() {
-        let last = li + 1 == levels.len();
-        let pl = if last {
-            None
-        } else {
-            Some(build(
-                contact,
-                viscosity,
-                &Grid1d::uniform(xin, xout, m)?,
-                options,
-                scales,
-            ))
-        };
-        let pr: &Ehl = pl.as_ref().unwrap_or(&prob);
-        // coarse levels only provide a start: a looser tolerance is enough
-        let lopt = if last {
-            *options
-        } else {
-            LineContactOptions {
-                tolerance: options.tolerance.max(1e-4),
-                ..*options
-            }
-        };
-        let options = &lopt;
-        let next = match (&state, &prev) {
-            (Some((s0, true)), Some(pp)) => {
-                let mut s1 = interpolate(pp, s0, pr);
-                let (ok, it) = pr.newton(&mut s1, constraint, options)?;
-                total_iters += it;
-                if ok {
-                    (s1, true)
-                } else {
-                    solve_with_fallback(pr, constraint, options, h_est, b, ph, &mut total_iters)?
-                }
-            }
-            _ => solve_with_fallback(pr, constraint, options, h_est, b, ph, &mut total_iters)?,
-        };
-        state = Some(next);
-        if !last {
-            prev = pl;
-        }
-    }
-    let (st, converged) = state.ok_or(ReynoldsError::Singular("line contact"))?;
-    // damping: ±ΔV_y at the converged rigid approach
-    let mut damping = 0.0;
-    if options.damping && v != 0.0 {
-        let hm = st.h.iter().fold(f64::MAX, |a, &v| a.min(v));
-        let dv = options.damping_perturbation * vabs * (hm / r).sqrt();
-        let base_vy = prob.vy;
-        let mut w = [0.0; 2];
-        for (k, s) in [1.0, -1.0].iter().enumerate() {
-            prob.vy = base_vy + s * dv;
-            let mut s2 = st.clone();
-            let (ok, it) = prob.newton(&mut s2, Constraint::RigidApproach(st.h0), options)?;
-            total_iters += it;
-            if !ok {
-                let r = prob.residual(&s2, Constraint::RigidApproach(st.h0));
-                return Err(ReynoldsError::NotConverged {
-                    what: "line-contact damping perturbation",
-                    iterations: it,
-                    residual: r.r.iter().fold(0.0f64, |a, &v| a.max(v.abs())),
-                });
-            }
-            w[k] = s2.p.iter().zip(&prob.cell).map(|(p, c)| p * c).sum();
-        }
-        prob.vy = base_vy;
-        damping = -(w[0] - w[1]) / (2.0 * dv);
-    }
-    Ok(finish(
-        &prob,
-        &st,
-        converged,
-        total_iters,
-        damping,
-        b,
-        ph,
-        t0,
-    ))
 }
 
 /// Builds the discrete problem on `grid` with scales (p_s, h_s, l_s, V_ref).
@@ -983,7 +1197,8 @@ fn interpolate(from: &Ehl, st: &State, to: &Ehl) -> State {
     out
 }
 
-#[allow(clippy::too_many_arguments)]
+/// Newton from an initial guess on `prob`; for elastic problems under a load, with load
+/// continuation when the direct attempt fails.
 fn solve_with_fallback(
     prob: &Ehl,
     con: Constraint,
@@ -993,123 +1208,19 @@ fn solve_with_fallback(
     ph: f64,
     iters: &mut usize,
 ) -> Result<(State, bool)> {
-    let elastic = prob.infl.is_some();
-    // Initial guesses: Hertz pressure with the estimated central film for elastic problems under
-    // a load; otherwise the rigid analytic (Martin, Barus-reduced) solution at the film value.
     let n = prob.n();
-    let initial = |con: Constraint, hload: f64, bb: f64, phh: f64| -> State {
-        let r = prob.c.radius;
-        let mut st = State {
-            p: vec![0.0; n],
-            h: vec![0.0; n],
-            h0: 0.0,
-            cav: vec![false; n],
-        };
-        if elastic && matches!(con, Constraint::LoadPerLength(_)) && bb > 0.0 {
-            for i in 0..n {
-                let xi = prob.x[i];
-                if xi.abs() < bb {
-                    st.p[i] = phh * (1.0 - (xi / bb).powi(2)).sqrt();
-                }
-                st.cav[i] = xi > 1.2 * bb;
-            }
-            let d = prob.deflection(&st.p);
-            let k0 = argmin(&prob.x.iter().map(|v| v.abs()).collect::<Vec<_>>());
-            st.h0 = hload - prob.geom[k0] - d[k0];
-            for i in 0..n {
-                st.h[i] = st.h0 + prob.geom[i] + d[i];
-            }
-        } else {
-            // rigid Martin solution with squeeze
-            let hm = hload;
-            let lh = (r * hm).sqrt();
-            let v = prob.c.sum_speed().abs().max(1e-300);
-            let nu = prob.vy / v * (r / hm).sqrt();
-            let c = analytic::exit_parameter(nu.clamp(-0.2, 0.2)).unwrap_or(0.67);
-            let mu0 = prob.visc.viscosity(0.0, prob.c.temperature);
-            let p0 = analytic::pressure_scale(mu0, v, r, hm);
-            let al = prob.visc.dln_viscosity_dp(0.0, prob.c.temperature) * p0;
-            for i in 0..n {
-                let xt = prob.x[i] / lh;
-                let q = if xt < c {
-                    analytic::q(xt, c, nu.clamp(-0.2, 0.2)).max(0.0)
-                } else {
-                    0.0
-                };
-                let qq = if al > 0.0 && al * q < 0.95 {
-                    -(1.0 - al * q).ln() / al
-                } else {
-                    q
-                };
-                st.p[i] = qq * p0;
-                st.cav[i] = xt > 1.3 * c + 0.2;
-            }
-            st.h0 = hm;
-            let d = prob.deflection(&st.p);
-            for i in 0..n {
-                st.h[i] = hm + prob.geom[i] + d[i];
-            }
-        }
-        st.p[0] = 0.0;
-        st.p[n - 1] = 0.0;
-        st.cav[0] = false;
-        st.cav[n - 1] = false;
-        st
-    };
     match con {
-        Constraint::LoadPerLength(w) if elastic => {
-            // direct attempt, then load continuation (halving the load, Hertz-scaled guesses)
-            #[allow(clippy::too_many_arguments)]
-            fn attempt(
-                prob: &Ehl,
-                w: f64,
-                from: Option<State>,
-                opt: &LineContactOptions,
-                depth: usize,
-                iters: &mut usize,
-                init: &dyn Fn(Constraint, f64, f64, f64) -> State,
-                h_est: f64,
-                b: f64,
-                ph: f64,
-            ) -> Result<(State, bool)> {
-                let mut st =
-                    from.unwrap_or_else(|| init(Constraint::LoadPerLength(w), h_est, b, ph));
-                let (ok, it) = prob.newton(&mut st, Constraint::LoadPerLength(w), opt)?;
-                *iters += it;
-                if ok || depth >= opt.continuation_steps {
-                    return Ok((st, ok));
-                }
-                // continuation: solve at half the load (Hertz scaling of b and p_h), then return
-                let (lighter, ok_l) = attempt(
-                    prob,
-                    0.5 * w,
-                    None,
-                    opt,
-                    depth + 1,
-                    iters,
-                    init,
-                    h_est * 1.1,
-                    b * std::f64::consts::FRAC_1_SQRT_2,
-                    ph * std::f64::consts::FRAC_1_SQRT_2,
-                )?;
-                if !ok_l {
-                    return Ok((lighter, false));
-                }
-                let mut st = lighter;
-                let (ok, it) = prob.newton(&mut st, Constraint::LoadPerLength(w), opt)?;
-                *iters += it;
-                Ok((st, ok))
-            }
-            attempt(prob, w, None, opt, 0, iters, &initial, h_est, b, ph)
+        Constraint::LoadPerLength(w) if prob.infl.is_some() => {
+            prob.load_continuation(w, opt, 0, iters, (h_est, b, ph))
         }
         Constraint::LoadPerLength(_) => {
-            let mut st = initial(con, h_est, 0.0, 0.0);
+            let mut st = prob.initial_state(con, h_est, 0.0, 0.0);
             let (ok, it) = prob.newton(&mut st, con, opt)?;
             *iters += it;
             Ok((st, ok))
         }
         Constraint::RigidApproach(h) | Constraint::MinFilm(h) => {
-            let mut st = initial(con, h.abs().max(1e-12), 0.0, 0.0);
+            let mut st = prob.initial_state(con, h.abs().max(1e-12), 0.0, 0.0);
             if let Constraint::RigidApproach(a) = con {
                 st.h0 = a;
                 let d = prob.deflection(&st.p);
@@ -1121,6 +1232,124 @@ fn solve_with_fallback(
             *iters += it;
             Ok((st, ok))
         }
+    }
+}
+
+impl Ehl<'_> {
+    /// Direct attempt at the load `w` from the Hertz guess with `(h, b, p_h)`, then load
+    /// continuation: solve at half the load (Hertz scaling of b and p_h) and return from there.
+    fn load_continuation(
+        &self,
+        w: f64,
+        opt: &LineContactOptions,
+        depth: usize,
+        iters: &mut usize,
+        (h_est, b, ph): (f64, f64, f64),
+    ) -> Result<(State, bool)> {
+        let mut st = self.initial_state(Constraint::LoadPerLength(w), h_est, b, ph);
+        let (ok, it) = self.newton(&mut st, Constraint::LoadPerLength(w), opt)?;
+        *iters += it;
+        if ok || depth >= opt.continuation_steps {
+            return Ok((st, ok));
+        }
+        let lighter_guess = (
+            h_est * 1.1,
+            b * std::f64::consts::FRAC_1_SQRT_2,
+            ph * std::f64::consts::FRAC_1_SQRT_2,
+        );
+        let (lighter, ok_l) =
+            self.load_continuation(0.5 * w, opt, depth + 1, iters, lighter_guess)?;
+        if !ok_l {
+            return Ok((lighter, false));
+        }
+        let mut st = lighter;
+        let (ok, it) = self.newton(&mut st, Constraint::LoadPerLength(w), opt)?;
+        *iters += it;
+        Ok((st, ok))
+    }
+
+    /// Initial guess: Hertz pressure with the film `hload` for elastic problems under a load
+    /// (half-width `bb`, pressure `phh`); otherwise the rigid analytic (Martin, Barus-reduced)
+    /// solution at the film `hload`. Ambient pressure, full film at both ends.
+    fn initial_state(&self, con: Constraint, hload: f64, bb: f64, phh: f64) -> State {
+        let n = self.n();
+        let mut st =
+            if self.infl.is_some() && matches!(con, Constraint::LoadPerLength(_)) && bb > 0.0 {
+                self.hertz_start(hload, bb, phh)
+            } else {
+                self.martin_start(hload)
+            };
+        st.p[0] = 0.0;
+        st.p[n - 1] = 0.0;
+        st.cav[0] = false;
+        st.cav[n - 1] = false;
+        st
+    }
+
+    /// Hertz pressure over |x| < b, cavitated beyond 1.2 b, film `hload` at the centre.
+    fn hertz_start(&self, hload: f64, bb: f64, phh: f64) -> State {
+        let n = self.n();
+        let mut st = State {
+            p: vec![0.0; n],
+            h: vec![0.0; n],
+            h0: 0.0,
+            cav: vec![false; n],
+        };
+        for i in 0..n {
+            let xi = self.x[i];
+            if xi.abs() < bb {
+                st.p[i] = phh * (1.0 - (xi / bb).powi(2)).sqrt();
+            }
+            st.cav[i] = xi > 1.2 * bb;
+        }
+        let d = self.deflection(&st.p);
+        let k0 = argmin(&self.x.iter().map(|v| v.abs()).collect::<Vec<_>>());
+        st.h0 = hload - self.geom[k0] - d[k0];
+        for i in 0..n {
+            st.h[i] = st.h0 + self.geom[i] + d[i];
+        }
+        st
+    }
+
+    /// Rigid Martin solution with squeeze at the film `hm`, the pressure reduced by Barus with
+    /// the initial pressure–viscosity slope.
+    fn martin_start(&self, hm: f64) -> State {
+        let n = self.n();
+        let r = self.c.radius;
+        let mut st = State {
+            p: vec![0.0; n],
+            h: vec![0.0; n],
+            h0: 0.0,
+            cav: vec![false; n],
+        };
+        let lh = (r * hm).sqrt();
+        let v = self.c.sum_speed().abs().max(1e-300);
+        let nu = self.vy / v * (r / hm).sqrt();
+        let c = analytic::exit_parameter(nu.clamp(-0.2, 0.2)).unwrap_or(0.67);
+        let mu0 = self.visc.viscosity(0.0, self.c.temperature);
+        let p0 = analytic::pressure_scale(mu0, v, r, hm);
+        let al = self.visc.dln_viscosity_dp(0.0, self.c.temperature) * p0;
+        for i in 0..n {
+            let xt = self.x[i] / lh;
+            let q = if xt < c {
+                analytic::q(xt, c, nu.clamp(-0.2, 0.2)).max(0.0)
+            } else {
+                0.0
+            };
+            let qq = if al > 0.0 && al * q < 0.95 {
+                -(1.0 - al * q).ln() / al
+            } else {
+                q
+            };
+            st.p[i] = qq * p0;
+            st.cav[i] = xt > 1.3 * c + 0.2;
+        }
+        st.h0 = hm;
+        let d = self.deflection(&st.p);
+        for i in 0..n {
+            st.h[i] = hm + self.geom[i] + d[i];
+        }
+        st
     }
 }
 
