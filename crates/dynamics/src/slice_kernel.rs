@@ -20,9 +20,9 @@ use crate::kinematics::RollerKinematics;
 use crate::vec3::{V3, add, axpy, cross, dot, scale, sub};
 use rolldyn_contact::damping::SliceDamping;
 use rolldyn_lubrication::SliceColumnsMut;
-use rolldyn_numerics::avx2::LoopCopy;
 use rolldyn_numerics::fastmath;
 use rolldyn_numerics::step::step;
+use rolldyn_numerics::vector_copies::LoopCopy;
 use std::ops::Range;
 
 /// Vector width of the widest loop copy (AVX-512F: eight `f64`): the slot arrays have this

@@ -12,9 +12,8 @@
 //!   of one variable.
 //! * [`step`]: the ADAMS cubic STEP ramp (SPEC §3.4), with the degenerate span defined.
 //! * [`fastmath`]: branch-free, vectorisable `exp`, `ln`, `sin_cos` for hot loops.
-//! * [`avx512_twin!`]: a hot loop and its AVX-512F copy from one parameter list; [`avx2::LoopCopy`] for callers that dispatch themselves.
+//! * [`avx512_twin!`]: a hot loop and its AVX-512F copy from one parameter list; [`vector_copies::LoopCopy`] for callers that dispatch themselves.
 
-pub mod avx2;
 pub mod brent;
 pub mod dense_lu;
 pub mod fastmath;
@@ -22,6 +21,7 @@ pub mod maximize1d;
 pub mod newton2d;
 pub mod root1d;
 pub mod step;
+pub mod vector_copies;
 
 pub use newton2d::{Damping, Newton2dOptions, Newton2dOutcome, Newton2dStatus, Sample, solve_2d};
 pub use root1d::{

@@ -160,7 +160,7 @@ pub fn cpu_name() -> Option<String> {
 /// The compiled copy of the vectorised hot loops this CPU runs: `avx512f`, `avx2` or
 /// `portable`.
 pub fn vector_loops() -> &'static str {
-    use rolldyn_numerics::avx2::LoopCopy;
+    use rolldyn_numerics::vector_copies::LoopCopy;
     match LoopCopy::detect() {
         LoopCopy::Avx512 => "avx512f",
         LoopCopy::Portable if cfg!(target_feature = "avx2") => "avx2",
