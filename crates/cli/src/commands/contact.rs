@@ -43,7 +43,7 @@ pub struct Args {
     /// Boussinesq grid: cells along the roller × cells across, e.g. `350x9` (seed 004 Table 2).
     #[arg(long, default_value = "150x3", value_parser = parse_cells)]
     pub cells: (usize, usize),
-    /// Total transverse extent of the Boussinesq grid (default: square cells, SPEC F-12).
+    /// Total transverse extent of the Boussinesq grid (default: square cells, flag F-12 of docs/theory.md).
     #[arg(long)]
     pub width: Option<Quantity<Length>>,
     #[arg(long, value_enum, default_value = "boussinesq")]

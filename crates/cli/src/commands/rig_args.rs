@@ -13,7 +13,7 @@ use rolldyn_units::{Dimensionless, Length, Pressure, Quantity};
 pub enum ContactKind {
     /// Ball on a flat disc (circular point contact; `--radius` is the ball radius).
     BallOnDisc,
-    /// Line contact of length `--length`; `--radius` is the reduced radius R′ (SPEC eq. 1.12).
+    /// Line contact of length `--length`; `--radius` is the reduced radius R′ (seed 000 eq. 1.12).
     Line,
 }
 

@@ -26,7 +26,7 @@ pub enum FrictionName {
 
 #[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
 pub enum LandName {
-    /// Finite journal bearing (Reynolds crate table, SPEC §8.6).
+    /// Finite journal bearing (docs/theory.md §7.5).
     Finite,
     /// Short (Ocvirk) journal bearing.
     Short,
