@@ -32,6 +32,10 @@ pub enum UnitError {
         expected: Dimension,
         accepted: &'static str,
     },
+    #[error("'{text}' is below absolute zero (0 K = -273.15 °C)")]
+    BelowAbsoluteZero { text: String },
+    #[error("'{text}': {reason}")]
+    BadRange { text: String, reason: &'static str },
     #[error("'{text}' is {got}, but {expected} is expected (accepted units: {accepted})")]
     WrongDimension {
         text: String,
@@ -68,6 +72,24 @@ impl<D: Dim> Quantity<D> {
 
 /// Parses `text` as a value of dimension `expected` and returns it in SI units.
 pub fn parse_si(text: &str, expected: Dimension) -> Result<f64, UnitError> {
+    let (scaled, offset) = parse_scaled(text, expected)?;
+    let si = scaled + offset;
+    if expected == Dimension::Temperature && si < 0.0 {
+        return Err(UnitError::BelowAbsoluteZero {
+            text: text.trim().to_string(),
+        });
+    }
+    Ok(si)
+}
+
+/// Parses `text` as a difference of two values of dimension `expected` (a step of a range:
+/// `10C` is 10 K) and returns it in SI units.
+pub(crate) fn parse_difference_si(text: &str, expected: Dimension) -> Result<f64, UnitError> {
+    parse_scaled(text, expected).map(|(scaled, _)| scaled)
+}
+
+/// The number of `text` times the scale of its unit, and the offset of that unit (°C), both SI.
+fn parse_scaled(text: &str, expected: Dimension) -> Result<(f64, f64), UnitError> {
     let text = text.trim();
     if text.is_empty() {
         return Err(UnitError::Empty {
@@ -87,7 +109,7 @@ pub fn parse_si(text: &str, expected: Dimension) -> Result<f64, UnitError> {
     }
     let unit = unit.trim();
     if unit.is_empty() {
-        return Ok(value);
+        return Ok((value, 0.0));
     }
     let found = unit_table::lookup(unit, expected).ok_or_else(|| UnitError::UnknownUnit {
         unit: unit.to_string(),
@@ -102,7 +124,7 @@ pub fn parse_si(text: &str, expected: Dimension) -> Result<f64, UnitError> {
             accepted: expected.examples(),
         });
     }
-    Ok(value * found.scale + found.offset)
+    Ok((value * found.scale, found.offset))
 }
 
 /// Length of the leading decimal number (sign, digits, point, exponent) in `text`.

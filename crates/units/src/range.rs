@@ -1,10 +1,10 @@
 //! Ranges of quantities for parameter sweeps: `"1500rpm..4500rpm:500rpm"`.
 
 use crate::dimension::Dim;
-use crate::quantity::{Quantity, UnitError};
+use crate::quantity::{Quantity, UnitError, parse_difference_si};
 use std::str::FromStr;
 
-/// A single value or an inclusive, evenly stepped range `start..end:step`.
+/// A single value, a list, or an inclusive, evenly stepped, ascending range `start..end:step`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct QuantityRange<D: Dim> {
     pub values: Vec<Quantity<D>>,
@@ -20,7 +20,7 @@ impl<D: Dim> QuantityRange<D> {
 impl<D: Dim> FromStr for QuantityRange<D> {
     type Err = UnitError;
 
-    /// Parses `value`, `start..end:step` or a comma list `a,b,c`.
+    /// Parses `value`, `start..end:step` (start ≤ end, step > 0) or a comma list `a,b,c`.
     fn from_str(text: &str) -> Result<Self, Self::Err> {
         if let Some((start, rest)) = text.split_once("..") {
             let (end, step) = rest.split_once(':').ok_or_else(|| UnitError::BadNumber {
@@ -28,17 +28,27 @@ impl<D: Dim> FromStr for QuantityRange<D> {
             })?;
             let start = Quantity::<D>::parse(start)?.si();
             let end = Quantity::<D>::parse(end)?.si();
-            let step = Quantity::<D>::parse(step)?.si().abs();
-            let span = end - start;
-            if step == 0.0 || (span / step).abs() > 1.0e6 {
-                return Err(UnitError::BadNumber {
-                    text: format!("{text} (step must be non-zero and give at most 1e6 points)"),
-                });
+            let step = parse_difference_si(step, D::DIMENSION)?;
+            let refuse = |reason| {
+                Err(UnitError::BadRange {
+                    text: text.to_string(),
+                    reason,
+                })
+            };
+            if end < start {
+                return refuse(
+                    "the range runs backwards: write it from the smaller to the larger value",
+                );
             }
-            let count = (span.abs() / step + 1e-9).floor() as usize;
-            let direction = span.signum();
+            if step <= 0.0 {
+                return refuse("the step must be positive");
+            }
+            if (end - start) / step > 1.0e6 {
+                return refuse("the step gives more than 1e6 points");
+            }
+            let count = ((end - start) / step + 1e-9).floor() as usize;
             let values = (0..=count)
-                .map(|k| Quantity::from_si(start + direction * step * k as f64))
+                .map(|k| Quantity::from_si(start + step * k as f64))
                 .collect();
             return Ok(Self { values });
         }

@@ -87,8 +87,36 @@ fn ranges() {
     assert!(close(r.values[6].si(), 4500.0 * RPM));
     let r: QuantityRange<Temperature> = "40C,50C,60C".parse().unwrap();
     assert_eq!(r.values.len(), 3);
-    let r: QuantityRange<Force> = "700N..100N:50N".parse().unwrap();
-    assert_eq!(r.values.len(), 13);
-    assert!(close(r.values[12].si(), 100.0));
     assert!("1..2".parse::<QuantityRange<Force>>().is_err());
+}
+
+#[test]
+fn reversed_ranges_and_negative_steps_are_refused() {
+    for text in ["700N..100N:50N", "100N..700N:-50N", "700N..100N:-50N"] {
+        let err = text
+            .parse::<QuantityRange<Force>>()
+            .unwrap_err()
+            .to_string();
+        assert!(err.contains(text), "{err}");
+    }
+}
+
+#[test]
+fn a_temperature_step_is_a_difference() {
+    // 10C as a step is 10 K, not 283.15 K (which gave one point only)
+    let r: QuantityRange<Temperature> = "40C..80C:10C".parse().unwrap();
+    assert_eq!(r.values.len(), 5);
+    assert!(close(r.values[4].si(), 353.15));
+}
+
+#[test]
+fn temperatures_below_absolute_zero_are_refused() {
+    for text in ["-300C", "-1 K", "-273.16 degC"] {
+        let err = text
+            .parse::<Quantity<Temperature>>()
+            .unwrap_err()
+            .to_string();
+        assert!(err.contains("absolute zero"), "{text}: {err}");
+    }
+    assert!(si::<Temperature>("-273.15 C").abs() < 1e-9);
 }
