@@ -6,8 +6,10 @@
 //! Parquet footer); dropping an unfinished writer also finishes it, best effort. A value that
 //! is not finite is written as an empty CSV field and a Parquet null ([`non_finite`]).
 
+pub mod mixed_table;
 pub mod non_finite;
 
+pub use mixed_table::{Column, Values, write_parquet_table};
 pub use non_finite::{csv_field, default_reason, mark_non_finite};
 
 use parquet::basic::Compression;
@@ -110,15 +112,31 @@ fn column_name(name: &str) -> String {
     out
 }
 
+/// The Parquet-safe names of `names`, in order; two names that become the same are refused,
+/// naming both.
+fn column_names(names: &[String]) -> Result<Vec<String>, String> {
+    let safe: Vec<String> = names.iter().map(|n| column_name(n)).collect();
+    for (i, name) in safe.iter().enumerate() {
+        if let Some(j) = safe[..i].iter().position(|earlier| earlier == name) {
+            return Err(format!(
+                "the columns '{}' and '{}' both become '{name}' in the table",
+                names[j], names[i]
+            ));
+        }
+    }
+    Ok(safe)
+}
+
 impl TableWriter {
-    /// Creates `<dir>/<stem>.csv` and/or `<dir>/<stem>.parquet` with the given column names.
+    /// Creates `<dir>/<stem>.csv` and/or `<dir>/<stem>.parquet` with the given column names
+    /// (sanitised for Parquet; names that collide once sanitised are refused).
     pub fn create(
         dir: &Path,
         stem: &str,
         names: &[String],
         formats: Formats,
     ) -> Result<Self, OutputError> {
-        let names: Vec<String> = names.iter().map(|n| column_name(n)).collect();
+        let names = column_names(names).map_err(|e| fail(&dir.join(stem), e))?;
         let csv = if formats.csv {
             let path = dir.join(format!("{stem}.csv"));
             let mut writer = csv::Writer::from_path(&path).map_err(|e| fail(&path, e))?;
