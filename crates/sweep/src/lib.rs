@@ -16,10 +16,10 @@
 //! ```
 //!
 //! Running a sweep ([`run`]) writes `variants/<name>.json` for every finished variant (written
-//! to a temporary file and renamed, so an interrupted sweep loses only the variants in flight),
-//! skips finished variants with `resume`, runs every n-th variant with a shard `k/n`, and
-//! collects all finished variants into `summary.csv`, `summary.parquet` and one SVG per summary
-//! column ([`collect`]).
+//! to a temporary file and renamed, so an interrupted sweep loses only the variants in flight)
+//! with the [`fingerprint`] of its inputs, skips with `resume` the finished variants whose
+//! inputs did not change, runs every n-th variant with a shard `k/n`, and collects all stored
+//! variants into `summary.csv`, `summary.parquet` and one SVG per summary column ([`collect`]).
 //!
 //! [`frozen`] runs the frozen time points of a start-up (seed 000 §3.1.2) the same way.
 
@@ -28,4 +28,4 @@ pub mod frozen;
 mod run;
 
 pub use file::{Analysis, SweepError, SweepFile, Variant, apply_overrides};
-pub use run::{RunOptions, Shard, VariantAnalysis, VariantOutcome, collect, run};
+pub use run::{RunOptions, Shard, VariantAnalysis, VariantOutcome, collect, fingerprint, run};

@@ -2,12 +2,13 @@
 
 use crate::file::{SweepError, SweepFile, Variant};
 use rayon::prelude::*;
-use rolldyn_output::{Formats, TableWriter};
+use rolldyn_output::{Column, Values, csv_field, write_parquet_table};
 use rolldyn_plot::{Labels, Series, line_plot};
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::str::FromStr;
+use twox_hash::XxHash64;
 
 /// Run every n-th variant: shard `k/n` takes variants `i` with `i mod n = k − 1`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -52,8 +53,11 @@ pub struct RunOptions {
     /// Parallel jobs (≥ 1).
     pub jobs: usize,
     pub shard: Option<Shard>,
-    /// Skip variants already finished in `out_dir`.
+    /// Skip variants already finished in `out_dir` with the same inputs ([`fingerprint`]).
     pub resume: bool,
+    /// The analysis settings that decide a result besides the sweep file (solver options and
+    /// tolerances), as text: part of every variant's [`fingerprint`].
+    pub settings: String,
 }
 
 /// The stored result of one variant (`variants/<name>.json`).
@@ -66,17 +70,80 @@ pub struct VariantOutcome {
     pub summary: Option<BTreeMap<String, f64>>,
     pub error: Option<String>,
     pub wall_time_s: f64,
+    /// [`fingerprint`] of the inputs this result was computed from (empty in older files).
+    #[serde(default)]
+    pub fingerprint: String,
+    /// This run replaced a stored result computed from other inputs (not stored).
+    #[serde(skip)]
+    pub inputs_changed: bool,
+}
+
+/// Fingerprint (16 hex digits) of everything that decides the result of `variant`: the program
+/// version, the analysis and duration of the sweep file, `settings` ([`RunOptions`]) and the
+/// variant's model with its overrides, fully resolved (defaults applied, oil file read).
+pub fn fingerprint(sweep: &SweepFile, variant: &Variant, settings: &str) -> String {
+    let model = match sweep.model_of(variant) {
+        Ok(model) => format!("{model:?}"),
+        Err(e) => e.to_string(),
+    };
+    let inputs = format!(
+        "rolldyn {}\n{:?}\n{:?}\n{settings}\n{model}",
+        env!("CARGO_PKG_VERSION"),
+        sweep.analysis,
+        sweep.duration
+    );
+    format!("{:016x}", XxHash64::oneshot(0, inputs.as_bytes()))
 }
 
 fn variant_file(out: &Path, name: &str) -> PathBuf {
     out.join("variants").join(format!("{name}.json"))
 }
 
-fn finished(out: &Path, name: &str) -> bool {
-    std::fs::read_to_string(variant_file(out, name))
-        .ok()
-        .and_then(|t| serde_json::from_str::<VariantOutcome>(&t).ok())
-        .is_some_and(|o| o.summary.is_some())
+/// The stored outcome of variant `name`: `None` when it has no file, an error when its file
+/// cannot be read.
+fn stored(out: &Path, name: &str) -> Result<Option<VariantOutcome>, String> {
+    let path = variant_file(out, name);
+    let text = match std::fs::read_to_string(&path) {
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(None),
+        read => read.map_err(|e| format!("cannot read {}: {e}", path.display()))?,
+    };
+    serde_json::from_str(&text)
+        .map(Some)
+        .map_err(|e| format!("cannot read {}: {e}", path.display()))
+}
+
+/// A variant to run now, with its fingerprint and whether a stored result had other inputs.
+struct Planned<'a> {
+    index: usize,
+    variant: &'a Variant,
+    fingerprint: String,
+    inputs_changed: bool,
+}
+
+/// The variants of this run: those of the shard, without (with `resume`) the finished ones
+/// whose inputs did not change.
+fn plan<'a>(sweep: &'a SweepFile, options: &RunOptions) -> Vec<Planned<'a>> {
+    sweep
+        .variants
+        .iter()
+        .enumerate()
+        .filter(|(i, _)| options.shard.is_none_or(|s| i % s.count == s.index))
+        .filter_map(|(index, variant)| {
+            let fingerprint = fingerprint(sweep, variant, &options.settings);
+            let previous = stored(&options.out_dir, &variant.name).ok().flatten();
+            let same_inputs = previous.as_ref().map(|p| p.fingerprint == fingerprint);
+            let finished = previous.is_some_and(|p| p.summary.is_some());
+            if options.resume && finished && same_inputs == Some(true) {
+                return None;
+            }
+            Some(Planned {
+                index,
+                variant,
+                fingerprint,
+                inputs_changed: same_inputs == Some(false),
+            })
+        })
+        .collect()
 }
 
 /// Runs the selected variants with `analysis` (one call per variant; it must be thread-safe and
@@ -96,13 +163,7 @@ pub fn run(
             format!("cannot create {}: {e}", dir.display()),
         )
     })?;
-    let selected: Vec<(usize, &Variant)> = sweep
-        .variants
-        .iter()
-        .enumerate()
-        .filter(|(i, _)| options.shard.is_none_or(|s| i % s.count == s.index))
-        .filter(|(_, v)| !(options.resume && finished(&options.out_dir, &v.name)))
-        .collect();
+    let selected = plan(sweep, options);
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(options.jobs.max(1))
         .build()
@@ -110,7 +171,8 @@ pub fn run(
     let outcomes: Vec<Result<VariantOutcome, SweepError>> = pool.install(|| {
         selected
             .par_iter()
-            .map(|&(index, variant)| {
+            .map(|planned| {
+                let variant = planned.variant;
                 let start = std::time::Instant::now();
                 let result = sweep
                     .model_of(variant)
@@ -118,10 +180,12 @@ pub fn run(
                     .and_then(|model| analysis(variant, model));
                 let outcome = VariantOutcome {
                     name: variant.name.clone(),
-                    index,
+                    index: planned.index,
                     summary: result.as_ref().ok().cloned(),
                     error: result.err(),
                     wall_time_s: start.elapsed().as_secs_f64(),
+                    fingerprint: planned.fingerprint.clone(),
+                    inputs_changed: planned.inputs_changed,
                 };
                 let path = variant_file(&options.out_dir, &variant.name);
                 let tmp = path.with_extension("json.tmp");
@@ -143,72 +207,119 @@ pub fn run(
     outcomes.into_iter().collect()
 }
 
-/// Collects every finished variant in `out_dir` into `summary.csv` (with names and errors),
-/// `summary.parquet` (numeric columns) and one SVG per summary column (value per variant, like
-/// seed 000 Figs 3.13–3.30). Returns the number of variants collected.
-pub fn collect(sweep: &SweepFile, out_dir: &Path) -> Result<usize, SweepError> {
-    let fail = |e: String| SweepError::new(&sweep.path, "", e);
-    let outcomes: Vec<VariantOutcome> = sweep
+/// A row of the summary: a stored outcome, or why its values are blank.
+struct SummaryRow {
+    name: String,
+    index: usize,
+    summary: Option<BTreeMap<String, f64>>,
+    error: Option<String>,
+}
+
+/// The summary rows of the variants that have a result file in `options.out_dir`, in the order
+/// of the sweep file. A result computed from other inputs than the variant's current ones
+/// ([`fingerprint`]) or an unreadable file gives a row without values that says so.
+fn summary_rows(sweep: &SweepFile, options: &RunOptions) -> Vec<SummaryRow> {
+    let blank = |name: &str, index, error: String| SummaryRow {
+        name: name.to_string(),
+        index,
+        summary: None,
+        error: Some(error),
+    };
+    sweep
         .variants
         .iter()
-        .filter_map(|v| std::fs::read_to_string(variant_file(out_dir, &v.name)).ok())
-        .filter_map(|t| serde_json::from_str(&t).ok())
-        .collect();
-    let mut columns: Vec<String> = outcomes
+        .enumerate()
+        .filter_map(|(index, variant)| {
+            match stored(&options.out_dir, &variant.name) {
+            Ok(None) => None,
+            Err(e) => Some(blank(&variant.name, index, e)),
+            Ok(Some(o)) if o.fingerprint != fingerprint(sweep, variant, &options.settings) => {
+                Some(blank(
+                    &variant.name,
+                    index,
+                    "stale: the inputs changed since this result; run the sweep again with --resume"
+                        .into(),
+                ))
+            }
+            Ok(Some(o)) => Some(SummaryRow {
+                name: o.name,
+                index,
+                summary: o.summary,
+                error: o.error,
+            }),
+        }
+        })
+        .collect()
+}
+
+/// Collects every variant with a result in `options.out_dir` into `summary.csv` and
+/// `summary.parquet` (variant, index, the summary columns, error) and one SVG per summary column
+/// (value per variant, like seed 000 Figs 3.13–3.30). Returns the number of rows.
+pub fn collect(sweep: &SweepFile, options: &RunOptions) -> Result<usize, SweepError> {
+    let out_dir = &options.out_dir;
+    let fail = |e: String| SweepError::new(&sweep.path, "", e);
+    let rows = summary_rows(sweep, options);
+    let mut columns: Vec<String> = rows
         .iter()
-        .filter_map(|o| o.summary.as_ref())
+        .filter_map(|r| r.summary.as_ref())
         .flat_map(|s| s.keys().cloned())
         .collect();
     columns.sort();
     columns.dedup();
-    let mut csv =
-        csv::Writer::from_path(out_dir.join("summary.csv")).map_err(|e| fail(e.to_string()))?;
+    let value = |r: &SummaryRow, c: &str| {
+        r.summary
+            .as_ref()
+            .and_then(|s| s.get(c))
+            .copied()
+            .unwrap_or(f64::NAN)
+    };
     let mut header = vec!["variant".to_string(), "index".to_string()];
     header.extend(columns.iter().cloned());
     header.push("error".to_string());
+    let mut csv =
+        csv::Writer::from_path(out_dir.join("summary.csv")).map_err(|e| fail(e.to_string()))?;
     csv.write_record(&header).map_err(|e| fail(e.to_string()))?;
-    let mut numeric = vec!["index".to_string()];
-    numeric.extend(columns.iter().cloned());
-    let mut parquet = TableWriter::create(
-        out_dir,
-        "summary",
-        &numeric,
-        Formats {
-            csv: false,
-            parquet: true,
-        },
-    )
-    .map_err(|e| fail(e.to_string()))?;
-    for o in &outcomes {
-        let values: Vec<f64> = columns
-            .iter()
-            .map(|c| {
-                o.summary
-                    .as_ref()
-                    .and_then(|s| s.get(c))
-                    .copied()
-                    .unwrap_or(f64::NAN)
-            })
-            .collect();
-        let mut record = vec![o.name.clone(), o.index.to_string()];
-        record.extend(values.iter().map(|v| format!("{v:e}")));
-        record.push(o.error.clone().unwrap_or_default());
+    for r in &rows {
+        let mut record = vec![r.name.clone(), r.index.to_string()];
+        record.extend(columns.iter().map(|c| csv_field(value(r, c))));
+        record.push(r.error.clone().unwrap_or_default());
         csv.write_record(&record).map_err(|e| fail(e.to_string()))?;
-        let mut row = vec![o.index as f64];
-        row.extend(values);
-        parquet.write_row(&row).map_err(|e| fail(e.to_string()))?;
     }
     csv.flush().map_err(|e| fail(e.to_string()))?;
-    parquet.finish().map_err(|e| fail(e.to_string()))?;
-    for column in &columns {
-        let points: Vec<(f64, f64)> = outcomes
+
+    let names: Vec<Option<String>> = rows.iter().map(|r| Some(r.name.clone())).collect();
+    let indices: Vec<f64> = rows.iter().map(|r| r.index as f64).collect();
+    let values: Vec<Vec<f64>> = columns
+        .iter()
+        .map(|c| rows.iter().map(|r| value(r, c)).collect())
+        .collect();
+    let errors: Vec<Option<String>> = rows.iter().map(|r| r.error.clone()).collect();
+    let mut table = vec![
+        Column {
+            name: "variant",
+            values: Values::Text(&names),
+        },
+        Column {
+            name: "index",
+            values: Values::Numbers(&indices),
+        },
+    ];
+    table.extend(columns.iter().zip(&values).map(|(c, v)| Column {
+        name: c,
+        values: Values::Numbers(v),
+    }));
+    table.push(Column {
+        name: "error",
+        values: Values::Text(&errors),
+    });
+    write_parquet_table(&out_dir.join("summary.parquet"), &table)
+        .map_err(|e| fail(e.to_string()))?;
+
+    for (column, values) in columns.iter().zip(&values) {
+        let points: Vec<(f64, f64)> = indices
             .iter()
-            .filter_map(|o| {
-                o.summary
-                    .as_ref()
-                    .and_then(|s| s.get(column))
-                    .map(|v| (o.index as f64 + 1.0, *v))
-            })
+            .zip(values)
+            .map(|(i, v)| (i + 1.0, *v))
             .filter(|p| p.1.is_finite())
             .collect();
         if points.is_empty() {
@@ -228,5 +339,5 @@ pub fn collect(sweep: &SweepFile, out_dir: &Path) -> Result<usize, SweepError> {
         )
         .map_err(|e| fail(e.to_string()))?;
     }
-    Ok(outcomes.len())
+    Ok(rows.len())
 }

@@ -116,6 +116,7 @@ fn shards_resume_and_collect() {
         jobs: 2,
         shard,
         resume,
+        settings: "stand-in".into(),
     };
     let first = run(
         &sweep,
@@ -134,7 +135,7 @@ fn shards_resume_and_collect() {
         6,
         "resume skips the finished variants"
     );
-    assert_eq!(collect(&sweep, &out).unwrap(), 6);
+    assert_eq!(collect(&sweep, &options(None, true)).unwrap(), 6);
     let csv = std::fs::read_to_string(out.join("summary.csv")).unwrap();
     assert_eq!(csv.lines().count(), 7);
     assert!(
@@ -164,4 +165,148 @@ fn seed000_table_3_1_sweep_has_21_valid_variants() {
     };
     assert!((b.clearance.radial - 0.044e-3).abs() < 1e-12);
     assert_eq!(sweep.duration.as_deref(), Some("10rev"));
+}
+
+/// The stand-in analysis of these tests: the radial clearance of the variant's model.
+fn clearance(model: rolldyn_model::Model) -> Result<BTreeMap<String, f64>, String> {
+    let rolldyn_model::BearingModel::Cylindrical(b) = model.bearing else {
+        return Err("not cylindrical".into());
+    };
+    Ok(BTreeMap::from([(
+        "clearance_m".to_string(),
+        b.clearance.radial,
+    )]))
+}
+
+fn clearance_variants(clearances_um: &[u32]) -> String {
+    clearances_um
+        .iter()
+        .enumerate()
+        .map(|(i, c)| format!("[[variant]]\nname = \"v{i}\"\n\"clearance.radial\" = \"{c} um\"\n"))
+        .collect()
+}
+
+#[test]
+fn resume_recomputes_variants_whose_inputs_changed() {
+    let dir = scratch("fingerprint");
+    let out = dir.join("out");
+    let options = |settings: &str| RunOptions {
+        out_dir: out.clone(),
+        jobs: 1,
+        shard: None,
+        resume: true,
+        settings: settings.into(),
+    };
+    let analysis = |_: &Variant, model: rolldyn_model::Model| clearance(model);
+    let names = |outcomes: &[VariantOutcome]| -> Vec<(String, bool)> {
+        outcomes
+            .iter()
+            .map(|o| (o.name.clone(), o.inputs_changed))
+            .collect()
+    };
+    let sweep = SweepFile::load(&write_sweep(&dir, &clearance_variants(&[0, 5, 10]))).unwrap();
+    assert_eq!(
+        run(&sweep, &options("a"), &analysis, &|_| {})
+            .unwrap()
+            .len(),
+        3
+    );
+    assert!(
+        run(&sweep, &options("a"), &analysis, &|_| {})
+            .unwrap()
+            .is_empty()
+    );
+
+    let edited = SweepFile::load(&write_sweep(&dir, &clearance_variants(&[0, 7, 10]))).unwrap();
+    let rerun = run(&edited, &options("a"), &analysis, &|_| {}).unwrap();
+    assert_eq!(names(&rerun), vec![("v1".to_string(), true)]);
+    assert_eq!(collect(&edited, &options("a")).unwrap(), 3);
+    let csv = std::fs::read_to_string(out.join("summary.csv")).unwrap();
+    assert!(
+        csv.lines().nth(2).unwrap().starts_with("v1,1,7e-6"),
+        "{csv}"
+    );
+
+    let rerun = run(&edited, &options("b"), &analysis, &|_| {}).unwrap();
+    assert_eq!(
+        rerun.len(),
+        3,
+        "changed settings (duration, tolerance) rerun every variant"
+    );
+    assert!(rerun.iter().all(|o| o.inputs_changed));
+    std::fs::remove_dir_all(dir).ok();
+}
+
+#[test]
+fn collect_blanks_results_of_changed_inputs() {
+    let dir = scratch("stale");
+    let out = dir.join("out");
+    let options = RunOptions {
+        out_dir: out.clone(),
+        jobs: 1,
+        shard: None,
+        resume: false,
+        settings: String::new(),
+    };
+    let analysis = |_: &Variant, model: rolldyn_model::Model| clearance(model);
+    let sweep = SweepFile::load(&write_sweep(&dir, &clearance_variants(&[0, 5]))).unwrap();
+    run(&sweep, &options, &analysis, &|_| {}).unwrap();
+    let edited = SweepFile::load(&write_sweep(&dir, &clearance_variants(&[0, 6]))).unwrap();
+    assert_eq!(collect(&edited, &options).unwrap(), 2);
+    let csv = std::fs::read_to_string(out.join("summary.csv")).unwrap();
+    let row = csv.lines().nth(2).unwrap();
+    assert!(
+        row.starts_with("v1,1,,") && row.contains("inputs changed"),
+        "{csv}"
+    );
+    std::fs::remove_dir_all(dir).ok();
+}
+
+#[test]
+fn summary_parquet_has_the_variant_and_error_columns_of_the_csv() {
+    use parquet::file::reader::{FileReader, SerializedFileReader};
+    use parquet::record::RowAccessor;
+    let dir = scratch("parquet");
+    let out = dir.join("out");
+    let options = RunOptions {
+        out_dir: out.clone(),
+        jobs: 1,
+        shard: None,
+        resume: false,
+        settings: String::new(),
+    };
+    let analysis = |v: &Variant, model: rolldyn_model::Model| {
+        if v.name == "v1" {
+            return Err("no solution".to_string());
+        }
+        clearance(model)
+    };
+    let sweep = SweepFile::load(&write_sweep(&dir, &clearance_variants(&[0, 5]))).unwrap();
+    run(&sweep, &options, &analysis, &|_| {}).unwrap();
+    collect(&sweep, &options).unwrap();
+    let csv = std::fs::read_to_string(out.join("summary.csv")).unwrap();
+    assert_eq!(csv.lines().nth(2), Some("v1,1,,no solution"), "{csv}");
+    let reader =
+        SerializedFileReader::new(std::fs::File::open(out.join("summary.parquet")).unwrap())
+            .unwrap();
+    let names: Vec<String> = reader
+        .metadata()
+        .file_metadata()
+        .schema_descr()
+        .columns()
+        .iter()
+        .map(|c| c.name().to_string())
+        .collect();
+    assert_eq!(names, ["variant", "index", "clearance_m", "error"]);
+    let rows: Vec<_> = reader
+        .get_row_iter(None)
+        .unwrap()
+        .map(|r| r.unwrap())
+        .collect();
+    assert_eq!(rows[0].get_string(0).unwrap(), "v0");
+    assert!(rows[0].get_string(3).is_err(), "no error: null");
+    assert_eq!(rows[1].get_string(0).unwrap(), "v1");
+    assert!(rows[1].get_double(2).is_err(), "failed: null value");
+    assert_eq!(rows[1].get_string(3).unwrap(), "no solution");
+    std::fs::remove_dir_all(dir).ok();
 }
