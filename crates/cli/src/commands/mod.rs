@@ -6,6 +6,7 @@ pub mod contact;
 pub mod demo;
 pub mod ehl_line;
 pub mod film;
+mod jobs_args;
 pub mod journal;
 mod oil_args;
 pub mod oils;

@@ -5,6 +5,7 @@
 //! revolutions, and the mean cage slip of the last revolutions is reported next to the
 //! quasi-static slip. Points run in parallel.
 
+use super::jobs_args::JobsArgs;
 use crate::failure::Failure;
 use crate::output::{load_model, print_json};
 use rolldyn_dynamics::output::{OutputSink, RevolutionSummary, Snapshot};
@@ -24,9 +25,8 @@ const MIN_SPEED_RAD_S: f64 = 1.0;
 pub struct Args {
     /// Model file (TOML) with [lubricant], [operating] (schedules) and [startup] (frozen points).
     pub model: PathBuf,
-    /// Parallel jobs (default: the number of cores).
-    #[arg(long)]
-    pub jobs: Option<usize>,
+    #[command(flatten)]
+    pub jobs: JobsArgs,
     /// Cage revolutions per point (overrides startup.revolutions; default 10).
     #[arg(long)]
     pub revolutions: Option<f64>,
@@ -228,10 +228,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
         .out
         .clone()
         .unwrap_or_else(|| PathBuf::from("out").join(format!("{stem}-startup")));
-    let jobs = args
-        .jobs
-        .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
-        .max(1);
+    let jobs = args.jobs.count();
     let settings = Settings {
         revolutions,
         average,

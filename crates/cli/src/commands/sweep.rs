@@ -1,6 +1,7 @@
 //! `rolldyn sweep SWEEP.toml`: a table of model variants run in parallel, one summary row per
 //! variant (CSV + Parquet) and one plot per summary column (seed 000 Figs 3.13–3.30).
 
+use super::jobs_args::JobsArgs;
 use super::simulate::Duration;
 use crate::failure::Failure;
 use rolldyn_dynamics::output::NullSink;
@@ -17,16 +18,16 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 pub struct Args {
     /// Sweep file (TOML): base model, analysis and [[variant]] tables (see rolldyn-sweep docs).
     pub sweep: PathBuf,
-    /// Parallel jobs (default: the number of cores).
-    #[arg(long)]
-    pub jobs: Option<usize>,
+    #[command(flatten)]
+    pub jobs: JobsArgs,
     /// Output folder (default `out/<sweep file name>`).
     #[arg(long)]
     pub out: Option<PathBuf>,
     /// Run every n-th variant only (`k/n`), e.g. one cluster array job of n.
     #[arg(long)]
     pub shard: Option<Shard>,
-    /// Skip variants already finished in the output folder.
+    /// Skip variants already finished in the output folder from the same inputs (model,
+    /// overrides, duration, solver settings, program version); rerun the others.
     #[arg(long)]
     pub resume: bool,
     /// No per-variant progress lines.
@@ -90,6 +91,18 @@ fn skid(model: rolldyn_model::Model) -> Result<BTreeMap<String, f64>, String> {
     ))
 }
 
+/// The settings of the analysis beyond the sweep file (solver defaults and tolerances) for the
+/// variants' fingerprints.
+fn settings(analysis: Analysis, duration: Duration) -> String {
+    match analysis {
+        Analysis::Simulate => format!(
+            "duration {duration:?}; {:?}",
+            rolldyn_dynamics::DynamicsSettings::default()
+        ),
+        Analysis::Skid => format!("finite cage land; {:?}", QuasiStaticOptions::default()),
+    }
+}
+
 pub fn run(args: Args) -> Result<(), Failure> {
     let sweep = SweepFile::load(&args.sweep).map_err(|e| Failure::Input(e.to_string()))?;
     let duration: Duration = sweep
@@ -106,10 +119,6 @@ pub fn run(args: Args) -> Result<(), Failure> {
         .out
         .clone()
         .unwrap_or_else(|| PathBuf::from("out").join(stem));
-    let jobs = args
-        .jobs
-        .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
-        .max(1);
     let analysis = sweep.analysis;
     let analyse = move |_: &Variant, model: rolldyn_model::Model| match analysis {
         Analysis::Simulate => simulate(duration, model),
@@ -129,16 +138,30 @@ pub fn run(args: Args) -> Result<(), Failure> {
     };
     let options = RunOptions {
         out_dir: out_dir.clone(),
-        jobs,
+        jobs: args.jobs.count(),
         shard: args.shard,
         resume: args.resume,
+        settings: settings(analysis, duration),
     };
     let outcomes = run_sweep(&sweep, &options, &analyse, &progress)
         .map_err(|e| Failure::Run(e.to_string()))?;
-    let collected = collect(&sweep, &out_dir).map_err(|e| Failure::Run(e.to_string()))?;
+    let collected = collect(&sweep, &options).map_err(|e| Failure::Run(e.to_string()))?;
     let failed = outcomes.iter().filter(|o| o.error.is_some()).count();
+    let changed: Vec<&str> = outcomes
+        .iter()
+        .filter(|o| o.inputs_changed)
+        .map(|o| o.name.as_str())
+        .collect();
+    let changed = if changed.is_empty() {
+        String::new()
+    } else {
+        format!(
+            "; rerun because their inputs changed: {}",
+            changed.join(", ")
+        )
+    };
     println!(
-        "{}: ran {} of {total} variants ({failed} failed); {collected} collected in {}",
+        "{}: ran {} of {total} variants ({failed} failed{changed}); {collected} collected in {}",
         args.sweep.display(),
         outcomes.len(),
         out_dir.join("summary.csv").display()
