@@ -12,10 +12,10 @@ pub struct Args {
     /// Model file (TOML); the embedded default model (2002834) when omitted.
     pub model: Option<PathBuf>,
     /// Inner-ring speed for the epicyclic speeds, e.g. `6371rpm`.
-    #[arg(long, default_value = "1000rpm")]
+    #[arg(long, allow_hyphen_values = true, default_value = "1000rpm")]
     pub speed: Quantity<AngularSpeed>,
     /// Outer-ring speed (intershaft bearings), e.g. `13067rpm`.
-    #[arg(long, default_value = "0rpm")]
+    #[arg(long, allow_hyphen_values = true, default_value = "0rpm")]
     pub outer_speed: Quantity<AngularSpeed>,
     /// Print JSON instead of text.
     #[arg(long)]

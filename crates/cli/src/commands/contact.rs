@@ -35,16 +35,16 @@ pub struct Args {
     /// Model file (TOML); the embedded default model when omitted.
     pub model: Option<PathBuf>,
     /// Roller load, e.g. `1167N`.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub load: Quantity<Force>,
     /// Roller tilt relative to the raceway, e.g. `4arcmin` (added to the model's misalignment).
-    #[arg(long, default_value = "0")]
+    #[arg(long, allow_hyphen_values = true, default_value = "0")]
     pub tilt: Quantity<Angle>,
     /// Boussinesq grid: cells along the roller × cells across, e.g. `350x9` (seed 004 Table 2).
     #[arg(long, default_value = "150x3", value_parser = parse_cells)]
     pub cells: (usize, usize),
     /// Total transverse extent of the Boussinesq grid (default: square cells, flag F-12 of docs/theory.md).
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub width: Option<Quantity<Length>>,
     #[arg(long, value_enum, default_value = "boussinesq")]
     pub method: Method,
@@ -118,7 +118,12 @@ pub fn to_json(model: &str, report: &ContactReport, cells: Option<(usize, usize)
     }
 }
 
-/// Solves one roller–raceway contact as the arguments say.
+/// A maximum Hertz pressure above this is beyond the strength of any bearing material (bearing
+/// steels yield near 4 GPa, ceramics fail below 10 GPa): the elastic contact does not apply, Pa.
+pub const MAX_CREDIBLE_PRESSURE_PA: f64 = 10e9;
+
+/// Solves one roller–raceway contact as the arguments say; a load whose Hertz pressure exceeds
+/// [`MAX_CREDIBLE_PRESSURE_PA`] is refused as bad input.
 pub fn solve(
     contact: &RollerRacewayContact,
     method: Method,
@@ -130,6 +135,15 @@ pub fn solve(
     if !(load > 0.0) {
         return Err(Failure::Input(format!(
             "--load must be positive, got {load} N"
+        )));
+    }
+    let hertz_pressure = contact.hertz(load).max_pressure_pa;
+    if !(hertz_pressure <= MAX_CREDIBLE_PRESSURE_PA) {
+        return Err(Failure::Input(format!(
+            "--load {load:e} N gives a Hertz pressure of {:.3e} GPa, beyond any bearing \
+             material ({} GPa): the elastic contact model does not apply",
+            hertz_pressure * 1e-9,
+            MAX_CREDIBLE_PRESSURE_PA * 1e-9
         )));
     }
     let law = match law {

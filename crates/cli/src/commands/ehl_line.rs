@@ -41,22 +41,22 @@ pub enum DensityName {
 #[derive(clap::Args)]
 pub struct Args {
     /// (Reduced) roller radius R.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub radius: Quantity<Length>,
     /// Dynamic viscosity μ₀ at ambient pressure.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub viscosity: Quantity<DynamicViscosity>,
     /// Rolling (entrainment) speed u_m = (u₁ + u₂)/2; the seed's V = u₁ + u₂ = 2u_m.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub rolling_speed: Quantity<Speed>,
     /// Minimum film thickness h_m (given-film mode).
-    #[arg(long, conflicts_with = "load_per_length")]
+    #[arg(long, allow_hyphen_values = true, conflicts_with = "load_per_length")]
     pub min_film: Option<Quantity<Length>>,
     /// Load per unit length (inverse mode): N/m, kN/m, MN/m, N/mm, kN/mm (e.g. 300kN/m).
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub load_per_length: Option<Quantity<LoadPerLength>>,
     /// Pressure–viscosity coefficient α: 1/Pa, /Pa, 1/GPa, /GPa (e.g. 7.5e-9/Pa); 0 = isoviscous.
-    #[arg(long, default_value = "0")]
+    #[arg(long, allow_hyphen_values = true, default_value = "0")]
     pub piezo: Quantity<PerPressure>,
     /// Pressure–viscosity law used with --piezo.
     #[arg(long, value_enum, default_value = "barus")]
@@ -69,7 +69,7 @@ pub struct Args {
     #[arg(long, default_value = "none")]
     pub elastic: String,
     /// Young's modulus of both bodies.
-    #[arg(long, default_value = "210GPa")]
+    #[arg(long, allow_hyphen_values = true, default_value = "210GPa")]
     pub modulus: Quantity<Pressure>,
     /// Poisson ratio of both bodies.
     #[arg(long, default_value = "0.3")]
@@ -81,16 +81,16 @@ pub struct Args {
     #[arg(long, default_value = "1000")]
     pub nodes: usize,
     /// Transient: step the load per length to this value at t = 0 (e.g. 600kN/m).
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub step_to: Option<Quantity<LoadPerLength>>,
     /// Transient: simulated time after the step.
-    #[arg(long, default_value = "1ms")]
+    #[arg(long, allow_hyphen_values = true, default_value = "1ms")]
     pub duration: Quantity<Time>,
     /// Transient: roller length carrying the load.
-    #[arg(long, default_value = "10mm")]
+    #[arg(long, allow_hyphen_values = true, default_value = "10mm")]
     pub contact_length: Quantity<Length>,
     /// Transient: roller mass [default: steel cylinder π R² × contact length × 7850 kg/m³].
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub mass: Option<Quantity<Mass>>,
     #[arg(long)]
     pub json: bool,

@@ -40,16 +40,21 @@ pub struct Args {
     pub oil: OilArgs,
     #[command(flatten)]
     pub rig: RigArgs,
-    #[arg(long, default_value = "40C")]
+    #[arg(long, allow_hyphen_values = true, default_value = "40C")]
     pub temperature: Quantity<Temperature>,
     /// Normal load of the contact.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub load: Quantity<Force>,
     /// Rolling (entrainment) speed u.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub rolling_speed: Quantity<Speed>,
     /// Roughness Ra of the two surfaces, e.g. `0.32um,0.16um`.
-    #[arg(long, value_delimiter = ',', default_value = "0,0")]
+    #[arg(
+        long,
+        allow_hyphen_values = true,
+        value_delimiter = ',',
+        default_value = "0,0"
+    )]
     pub roughness: Vec<Quantity<Length>>,
     #[arg(long, value_enum, default_value = "auto")]
     pub formula: FormulaName,

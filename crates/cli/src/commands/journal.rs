@@ -81,19 +81,19 @@ pub struct Args {
     #[arg(long, conflicts_with_all = ["radius", "length", "clearance", "viscosity", "speed", "eccentricity", "load"])]
     pub file: Option<PathBuf>,
     /// Journal radius R.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub radius: Option<Quantity<Length>>,
     /// Bearing length L.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub length: Option<Quantity<Length>>,
     /// Radial clearance c.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub clearance: Option<Quantity<Length>>,
     /// Dynamic viscosity μ (isoviscous).
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub viscosity: Option<Quantity<DynamicViscosity>>,
     /// Journal speed (bush fixed).
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub speed: Option<Quantity<AngularSpeed>>,
     /// Eccentricity ratio ε = e/c, 0 < ε < 1.
     #[arg(long, conflicts_with = "load", allow_hyphen_values = true)]
@@ -102,7 +102,7 @@ pub struct Args {
     #[arg(long, allow_hyphen_values = true)]
     pub load: Option<Quantity<Force>>,
     /// Lubricant temperature (isothermal model).
-    #[arg(long, default_value = "40C")]
+    #[arg(long, allow_hyphen_values = true, default_value = "40C")]
     pub temperature: Quantity<Temperature>,
     /// Cavitation model [default: reynolds].
     #[arg(long, value_enum)]

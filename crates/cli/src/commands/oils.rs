@@ -10,8 +10,9 @@ use std::path::PathBuf;
 
 #[derive(clap::Args)]
 pub struct Args {
-    /// Temperature at which the properties are evaluated.
-    #[arg(long, default_value = "40C")]
+    /// Temperature at which the properties are evaluated (where every oil's laws give finite,
+    /// positive values).
+    #[arg(long, default_value = "40C", allow_hyphen_values = true)]
     pub temperature: Quantity<Temperature>,
     /// Also list a user oil file (TOML).
     #[arg(long)]
@@ -60,6 +61,28 @@ fn row(oil: &Lubricant, t: f64) -> OilRow {
     }
 }
 
+/// The first property of `r` whose law gives no finite positive value at its temperature.
+fn outside_law(r: &OilRow) -> Option<(&'static str, f64)> {
+    [
+        ("density", r.density_kg_m3),
+        ("dynamic viscosity", r.dynamic_viscosity_pa_s),
+        ("kinematic viscosity", r.kinematic_viscosity_m2_s),
+        (
+            "pressure-viscosity coefficient",
+            r.pressure_viscosity_per_pa,
+        ),
+        ("shear modulus", r.shear_modulus_pa),
+        ("Eyring stress", r.eyring_stress_pa),
+        ("thermal conductivity", r.thermal_conductivity_w_mk),
+    ]
+    .into_iter()
+    .find_map(|(name, value)| {
+        value
+            .filter(|v| !(v.is_finite() && *v > 0.0))
+            .map(|v| (name, v))
+    })
+}
+
 pub fn run(args: Args) -> Result<(), Failure> {
     let t = args.temperature.si();
     let mut oils: Vec<Lubricant> = KNOWN_OILS
@@ -75,6 +98,16 @@ pub fn run(args: Args) -> Result<(), Failure> {
         oils.push(user.load()?);
     }
     let rows: Vec<OilRow> = oils.iter().map(|o| row(o, t)).collect();
+    if let Some((r, (property, value))) = rows.iter().find_map(|r| outside_law(r).map(|p| (r, p))) {
+        return Err(Failure::Input(format!(
+            "--temperature {:.1} °C is outside the laws of {}: its {property} would be {value:e} \
+             (documented range {:.0}…{:.0} °C)",
+            t - 273.15,
+            r.name,
+            r.valid_range_k[0] - 273.15,
+            r.valid_range_k[1] - 273.15
+        )));
+    }
     if args.json {
         return print_json(&rows);
     }

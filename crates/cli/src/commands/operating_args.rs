@@ -13,19 +13,19 @@ pub enum LoadDirectionArg {
 #[derive(clap::Args)]
 pub struct OperatingArgs {
     /// Inner-ring speed (overrides operating.inner_speed).
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub speed: Option<Quantity<AngularSpeed>>,
     /// Outer-ring speed (intershaft bearings).
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub outer_speed: Option<Quantity<AngularSpeed>>,
     /// Radial load on the inner ring (overrides operating.radial_load).
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub radial_load: Option<Quantity<Force>>,
     /// Radial load fixed in space or rotating with the inner ring.
     #[arg(long, value_enum)]
     pub load_direction: Option<LoadDirectionArg>,
     /// Oil temperature of all contacts (overrides operating.temperatures.oil).
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub oil_temperature: Option<Quantity<Temperature>>,
 }
 

@@ -23,16 +23,16 @@ pub struct RigArgs {
     pub contact: ContactKind,
     /// Ball radius (ball-on-disc) or reduced radius R′ (line). Default: the Ø19 mm ball of the
     /// seed's PAO1 tests.
-    #[arg(long, default_value = "9.5mm")]
+    #[arg(long, allow_hyphen_values = true, default_value = "9.5mm")]
     pub radius: Quantity<Length>,
     /// Contact length of a line contact.
-    #[arg(long, default_value = "10mm")]
+    #[arg(long, allow_hyphen_values = true, default_value = "10mm")]
     pub length: Quantity<Length>,
     /// Young's modulus of both bodies (AISI 52100).
-    #[arg(long, default_value = "210GPa")]
+    #[arg(long, allow_hyphen_values = true, default_value = "210GPa")]
     pub youngs_modulus: Quantity<Pressure>,
     /// Poisson's ratio of both bodies.
-    #[arg(long, default_value = "0.3")]
+    #[arg(long, allow_hyphen_values = true, default_value = "0.3")]
     pub poisson_ratio: Quantity<Dimensionless>,
 }
 

@@ -38,13 +38,13 @@ pub struct Args {
     /// omitted.
     pub model: Option<PathBuf>,
     /// Inner-ring speed, or a sweep `1500rpm..4500rpm:500rpm`.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub speed: Option<QuantityRange<AngularSpeed>>,
     /// Outer-ring speed (intershaft bearings), or a sweep.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub outer_speed: Option<QuantityRange<AngularSpeed>>,
     /// Radial load, or a sweep `100N..700N:50N`.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub radial_load: Option<QuantityRange<Force>>,
     /// Part temperatures, e.g. `inner=47.3C,outer=43C,cage=45C,oil=45C` (parts not given take
     /// the oil temperature).

@@ -31,13 +31,23 @@ pub struct Args {
     #[command(flatten)]
     pub rig: RigArgs,
     /// Oil temperature; a comma list overlays curves (`--temperature 40C,60C,100C`).
-    #[arg(long, alias = "temperatures", default_value = "40C")]
+    #[arg(
+        long,
+        allow_hyphen_values = true,
+        alias = "temperatures",
+        default_value = "40C"
+    )]
     pub temperature: QuantityRange<Temperature>,
     /// Maximum Hertz pressure; a list or range gives s_cr against pressure (`0.6GPa..2GPa:0.2GPa`).
-    #[arg(long, alias = "max-pressures", default_value = "1GPa")]
+    #[arg(
+        long,
+        allow_hyphen_values = true,
+        alias = "max-pressures",
+        default_value = "1GPa"
+    )]
     pub max_pressure: QuantityRange<Pressure>,
     /// Rolling (entrainment) speed u.
-    #[arg(long, default_value = "2.5m/s")]
+    #[arg(long, allow_hyphen_values = true, default_value = "2.5m/s")]
     pub rolling_speed: Quantity<Speed>,
     /// Largest slip of the curve.
     #[arg(long, default_value = "0.5")]
