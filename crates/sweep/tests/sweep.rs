@@ -263,6 +263,33 @@ fn collect_blanks_results_of_changed_inputs() {
 }
 
 #[test]
+fn an_unreadable_result_keeps_its_row_with_the_reason() {
+    let dir = scratch("unreadable");
+    let out = dir.join("out");
+    let options = RunOptions {
+        out_dir: out.clone(),
+        jobs: 1,
+        shard: None,
+        resume: true,
+        settings: String::new(),
+    };
+    let analysis = |_: &Variant, model: rolldyn_model::Model| clearance(model);
+    let sweep = SweepFile::load(&write_sweep(&dir, &clearance_variants(&[0, 5]))).unwrap();
+    run(&sweep, &options, &analysis, &|_| {}).unwrap();
+    std::fs::write(out.join("variants/v1.json"), "{\"name\": \"v1\", trunc").unwrap();
+    assert_eq!(collect(&sweep, &options).unwrap(), 2);
+    let csv = std::fs::read_to_string(out.join("summary.csv")).unwrap();
+    let row = csv.lines().nth(2).unwrap();
+    assert!(
+        row.starts_with("v1,1,,") && row.contains("cannot read"),
+        "{csv}"
+    );
+    let rerun = run(&sweep, &options, &analysis, &|_| {}).unwrap();
+    assert_eq!(rerun.len(), 1, "resume runs the variant again");
+    std::fs::remove_dir_all(dir).ok();
+}
+
+#[test]
 fn summary_parquet_has_the_variant_and_error_columns_of_the_csv() {
     use parquet::file::reader::{FileReader, SerializedFileReader};
     use parquet::record::RowAccessor;
