@@ -252,92 +252,126 @@ fn summary_rows(sweep: &SweepFile, options: &RunOptions) -> Vec<SummaryRow> {
         .collect()
 }
 
+/// The summary table, column by column: the variant names and indices, the figures (NaN where
+/// a row has none), the errors.
+struct SummaryTable {
+    names: Vec<Option<String>>,
+    indices: Vec<f64>,
+    columns: Vec<String>,
+    values: Vec<Vec<f64>>,
+    errors: Vec<Option<String>>,
+}
+
+impl SummaryTable {
+    fn new(rows: Vec<SummaryRow>) -> Self {
+        let mut columns: Vec<String> = rows
+            .iter()
+            .filter_map(|r| r.summary.as_ref())
+            .flat_map(|s| s.keys().cloned())
+            .collect();
+        columns.sort();
+        columns.dedup();
+        let values = columns
+            .iter()
+            .map(|c| {
+                rows.iter()
+                    .map(|r| r.summary.as_ref().and_then(|s| s.get(c)).copied())
+                    .map(|v| v.unwrap_or(f64::NAN))
+                    .collect()
+            })
+            .collect();
+        Self {
+            names: rows.iter().map(|r| Some(r.name.clone())).collect(),
+            indices: rows.iter().map(|r| r.index as f64).collect(),
+            columns,
+            values,
+            errors: rows.into_iter().map(|r| r.error).collect(),
+        }
+    }
+
+    /// `summary.csv`: variant, index, the figures (empty when missing), error.
+    fn write_csv(&self, path: &Path) -> Result<(), String> {
+        let mut csv = csv::Writer::from_path(path).map_err(|e| e.to_string())?;
+        let mut header = vec!["variant", "index"];
+        header.extend(self.columns.iter().map(String::as_str));
+        header.push("error");
+        csv.write_record(&header).map_err(|e| e.to_string())?;
+        for (row, name) in self.names.iter().enumerate() {
+            let mut record = vec![
+                name.clone().unwrap_or_default(),
+                self.indices[row].to_string(),
+            ];
+            record.extend(self.values.iter().map(|column| csv_field(column[row])));
+            record.push(self.errors[row].clone().unwrap_or_default());
+            csv.write_record(&record).map_err(|e| e.to_string())?;
+        }
+        csv.flush().map_err(|e| e.to_string())
+    }
+
+    /// `summary.parquet`, with the columns of the CSV.
+    fn write_parquet(&self, path: &Path) -> Result<(), String> {
+        let mut table = vec![
+            Column {
+                name: "variant",
+                values: Values::Text(&self.names),
+            },
+            Column {
+                name: "index",
+                values: Values::Numbers(&self.indices),
+            },
+        ];
+        table.extend(self.columns.iter().zip(&self.values).map(|(c, v)| Column {
+            name: c,
+            values: Values::Numbers(v),
+        }));
+        table.push(Column {
+            name: "error",
+            values: Values::Text(&self.errors),
+        });
+        write_parquet_table(path, &table).map_err(|e| e.to_string())
+    }
+
+    /// `<column>.svg` in `dir` for every figure: its value per variant.
+    fn plot(&self, dir: &Path) -> Result<(), String> {
+        for (column, values) in self.columns.iter().zip(&self.values) {
+            let points: Vec<(f64, f64)> = self
+                .indices
+                .iter()
+                .zip(values)
+                .map(|(i, v)| (i + 1.0, *v))
+                .filter(|p| p.1.is_finite())
+                .collect();
+            if points.is_empty() {
+                continue;
+            }
+            line_plot(
+                &dir.join(format!("{column}.svg")),
+                &Labels {
+                    title: &format!("{column} per variant"),
+                    x: "variant (order in the sweep file)",
+                    y: column,
+                },
+                &[Series {
+                    label: "",
+                    points: &points,
+                }],
+            )
+            .map_err(|e| e.to_string())?;
+        }
+        Ok(())
+    }
+}
+
 /// Collects every variant with a result in `options.out_dir` into `summary.csv` and
 /// `summary.parquet` (variant, index, the summary columns, error) and one SVG per summary column
 /// (value per variant, like seed 000 Figs 3.13–3.30). Returns the number of rows.
 pub fn collect(sweep: &SweepFile, options: &RunOptions) -> Result<usize, SweepError> {
-    let out_dir = &options.out_dir;
-    let fail = |e: String| SweepError::new(&sweep.path, "", e);
-    let rows = summary_rows(sweep, options);
-    let mut columns: Vec<String> = rows
-        .iter()
-        .filter_map(|r| r.summary.as_ref())
-        .flat_map(|s| s.keys().cloned())
-        .collect();
-    columns.sort();
-    columns.dedup();
-    let value = |r: &SummaryRow, c: &str| {
-        r.summary
-            .as_ref()
-            .and_then(|s| s.get(c))
-            .copied()
-            .unwrap_or(f64::NAN)
-    };
-    let mut header = vec!["variant".to_string(), "index".to_string()];
-    header.extend(columns.iter().cloned());
-    header.push("error".to_string());
-    let mut csv =
-        csv::Writer::from_path(out_dir.join("summary.csv")).map_err(|e| fail(e.to_string()))?;
-    csv.write_record(&header).map_err(|e| fail(e.to_string()))?;
-    for r in &rows {
-        let mut record = vec![r.name.clone(), r.index.to_string()];
-        record.extend(columns.iter().map(|c| csv_field(value(r, c))));
-        record.push(r.error.clone().unwrap_or_default());
-        csv.write_record(&record).map_err(|e| fail(e.to_string()))?;
-    }
-    csv.flush().map_err(|e| fail(e.to_string()))?;
-
-    let names: Vec<Option<String>> = rows.iter().map(|r| Some(r.name.clone())).collect();
-    let indices: Vec<f64> = rows.iter().map(|r| r.index as f64).collect();
-    let values: Vec<Vec<f64>> = columns
-        .iter()
-        .map(|c| rows.iter().map(|r| value(r, c)).collect())
-        .collect();
-    let errors: Vec<Option<String>> = rows.iter().map(|r| r.error.clone()).collect();
-    let mut table = vec![
-        Column {
-            name: "variant",
-            values: Values::Text(&names),
-        },
-        Column {
-            name: "index",
-            values: Values::Numbers(&indices),
-        },
-    ];
-    table.extend(columns.iter().zip(&values).map(|(c, v)| Column {
-        name: c,
-        values: Values::Numbers(v),
-    }));
-    table.push(Column {
-        name: "error",
-        values: Values::Text(&errors),
-    });
-    write_parquet_table(&out_dir.join("summary.parquet"), &table)
-        .map_err(|e| fail(e.to_string()))?;
-
-    for (column, values) in columns.iter().zip(&values) {
-        let points: Vec<(f64, f64)> = indices
-            .iter()
-            .zip(values)
-            .map(|(i, v)| (i + 1.0, *v))
-            .filter(|p| p.1.is_finite())
-            .collect();
-        if points.is_empty() {
-            continue;
-        }
-        line_plot(
-            &out_dir.join(format!("{column}.svg")),
-            &Labels {
-                title: &format!("{column} per variant"),
-                x: "variant (order in the sweep file)",
-                y: column,
-            },
-            &[Series {
-                label: "",
-                points: &points,
-            }],
-        )
-        .map_err(|e| fail(e.to_string()))?;
-    }
-    Ok(rows.len())
+    let dir = &options.out_dir;
+    let table = SummaryTable::new(summary_rows(sweep, options));
+    table
+        .write_csv(&dir.join("summary.csv"))
+        .and_then(|_| table.write_parquet(&dir.join("summary.parquet")))
+        .and_then(|_| table.plot(dir))
+        .map_err(|e| SweepError::new(&sweep.path, "", e))?;
+    Ok(table.names.len())
 }
