@@ -3,12 +3,17 @@
 //! A [`TableWriter`] receives one row at a time and never holds more than one Parquet row group
 //! (default 4096 rows) in memory, so a long simulation streams to disk. Rows written before a
 //! failure stay readable: call [`TableWriter::finish`] on the error path too (it writes the
-//! Parquet footer); dropping an unfinished writer also finishes it, best effort. A value that
-//! is not finite is written as an empty CSV field and a Parquet null ([`non_finite`]).
+//! Parquet footer); dropping an unfinished writer also finishes it, best effort. A process that
+//! is killed leaves a Parquet file without footer, but its CSV file holds every row up to the
+//! last [`TableWriter::flush`]: [`TableWriter::resume`] continues the table from there and
+//! rebuilds the Parquet file. A value that is not finite is written as an empty CSV field and a
+//! Parquet null ([`non_finite`]).
 
 pub mod non_finite;
+pub mod size;
 
 pub use non_finite::{csv_field, default_reason, mark_non_finite};
+pub use size::{ByteSize, estimated_table_bytes};
 
 use parquet::basic::Compression;
 use parquet::data_type::DoubleType;
@@ -118,15 +123,56 @@ impl TableWriter {
         names: &[String],
         formats: Formats,
     ) -> Result<Self, OutputError> {
-        let names: Vec<String> = names.iter().map(|n| column_name(n)).collect();
-        let csv = if formats.csv {
+        let mut table = Self::without_csv(dir, stem, names, formats)?;
+        if formats.csv {
             let path = dir.join(format!("{stem}.csv"));
             let mut writer = csv::Writer::from_path(&path).map_err(|e| fail(&path, e))?;
-            writer.write_record(&names).map_err(|e| fail(&path, e))?;
-            Some((path, writer))
-        } else {
-            None
-        };
+            writer
+                .write_record(&table.names)
+                .map_err(|e| fail(&path, e))?;
+            table.csv = Some((path, writer));
+        }
+        Ok(table)
+    }
+
+    /// Continues the table of an interrupted run in `dir` after its first `keep_rows` rows:
+    /// the CSV (the record of the run, which must hold them under the same header) is cut after
+    /// them — dropping later rows and a partial last line — and the Parquet file is rebuilt from
+    /// them. Writing then goes on as if the run had never stopped. With `keep_rows` 0 the
+    /// table starts anew.
+    pub fn resume(
+        dir: &Path,
+        stem: &str,
+        names: &[String],
+        formats: Formats,
+        keep_rows: usize,
+    ) -> Result<Self, OutputError> {
+        if keep_rows == 0 {
+            return Self::create(dir, stem, names, formats);
+        }
+        let path = dir.join(format!("{stem}.csv"));
+        if !formats.csv {
+            return Err(fail(&path, "a table is resumed from its CSV file"));
+        }
+        let mut table = Self::without_csv(dir, stem, names, formats)?;
+        let end = table.replay_csv(&path, keep_rows)?;
+        let file = std::fs::OpenOptions::new()
+            .append(true)
+            .open(&path)
+            .map_err(|e| fail(&path, e))?;
+        file.set_len(end).map_err(|e| fail(&path, e))?;
+        table.csv = Some((path, csv::Writer::from_writer(file)));
+        Ok(table)
+    }
+
+    /// The table with its Parquet file (when asked for) and no CSV file yet.
+    fn without_csv(
+        dir: &Path,
+        stem: &str,
+        names: &[String],
+        formats: Formats,
+    ) -> Result<Self, OutputError> {
+        let names: Vec<String> = names.iter().map(|n| column_name(n)).collect();
         let parquet = if formats.parquet {
             let path = dir.join(format!("{stem}.parquet"));
             let fields: String = names
@@ -154,12 +200,54 @@ impl TableWriter {
         };
         Ok(Self {
             names,
-            csv,
+            csv: None,
             parquet,
             row_group_rows: 4096,
             rows: 0,
             finished: false,
         })
+    }
+
+    /// Reads the first `keep_rows` rows of the CSV file at `path` into the Parquet file and the
+    /// row count; returns the byte offset where they end.
+    fn replay_csv(&mut self, path: &Path, keep_rows: usize) -> Result<u64, OutputError> {
+        let mut reader = csv::ReaderBuilder::new()
+            .flexible(true)
+            .from_path(path)
+            .map_err(|e| fail(path, e))?;
+        let header = reader.headers().map_err(|e| fail(path, e))?;
+        if !header.iter().eq(self.names.iter()) {
+            return Err(fail(path, "the header differs from this run's columns"));
+        }
+        let mut record = csv::StringRecord::new();
+        let mut values = vec![0.0; self.names.len()];
+        let mut end = reader.position().byte();
+        while self.rows < keep_rows
+            && reader.read_record(&mut record).map_err(|e| fail(path, e))?
+            && record.len() == values.len()
+        {
+            for (value, field) in values.iter_mut().zip(&record) {
+                *value = parse_field(field).ok_or_else(|| {
+                    fail(
+                        path,
+                        format!("row {}: '{field}' is not a number", self.rows + 1),
+                    )
+                })?;
+            }
+            self.push_parquet(&values)?;
+            self.rows += 1;
+            end = reader.position().byte();
+        }
+        if self.rows > 0 && !ends_a_line(path, end)? {
+            self.rows -= 1;
+        }
+        if self.rows < keep_rows {
+            return Err(fail(
+                path,
+                format!("{} complete rows where {keep_rows} are needed", self.rows),
+            ));
+        }
+        Ok(end)
     }
 
     /// Column names as written (sanitised for Parquet).
@@ -190,6 +278,13 @@ impl TableWriter {
                 .write_record(values.iter().map(|&v| csv_field(v)))
                 .map_err(|e| fail(path, e))?;
         }
+        self.push_parquet(values)?;
+        self.rows += 1;
+        Ok(())
+    }
+
+    /// Adds a row to the Parquet row group, written out when full.
+    fn push_parquet(&mut self, values: &[f64]) -> Result<(), OutputError> {
         if let Some(sink) = &mut self.parquet {
             for ((column, levels), &v) in sink.columns.iter_mut().zip(values) {
                 levels.push(i16::from(v.is_finite()));
@@ -201,7 +296,15 @@ impl TableWriter {
                 sink.flush()?;
             }
         }
-        self.rows += 1;
+        Ok(())
+    }
+
+    /// Hands the CSV rows written so far to the operating system, so that they survive the
+    /// process (the Parquet file is complete only after [`TableWriter::finish`]).
+    pub fn flush(&mut self) -> Result<(), OutputError> {
+        if let Some((path, writer)) = &mut self.csv {
+            writer.flush().map_err(|e| fail(path, e))?;
+        }
         Ok(())
     }
 
@@ -225,6 +328,30 @@ impl TableWriter {
         }
         Ok(())
     }
+}
+
+/// The value of a CSV field as written by [`csv_field`]: empty is not finite.
+fn parse_field(field: &str) -> Option<f64> {
+    if field.is_empty() {
+        Some(f64::NAN)
+    } else {
+        field.parse().ok()
+    }
+}
+
+/// Whether the byte before `offset` of the file at `path` ends a line (the last row of a file
+/// cut by a kill does not).
+fn ends_a_line(path: &Path, offset: u64) -> Result<bool, OutputError> {
+    use std::io::{Read, Seek, SeekFrom};
+    let Some(last) = offset.checked_sub(1) else {
+        return Ok(false);
+    };
+    let mut file = File::open(path).map_err(|e| fail(path, e))?;
+    let mut byte = [0u8];
+    file.seek(SeekFrom::Start(last))
+        .and_then(|_| file.read_exact(&mut byte))
+        .map_err(|e| fail(path, e))?;
+    Ok(byte[0] == b'\n')
 }
 
 impl Drop for TableWriter {
