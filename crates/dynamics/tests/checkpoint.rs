@@ -136,3 +136,31 @@ fn resume(method: IntegratorMethod) {
         Err(DynError::Checkpoint(_))
     ));
 }
+
+/// A checkpoint carries a format version and a checksum: a flipped byte, a truncated file or
+/// another format version is refused with a reason (not restored into different results).
+#[test]
+fn damaged_or_foreign_checkpoint_is_refused() {
+    let mut a = build();
+    a.run_until(3e-4, &mut NullSink, &mut |_| {}).unwrap();
+    let bytes = a.checkpoint();
+    let refusal = |bytes: &[u8]| match build().restore(bytes) {
+        Err(DynError::Checkpoint(reason)) => reason,
+        other => panic!("restored: {other:?}"),
+    };
+    for k in [8, 20, bytes.len() / 2, bytes.len() - 9, bytes.len() - 1] {
+        let mut flipped = bytes.clone();
+        flipped[k] ^= 0x01;
+        let reason = refusal(&flipped);
+        assert!(
+            reason.contains("damaged") || reason.contains("format version"),
+            "byte {k}: {reason}"
+        );
+    }
+    assert!(refusal(&bytes[..bytes.len() - 1]).contains("damaged"));
+    assert!(refusal(b"[bearing]\nname = \"x\"\n").contains("not a rolldyn"));
+    let mut older = bytes.clone();
+    older[6..8].copy_from_slice(b"05");
+    assert!(refusal(&older).contains("format version 05"));
+    build().restore(&bytes).unwrap();
+}

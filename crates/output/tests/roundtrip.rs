@@ -74,7 +74,11 @@ fn non_finite_values_are_empty_csv_fields_and_parquet_nulls() {
 fn row(k: usize) -> [f64; 2] {
     [
         k as f64 * 1e-5,
-        if k % 3 == 0 { f64::NAN } else { 0.1 * k as f64 },
+        if k.is_multiple_of(3) {
+            f64::NAN
+        } else {
+            0.1 * k as f64
+        },
     ]
 }
 
