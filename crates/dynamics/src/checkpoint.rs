@@ -1,19 +1,64 @@
 //! Byte serialisation of the full run state (state vector, integrator memory, accumulators) so
-//! that a resumed run continues bit-for-bit. Little-endian, versioned, with a fingerprint of
-//! the model so that a checkpoint cannot be applied to a different bearing.
+//! that a resumed run continues bit-for-bit. Little-endian; a tag with the format version
+//! first, a checksum of everything before it last, and a fingerprint of the model so that a
+//! checkpoint cannot be applied to a different bearing.
 
 use crate::error::DynError;
 
-/// Format tag (02: integrator method tag and Rosenbrock-W state).
-pub(crate) const MAGIC: &[u8; 8] = b"RDYNCK05";
+/// Tag that opens every checkpoint, followed by the two-digit format version.
+const TAG: &[u8; 6] = b"RDYNCK";
+/// Format version (06: checksum, output step and count of samples).
+const VERSION: &[u8; 2] = b"06";
+/// Bytes of the checksum that closes a checkpoint.
+const CHECKSUM_BYTES: usize = 8;
 
-/// Appends values to a byte buffer.
-#[derive(Debug, Default)]
+/// 64-bit FNV-1a hash: the model fingerprint and the checkpoint checksum (any one changed
+/// byte changes it).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Fnv1a(u64);
+
+impl Fnv1a {
+    pub fn new() -> Self {
+        Self(0xcbf29ce484222325)
+    }
+    pub fn bytes(&mut self, bytes: &[u8]) {
+        for &b in bytes {
+            self.0 ^= u64::from(b);
+            self.0 = self.0.wrapping_mul(0x100000001b3);
+        }
+    }
+    pub fn f64(&mut self, x: f64) {
+        self.bytes(&x.to_bits().to_le_bytes());
+    }
+    pub fn finish(self) -> u64 {
+        self.0
+    }
+}
+
+fn checksum(bytes: &[u8]) -> u64 {
+    let mut h = Fnv1a::new();
+    h.bytes(bytes);
+    h.finish()
+}
+
+/// Appends values to a byte buffer that starts with the tag and version.
+#[derive(Debug)]
 pub(crate) struct Writer {
     pub buf: Vec<u8>,
 }
 
 impl Writer {
+    pub fn new() -> Self {
+        Self {
+            buf: [TAG.as_slice(), VERSION].concat(),
+        }
+    }
+    /// The checkpoint: the buffer closed by its checksum.
+    pub fn seal(mut self) -> Vec<u8> {
+        let sum = checksum(&self.buf);
+        self.u64(sum);
+        self.buf
+    }
     pub fn f64(&mut self, x: f64) {
         self.buf.extend_from_slice(&x.to_bits().to_le_bytes());
     }
@@ -36,8 +81,43 @@ pub(crate) struct Reader<'a> {
 }
 
 impl<'a> Reader<'a> {
-    pub fn new(buf: &'a [u8]) -> Self {
-        Self { buf, pos: 0 }
+    /// Reads a checkpoint written by [`Writer::seal`]: refuses another file, another format
+    /// version and a checkpoint whose checksum does not match (a changed or cut byte).
+    pub fn open(bytes: &'a [u8]) -> Result<Self, DynError> {
+        let refuse = |reason: String| Err(DynError::Checkpoint(reason));
+        let header = TAG.len() + VERSION.len();
+        if bytes.len() < header || &bytes[..TAG.len()] != TAG {
+            return refuse("not a rolldyn dynamics checkpoint".into());
+        }
+        let version = &bytes[TAG.len()..header];
+        if version != VERSION {
+            return refuse(format!(
+                "format version {}, this rolldyn reads version {} (written by another rolldyn: run again from the start)",
+                String::from_utf8_lossy(version),
+                String::from_utf8_lossy(VERSION)
+            ));
+        }
+        let damaged =
+            "damaged: its checksum does not match (a byte was changed or the file cut short)";
+        let Some(body_len) = bytes
+            .len()
+            .checked_sub(CHECKSUM_BYTES)
+            .filter(|&n| n >= header)
+        else {
+            return refuse(damaged.into());
+        };
+        let (body, sum) = bytes.split_at(body_len);
+        if sum != checksum(body).to_le_bytes() {
+            return refuse(damaged.into());
+        }
+        Ok(Self {
+            buf: body,
+            pos: header,
+        })
+    }
+    /// Whether every value has been read.
+    pub fn at_end(&self) -> bool {
+        self.pos == self.buf.len()
     }
     fn take8(&mut self) -> Result<[u8; 8], DynError> {
         let end = self.pos + 8;
@@ -66,15 +146,6 @@ impl<'a> Reader<'a> {
         }
         for x in v.iter_mut() {
             *x = self.f64()?;
-        }
-        Ok(())
-    }
-    pub fn magic(&mut self) -> Result<(), DynError> {
-        let a = self.take8()?;
-        if &a != MAGIC {
-            return Err(DynError::Checkpoint(
-                "not a rolldyn dynamics checkpoint (or another format version)".into(),
-            ));
         }
         Ok(())
     }

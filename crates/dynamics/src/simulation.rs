@@ -1,6 +1,6 @@
 //! The public entry point: [`Simulation`].
 
-use crate::checkpoint::{MAGIC, Reader, Writer};
+use crate::checkpoint::{Fnv1a, Reader, Writer};
 use crate::conditions::OperatingConditions;
 use crate::error::DynError;
 use crate::initial::{
@@ -59,6 +59,8 @@ struct Tracker {
     prev_rev_speed: f64,
     steady_at: f64,
     next_sample: u64,
+    /// samples sent to the output sink (rows of the `bearing` table)
+    samples: u64,
     wall: f64,
 }
 
@@ -214,6 +216,7 @@ impl Simulation {
                 prev_rev_speed: f64::NAN,
                 steady_at: f64::NAN,
                 next_sample: 0,
+                samples: 0,
                 wall: 0.0,
             },
             model,
@@ -277,9 +280,19 @@ impl Simulation {
         by_kind
     }
 
-    /// Completed cage revolutions.
+    /// Completed cage revolutions (each one sent to the output sink).
     pub fn revolutions(&self) -> u64 {
         self.tr.revolutions
+    }
+
+    /// Samples sent to the output sink since the start of the run (kept by checkpoints).
+    pub fn samples_written(&self) -> u64 {
+        self.tr.samples
+    }
+
+    /// Number of rollers.
+    pub fn roller_count(&self) -> usize {
+        self.model.z
     }
 
     /// Time at which steady state was first detected (cage-speed change per revolution below
@@ -629,6 +642,7 @@ impl Simulation {
             },
         };
         sink.sample(t, &snapshot);
+        self.tr.samples += 1;
     }
 
     /// Evaluates the right-hand side `f(t, y)` at the current state into `dy` (benchmarks and
@@ -700,8 +714,7 @@ impl Simulation {
     /// Serialises the complete run state (state vector, integrator memory incl. the dense
     /// output of the last step, statistics, summary accumulators, output position) to bytes.
     pub fn checkpoint(&self) -> Vec<u8> {
-        let mut w = Writer::default();
-        w.buf.extend_from_slice(MAGIC);
+        let mut w = Writer::new();
         w.u64(self.fingerprint);
         self.ig.save(&mut w);
         let tr = &self.tr;
@@ -713,15 +726,18 @@ impl Simulation {
         w.f64(tr.prev_rev_speed);
         w.f64(tr.steady_at);
         w.u64(tr.next_sample);
+        w.f64(self.settings.output_step_s);
+        w.u64(tr.samples);
         w.f64(tr.wall);
-        w.buf
+        w.seal()
     }
 
     /// Restores a checkpoint written by [`Simulation::checkpoint`] of a simulation built from
-    /// the same inputs; the run then continues bit-for-bit.
+    /// the same inputs; the run then continues bit-for-bit. A damaged checkpoint (checksum),
+    /// one of another format version or bearing, and one written with another non-zero output
+    /// step (the samples would change their spacing) are refused.
     pub fn restore(&mut self, bytes: &[u8]) -> Result<(), DynError> {
-        let mut r = Reader::new(bytes);
-        r.magic()?;
+        let mut r = Reader::open(bytes)?;
         if r.u64()? != self.fingerprint {
             return Err(DynError::Checkpoint(
                 "the checkpoint belongs to a different bearing model or contact set-up".into(),
@@ -737,9 +753,21 @@ impl Simulation {
         tr.prev_rev_speed = r.f64()?;
         tr.steady_at = r.f64()?;
         tr.next_sample = r.u64()?;
+        let output_step = r.f64()?;
+        tr.samples = r.u64()?;
         tr.wall = r.f64()?;
-        if r.pos != bytes.len() {
+        if !r.at_end() {
             return Err(DynError::Checkpoint("trailing data".into()));
+        }
+        let step = self.settings.output_step_s;
+        if output_step != step {
+            if output_step > 0.0 && step > 0.0 {
+                return Err(DynError::Checkpoint(format!(
+                    "written with an output step of {output_step:e} s, this run has {step:e} s"
+                )));
+            }
+            // samples start (again) at the first output time of the resumed run
+            tr.next_sample = 0;
         }
         self.ig = ig;
         self.tr = tr;
@@ -1024,13 +1052,8 @@ fn error_scales(model: &Model, set: &IntegratorSettings) -> (Vec<f64>, Vec<f64>)
 
 fn fingerprint(model: &Model) -> u64 {
     // FNV-1a over the numbers that define the dynamics
-    let mut h: u64 = 0xcbf29ce484222325;
-    let mut eat = |x: f64| {
-        for b in x.to_bits().to_le_bytes() {
-            h ^= u64::from(b);
-            h = h.wrapping_mul(0x100000001b3);
-        }
-    };
+    let mut h = Fnv1a::new();
+    let mut eat = |x: f64| h.f64(x);
     eat(model.z as f64);
     eat(model.m_r);
     eat(model.ia_r);
@@ -1049,7 +1072,7 @@ fn fingerprint(model: &Model) -> u64 {
     eat(model.conditions.inner_speed.speed(0.0));
     eat(model.conditions.cage_drag_n_m_s);
     eat(model.conditions.misalignment_rad);
-    h
+    h.finish()
 }
 
 /// Total mechanical energy (see [`Simulation::mechanical_energy`]).
