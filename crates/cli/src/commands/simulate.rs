@@ -7,10 +7,11 @@ use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use rolldyn_dynamics::output::{OutputSink, RevolutionSummary, RunSummary, Snapshot};
 use rolldyn_dynamics::output_columns::{
     BEARING_COLUMNS, REVOLUTION_COLUMNS, ROLLER_COLUMNS, bearing_row, column_names, revolution_row,
-    roller_row,
+    roller_row, table_values,
 };
-use rolldyn_dynamics::{IntegratorMethod, SummaryValue};
-use rolldyn_output::{Formats, OutputError, TableWriter};
+use rolldyn_dynamics::settings::DynamicsSettings;
+use rolldyn_dynamics::{IntegratorMethod, Simulation, SummaryValue};
+use rolldyn_output::{ByteSize, Formats, OutputError, TableWriter, estimated_table_bytes};
 use rolldyn_plot::{Labels, Series, line_plot};
 use rolldyn_units::{Quantity, Time};
 use serde::Serialize;
@@ -79,9 +80,13 @@ pub struct Args {
     /// Simulated duration: cage revolutions (`20rev`) or time (`0.2s`).
     #[arg(long, default_value = "5rev")]
     pub duration: Duration,
-    /// Interval of the time-series samples.
+    /// Interval of the time-series samples (at least the integrator's minimum step).
     #[arg(long, default_value = "0.05ms")]
     pub output_step: Quantity<Time>,
+    /// Largest estimated size of the `--out` tables: a run whose tables would be larger is
+    /// refused before it starts (e.g. `20GB`).
+    #[arg(long, default_value = "2GB")]
+    pub max_output: ByteSize,
     /// Relative tolerance of the integrator.
     #[arg(long)]
     pub tolerance: Option<f64>,
@@ -91,7 +96,11 @@ pub struct Args {
     /// Write the state to this file after every cage revolution (and at the end).
     #[arg(long)]
     pub checkpoint: Option<PathBuf>,
-    /// Continue a run from a checkpoint file (bit-for-bit) up to the new duration.
+    /// Interval of the checkpoints: cage revolutions (`2rev`) or time (`10ms`); default 1rev.
+    #[arg(long, requires = "checkpoint")]
+    pub checkpoint_interval: Option<Duration>,
+    /// Continue a run from a checkpoint file (bit-for-bit) up to the new duration; with
+    /// `--out`, the tables of that folder are continued.
     #[arg(long)]
     pub resume: Option<PathBuf>,
     /// Print the summary as JSON.
@@ -156,17 +165,37 @@ struct FileSink {
 }
 
 impl FileSink {
-    fn create(dir: &Path) -> Result<Self, OutputError> {
-        let formats = Formats::default();
+    /// The tables of `sim` in `dir`: new ones, or, for a resumed `sim`, those of the
+    /// interrupted run continued after the rows it had written when its checkpoint was taken
+    /// (new ones when that run wrote no samples).
+    fn open(dir: &Path, sim: &Simulation, resumed: bool) -> Result<Self, Failure> {
+        let samples = match resumed {
+            true => sim.samples_written() as usize,
+            false => 0,
+        };
+        let continued = |rows: usize| if samples > 0 { rows } else { 0 };
+        let table = |stem: &str, names: Vec<String>, rows: usize| {
+            TableWriter::resume(dir, stem, &names, Formats::default(), continued(rows)).map_err(
+                |e| match resumed {
+                    true => Failure::Input(format!(
+                        "{e} (--resume continues the --out folder of the run that wrote the checkpoint)"
+                    )),
+                    false => Failure::Run(e.to_string()),
+                },
+            )
+        };
         let plot = || Decimated::new(4000);
         Ok(Self {
-            bearing: TableWriter::create(dir, "bearing", &column_names(&BEARING_COLUMNS), formats)?,
-            rollers: TableWriter::create(dir, "rollers", &column_names(&ROLLER_COLUMNS), formats)?,
-            revolutions: TableWriter::create(
-                dir,
+            bearing: table("bearing", column_names(&BEARING_COLUMNS), samples)?,
+            rollers: table(
+                "rollers",
+                column_names(&ROLLER_COLUMNS),
+                samples * sim.roller_count(),
+            )?,
+            revolutions: table(
                 "revolutions",
-                &column_names(&REVOLUTION_COLUMNS),
-                formats,
+                column_names(&REVOLUTION_COLUMNS),
+                sim.revolutions() as usize,
             )?,
             row: Vec::with_capacity(ROLLER_COLUMNS.len()),
             error: None,
@@ -185,6 +214,18 @@ impl FileSink {
         if let (Err(e), None) = (result, &self.error) {
             self.error = Some(e);
         }
+    }
+
+    /// Hands the rows written so far to the system (before a checkpoint, so that the CSV files
+    /// are never behind it).
+    fn flush(&mut self) -> Result<(), OutputError> {
+        if let Some(e) = &self.error {
+            return Err(e.clone());
+        }
+        for table in [&mut self.bearing, &mut self.rollers, &mut self.revolutions] {
+            table.flush()?;
+        }
+        Ok(())
     }
 
     fn finish(self, dir: &Path) -> Result<(), Failure> {
@@ -384,53 +425,44 @@ impl Duration {
 
 pub fn run(args: Args) -> Result<(), Failure> {
     let model = load_model(args.model.as_deref())?;
-    let output_step = if args.out.is_some() {
-        args.output_step.si()
-    } else {
-        0.0
-    };
+    let output_step = checked_output_step(args.output_step)?;
     let (mut sim, revolution) = prepare(
         &model,
         &args.operating.overrides(),
-        output_step,
+        if args.out.is_some() { output_step } else { 0.0 },
         args.tolerance,
     )?;
     if let Some(integrator) = args.integrator {
         sim.set_integrator_method(integrator.method());
     }
-    if let Some(path) = &args.resume {
-        let bytes =
-            std::fs::read(path).map_err(|e| Failure::Input(format!("{}: {e}", path.display())))?;
-        sim.restore(&bytes).map_err(|e| {
-            let hint = if e.to_string().contains("integrator method") {
-                " (resume with the --integrator of the run that wrote it)"
-            } else {
-                ""
-            };
-            Failure::Input(format!("{}: {e}{hint}", path.display()))
-        })?;
-    }
     let t_end = args.duration.end_time(revolution).map_err(Failure::Input)?;
-    let dir = args.out.as_deref().map(out_dir).transpose()?;
+    if let Some(path) = &args.resume {
+        resume(&mut sim, path, t_end)?;
+    }
+    let chunk = checkpoint_interval(&args, revolution)?.unwrap_or(t_end);
+    let dir = match &args.out {
+        Some(dir) => {
+            check_output_size(&sim, t_end, output_step, revolution, args.max_output)?;
+            Some(out_dir(dir)?)
+        }
+        None => None,
+    };
     let mut sinks = Sinks(
         dir.as_deref()
-            .map(FileSink::create)
-            .transpose()
-            .map_err(|e| Failure::Run(e.to_string()))?,
+            .map(|dir| FileSink::open(dir, &sim, args.resume.is_some()))
+            .transpose()?,
     );
     let bar = progress_bar(args.quiet, t_end);
     let mut report = |t: f64| bar.set_position((1000.0 * t / t_end).min(1000.0) as u64);
-    let chunk = match (&args.checkpoint, revolution) {
-        (Some(_), Some(period)) => period,
-        _ => t_end,
-    };
     let mut result = Ok(sim.summary());
     while sim.time() < t_end && result.is_ok() {
         let target = (sim.time() + chunk).min(t_end);
         result = sim.run_until(target, &mut sinks, &mut report);
         if let (Some(path), Ok(_)) = (&args.checkpoint, &result) {
-            std::fs::write(path, sim.checkpoint())
-                .map_err(|e| Failure::Run(format!("{}: {e}", path.display())))?;
+            if let Some(files) = &mut sinks.0 {
+                files.flush().map_err(|e| Failure::Run(e.to_string()))?;
+            }
+            write_checkpoint(path, &sim.checkpoint())?;
         }
     }
     bar.finish_and_clear();
@@ -459,6 +491,90 @@ pub fn run(args: Args) -> Result<(), Failure> {
     }
     print_summary(model.bearing.name(), &summary, &limits);
     Ok(())
+}
+
+/// The `--output-step` in seconds: at least the integrator's minimum step (no sample can
+/// resolve less), so never zero.
+fn checked_output_step(step: Quantity<Time>) -> Result<f64, Failure> {
+    let floor = DynamicsSettings::default().integrator.min_step_s;
+    match step.si() {
+        s if s >= floor => Ok(s),
+        s => Err(Failure::Input(format!(
+            "--output-step {s:e} s: must be at least the integrator's minimum step, {floor:e} s"
+        ))),
+    }
+}
+
+/// Restores the checkpoint at `path` into `sim`; refuses one that is damaged, foreign, or
+/// already at or past the end time `t_end` [s].
+fn resume(sim: &mut Simulation, path: &Path, t_end: f64) -> Result<(), Failure> {
+    let bytes =
+        std::fs::read(path).map_err(|e| Failure::Input(format!("{}: {e}", path.display())))?;
+    sim.restore(&bytes).map_err(|e| {
+        let text = e.to_string();
+        let hint = if text.contains("integrator method") {
+            " (resume with the --integrator of the run that wrote it)"
+        } else if text.contains("output step") {
+            " (resume with the --output-step of the run that wrote it)"
+        } else {
+            ""
+        };
+        Failure::Input(format!("{}: {text}{hint}", path.display()))
+    })?;
+    if sim.time() >= t_end {
+        return Err(Failure::Input(format!(
+            "{}: the checkpoint is at t = {:.6e} s, at or past the end of --duration ({t_end:.6e} s): nothing to simulate; give a longer --duration",
+            path.display(),
+            sim.time()
+        )));
+    }
+    Ok(())
+}
+
+/// The simulated time between checkpoints [s]: `--checkpoint-interval`, else one cage
+/// revolution; `None` (only at the end) without `--checkpoint` or for rings starting at rest.
+fn checkpoint_interval(args: &Args, revolution: Option<f64>) -> Result<Option<f64>, Failure> {
+    if args.checkpoint.is_none() {
+        return Ok(None);
+    }
+    match (args.checkpoint_interval, revolution) {
+        (Some(Duration::CageRevolutions(_)), None) => Err(Failure::Input(
+            "--checkpoint-interval: the inner ring starts at rest (operating.speed_schedule): give the interval as a time, e.g. 10ms".into(),
+        )),
+        (Some(interval), _) => interval.end_time(revolution).map(Some).map_err(Failure::Input),
+        (None, period) => Ok(period),
+    }
+}
+
+/// Refuses (bad input) a run whose tables are estimated ([`estimated_table_bytes`]) to exceed
+/// `--max-output`, before anything is written.
+fn check_output_size(
+    sim: &Simulation,
+    t_end: f64,
+    output_step: f64,
+    revolution: Option<f64>,
+    max_output: ByteSize,
+) -> Result<(), Failure> {
+    let samples = (t_end / output_step).floor() + 1.0;
+    let revolutions = revolution.map_or(0.0, |period| t_end / period);
+    let size = estimated_table_bytes(table_values(samples, revolutions, sim.roller_count()));
+    if size <= max_output {
+        return Ok(());
+    }
+    Err(Failure::Input(format!(
+        "--out: {samples:.3e} samples (--output-step {output_step:e} s over {t_end:.6e} s) would take an estimated {size}, more than --max-output {max_output}: choose a larger --output-step or a shorter --duration, or raise --max-output"
+    )))
+}
+
+/// Writes a checkpoint through a temporary file renamed over `path`, so that a run killed
+/// while writing leaves the previous checkpoint intact.
+fn write_checkpoint(path: &Path, bytes: &[u8]) -> Result<(), Failure> {
+    let mut partial = path.as_os_str().to_owned();
+    partial.push(".partial");
+    let partial = PathBuf::from(partial);
+    std::fs::write(&partial, bytes)
+        .and_then(|_| std::fs::rename(&partial, path))
+        .map_err(|e| Failure::Run(format!("{}: {e}", path.display())))
 }
 
 fn progress_bar(quiet: bool, t_end: f64) -> ProgressBar {
