@@ -52,18 +52,23 @@ fn text(path: &Path) -> &str {
     path.to_str().unwrap()
 }
 
-const TABLES: [&str; 6] = [
+const OUTPUTS: [&str; 11] = [
     "bearing.csv",
     "rollers.csv",
     "revolutions.csv",
     "bearing.parquet",
     "rollers.parquet",
     "revolutions.parquet",
+    "cage_speed.svg",
+    "cage_slip.svg",
+    "cage_orbit.svg",
+    "inner_ring_orbit.svg",
+    "roller_1_forces.svg",
 ];
 
-/// Every table of `b` equals that of `a` byte for byte (CSV and Parquet).
-fn assert_same_tables(a: &Path, b: &Path) {
-    for file in TABLES {
+/// Every table and plot of `b` equals that of `a` byte for byte.
+fn assert_same_outputs(a: &Path, b: &Path) {
+    for file in OUTPUTS {
         let x = std::fs::read(a.join(file)).unwrap();
         let y = std::fs::read(b.join(file)).unwrap();
         assert!(
@@ -162,7 +167,7 @@ fn resume_continues_the_tables() {
     rest.extend_from_slice(&["--resume", text(&ckpt)]);
     rest.extend_from_slice(&step);
     let resumed = json(&simulate(&rest));
-    assert_same_tables(&whole, &split);
+    assert_same_outputs(&whole, &split);
     assert_eq!(uninterrupted["steps"], resumed["steps"]);
     // another output step would give tables with two spacings
     let mut other_step = vec!["--duration", "0.9ms", "--out", text(&split)];
@@ -233,7 +238,7 @@ fn kill_and_resume_equals_an_uninterrupted_run() {
         kill(child);
     }
     assert_success(&simulate(&resumed));
-    assert_same_tables(&whole, &killed);
+    assert_same_outputs(&whole, &killed);
     std::fs::remove_dir_all(dir).ok();
 }
 

@@ -25,7 +25,7 @@ use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 /// Writing a table failed.
-#[derive(Debug, thiserror::Error)]
+#[derive(Debug, Clone, thiserror::Error)]
 #[error("cannot write {path}: {reason}")]
 pub struct OutputError {
     pub path: String,
@@ -138,14 +138,16 @@ impl TableWriter {
     /// Continues the table of an interrupted run in `dir` after its first `keep_rows` rows:
     /// the CSV (the record of the run, which must hold them under the same header) is cut after
     /// them — dropping later rows and a partial last line — and the Parquet file is rebuilt from
-    /// them. Writing then goes on as if the run had never stopped. With `keep_rows` 0 the
-    /// table starts anew.
+    /// them; `on_row` sees each kept row (to rebuild what the caller derives from the rows).
+    /// Writing then goes on as if the run had never stopped. With `keep_rows` 0 the table
+    /// starts anew.
     pub fn resume(
         dir: &Path,
         stem: &str,
         names: &[String],
         formats: Formats,
         keep_rows: usize,
+        on_row: impl FnMut(&[f64]),
     ) -> Result<Self, OutputError> {
         if keep_rows == 0 {
             return Self::create(dir, stem, names, formats);
@@ -155,7 +157,7 @@ impl TableWriter {
             return Err(fail(&path, "a table is resumed from its CSV file"));
         }
         let mut table = Self::without_csv(dir, stem, names, formats)?;
-        let end = table.replay_csv(&path, keep_rows)?;
+        let end = table.replay_csv(&path, keep_rows, on_row)?;
         let file = std::fs::OpenOptions::new()
             .append(true)
             .open(&path)
@@ -208,9 +210,14 @@ impl TableWriter {
         })
     }
 
-    /// Reads the first `keep_rows` rows of the CSV file at `path` into the Parquet file and the
-    /// row count; returns the byte offset where they end.
-    fn replay_csv(&mut self, path: &Path, keep_rows: usize) -> Result<u64, OutputError> {
+    /// Reads the first `keep_rows` rows of the CSV file at `path` into the Parquet file, the row
+    /// count and `on_row`; returns the byte offset where they end.
+    fn replay_csv(
+        &mut self,
+        path: &Path,
+        keep_rows: usize,
+        mut on_row: impl FnMut(&[f64]),
+    ) -> Result<u64, OutputError> {
         let mut reader = csv::ReaderBuilder::new()
             .flexible(true)
             .from_path(path)
@@ -235,6 +242,7 @@ impl TableWriter {
                 })?;
             }
             self.push_parquet(&values)?;
+            on_row(&values);
             self.rows += 1;
             end = reader.position().byte();
         }

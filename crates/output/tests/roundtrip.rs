@@ -108,7 +108,13 @@ fn resumed_table_equals_an_uninterrupted_one() {
     let mut partial = std::fs::read(&csv).unwrap();
     partial.extend_from_slice(b"4.3e-2,4");
     std::fs::write(&csv, partial).unwrap();
-    let resume = |keep| TableWriter::resume(&killed, "series", &names, Formats::default(), keep);
+    let mut replayed = Vec::new();
+    let mut resume = |keep| {
+        replayed.clear();
+        TableWriter::resume(&killed, "series", &names, Formats::default(), keep, |r| {
+            replayed.push(r[0])
+        })
+    };
     let short = resume(4301).err().expect("more rows than the CSV holds");
     assert!(
         short.reason.contains("4300 complete rows"),
@@ -116,7 +122,14 @@ fn resumed_table_equals_an_uninterrupted_one() {
         short.reason
     );
     let other_names = vec!["t".to_string(), "y".to_string()];
-    let other = TableWriter::resume(&killed, "series", &other_names, Formats::default(), 1);
+    let other = TableWriter::resume(
+        &killed,
+        "series",
+        &other_names,
+        Formats::default(),
+        1,
+        |_| {},
+    );
     assert!(
         other
             .err()
@@ -126,6 +139,7 @@ fn resumed_table_equals_an_uninterrupted_one() {
     );
     let mut w = resume(4100).unwrap();
     assert_eq!(w.rows(), 4100);
+    assert!((0..4100).map(|k| row(k)[0]).eq(replayed.iter().copied()));
     for k in 4100..rows {
         w.write_row(&row(k)).unwrap();
     }

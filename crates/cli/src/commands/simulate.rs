@@ -6,8 +6,8 @@ use crate::output::{load_model, out_dir, print_json};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use rolldyn_dynamics::output::{OutputSink, RevolutionSummary, RunSummary, Snapshot};
 use rolldyn_dynamics::output_columns::{
-    BEARING_COLUMNS, REVOLUTION_COLUMNS, ROLLER_COLUMNS, bearing_row, column_names, revolution_row,
-    roller_row, table_values,
+    BEARING_COLUMNS, Column, REVOLUTION_COLUMNS, ROLLER_COLUMNS, bearing_row, column_names,
+    revolution_row, roller_row, table_values,
 };
 use rolldyn_dynamics::settings::DynamicsSettings;
 use rolldyn_dynamics::{IntegratorMethod, Simulation, SummaryValue};
@@ -147,13 +147,9 @@ impl Decimated {
     }
 }
 
-/// Streams samples to tables and keeps decimated histories for the plots.
-struct FileSink {
-    bearing: TableWriter,
-    rollers: TableWriter,
-    revolutions: TableWriter,
-    row: Vec<f64>,
-    error: Option<OutputError>,
+/// The decimated histories of the plots, fed with the table rows (so that a resumed run
+/// rebuilds them from the rows it keeps).
+struct Plots {
     cage_speed: Decimated,
     epicyclic: Decimated,
     cage_slip: Decimated,
@@ -164,41 +160,18 @@ struct FileSink {
     roller_bar: Decimated,
 }
 
-impl FileSink {
-    /// The tables of `sim` in `dir`: new ones, or, for a resumed `sim`, those of the
-    /// interrupted run continued after the rows it had written when its checkpoint was taken
-    /// (new ones when that run wrote no samples).
-    fn open(dir: &Path, sim: &Simulation, resumed: bool) -> Result<Self, Failure> {
-        let samples = match resumed {
-            true => sim.samples_written() as usize,
-            false => 0,
-        };
-        let continued = |rows: usize| if samples > 0 { rows } else { 0 };
-        let table = |stem: &str, names: Vec<String>, rows: usize| {
-            TableWriter::resume(dir, stem, &names, Formats::default(), continued(rows)).map_err(
-                |e| match resumed {
-                    true => Failure::Input(format!(
-                        "{e} (--resume continues the --out folder of the run that wrote the checkpoint)"
-                    )),
-                    false => Failure::Run(e.to_string()),
-                },
-            )
-        };
+/// Position of the column `name` in a table schema.
+fn position<A>(columns: &[Column<A>], name: &str) -> usize {
+    columns
+        .iter()
+        .position(|c| c.name == name)
+        .expect("a column of the schema")
+}
+
+impl Plots {
+    fn new() -> Self {
         let plot = || Decimated::new(4000);
-        Ok(Self {
-            bearing: table("bearing", column_names(&BEARING_COLUMNS), samples)?,
-            rollers: table(
-                "rollers",
-                column_names(&ROLLER_COLUMNS),
-                samples * sim.roller_count(),
-            )?,
-            revolutions: table(
-                "revolutions",
-                column_names(&REVOLUTION_COLUMNS),
-                sim.revolutions() as usize,
-            )?,
-            row: Vec::with_capacity(ROLLER_COLUMNS.len()),
-            error: None,
+        Self {
             cage_speed: plot(),
             epicyclic: plot(),
             cage_slip: plot(),
@@ -207,6 +180,94 @@ impl FileSink {
             roller_inner: plot(),
             roller_outer: plot(),
             roller_bar: plot(),
+        }
+    }
+
+    /// A row of the `bearing` table.
+    fn bearing(&mut self, row: &[f64]) {
+        let v = |name| row[position(&BEARING_COLUMNS, name)];
+        let t = v("time_s");
+        self.cage_speed.push(t, v("cage_speed_rad_s"));
+        self.epicyclic.push(t, v("epicyclic_cage_speed_rad_s"));
+        self.cage_slip.push(t, v("cage_slip"));
+        self.cage_orbit
+            .push(v("cage_x_m") * 1e6, v("cage_y_m") * 1e6);
+        self.inner_orbit
+            .push(v("inner_ring_x_m") * 1e6, v("inner_ring_y_m") * 1e6);
+    }
+
+    /// A row of the `rollers` table: the forces of roller 1 are plotted.
+    fn roller(&mut self, row: &[f64]) {
+        let v = |name| row[position(&ROLLER_COLUMNS, name)];
+        if v("roller") == 1.0 {
+            let t = v("time_s");
+            self.roller_inner.push(t, v("inner_force_n"));
+            self.roller_outer.push(t, v("outer_force_n"));
+            self.roller_bar.push(t, v("cage_bar_force_n"));
+        }
+    }
+}
+
+/// Streams samples to tables and keeps decimated histories for the plots.
+struct FileSink {
+    bearing: TableWriter,
+    rollers: TableWriter,
+    revolutions: TableWriter,
+    row: Vec<f64>,
+    error: Option<OutputError>,
+    plots: Plots,
+}
+
+impl FileSink {
+    /// The tables of `sim` in `dir`: new ones, or, for a resumed `sim`, those of the
+    /// interrupted run continued after the rows it had written when its checkpoint was taken
+    /// (new ones when that run wrote no samples); the plots start from the kept rows.
+    fn open(dir: &Path, sim: &Simulation, resumed: bool) -> Result<Self, Failure> {
+        let samples = match resumed {
+            true => sim.samples_written() as usize,
+            false => 0,
+        };
+        let continued = |rows: usize| if samples > 0 { rows } else { 0 };
+        let table =
+            |stem: &str, names: Vec<String>, rows: usize, on_row: &mut dyn FnMut(&[f64])| {
+                TableWriter::resume(
+                dir,
+                stem,
+                &names,
+                Formats::default(),
+                continued(rows),
+                on_row,
+            )
+            .map_err(|e| match resumed {
+                true => Failure::Input(format!(
+                    "{e} (--resume continues the --out folder of the run that wrote the checkpoint)"
+                )),
+                false => Failure::Run(e.to_string()),
+            })
+            };
+        let mut plots = Plots::new();
+        Ok(Self {
+            bearing: table(
+                "bearing",
+                column_names(&BEARING_COLUMNS),
+                samples,
+                &mut |row| plots.bearing(row),
+            )?,
+            rollers: table(
+                "rollers",
+                column_names(&ROLLER_COLUMNS),
+                samples * sim.roller_count(),
+                &mut |row| plots.roller(row),
+            )?,
+            revolutions: table(
+                "revolutions",
+                column_names(&REVOLUTION_COLUMNS),
+                sim.revolutions() as usize,
+                &mut |_| {},
+            )?,
+            row: Vec::with_capacity(ROLLER_COLUMNS.len()),
+            error: None,
+            plots,
         })
     }
 
@@ -246,11 +307,11 @@ impl FileSink {
             &[
                 Series {
                     label: "cage",
-                    points: &self.cage_speed.points,
+                    points: &self.plots.cage_speed.points,
                 },
                 Series {
                     label: "epicyclic",
-                    points: &self.epicyclic.points,
+                    points: &self.plots.epicyclic.points,
                 },
             ],
         )?;
@@ -261,7 +322,7 @@ impl FileSink {
             "slip",
             &[Series {
                 label: "",
-                points: &self.cage_slip.points,
+                points: &self.plots.cage_slip.points,
             }],
         )?;
         plot(
@@ -271,7 +332,7 @@ impl FileSink {
             "y, µm",
             &[Series {
                 label: "",
-                points: &self.cage_orbit.points,
+                points: &self.plots.cage_orbit.points,
             }],
         )?;
         plot(
@@ -281,7 +342,7 @@ impl FileSink {
             "y, µm",
             &[Series {
                 label: "",
-                points: &self.inner_orbit.points,
+                points: &self.plots.inner_orbit.points,
             }],
         )?;
         plot(
@@ -292,15 +353,15 @@ impl FileSink {
             &[
                 Series {
                     label: "inner raceway",
-                    points: &self.roller_inner.points,
+                    points: &self.plots.roller_inner.points,
                 },
                 Series {
                     label: "outer raceway",
-                    points: &self.roller_outer.points,
+                    points: &self.plots.roller_outer.points,
                 },
                 Series {
                     label: "cage bars",
-                    points: &self.roller_bar.points,
+                    points: &self.plots.roller_bar.points,
                 },
             ],
         )?;
@@ -309,29 +370,16 @@ impl FileSink {
 }
 
 impl OutputSink for FileSink {
-    fn sample(&mut self, t: f64, s: &Snapshot) {
+    fn sample(&mut self, _t: f64, s: &Snapshot) {
         bearing_row(s, &mut self.row);
         let result = self.bearing.write_row(&self.row);
         self.keep(result);
-        let r = &s.rollers;
-        for j in 0..r.azimuth_rad.len() {
+        self.plots.bearing(&self.row);
+        for j in 0..s.rollers.azimuth_rad.len() {
             roller_row(s, j, &mut self.row);
             let result = self.rollers.write_row(&self.row);
             self.keep(result);
-        }
-        self.cage_speed.push(t, s.cage_speed_rad_s);
-        self.epicyclic.push(t, s.epicyclic_cage_speed_rad_s);
-        self.cage_slip.push(t, s.cage_slip);
-        self.cage_orbit
-            .push(s.cage_center_m[0] * 1e6, s.cage_center_m[1] * 1e6);
-        self.inner_orbit.push(
-            s.inner_ring_center_m[0] * 1e6,
-            s.inner_ring_center_m[1] * 1e6,
-        );
-        if !r.azimuth_rad.is_empty() {
-            self.roller_inner.push(t, r.inner.force_n[0]);
-            self.roller_outer.push(t, r.outer.force_n[0]);
-            self.roller_bar.push(t, r.cage_bar_force_n[0]);
+            self.plots.roller(&self.row);
         }
     }
 
