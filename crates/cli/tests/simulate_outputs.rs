@@ -287,3 +287,23 @@ fn resume_past_the_duration_says_so() {
     assert!(stderr(&out).contains("--duration"), "{}", stderr(&out));
     std::fs::remove_dir_all(dir).ok();
 }
+
+/// A checkpoint belongs to its model, operating point and integrator settings: resuming it
+/// under another load, oil temperature or tolerance would mix two runs.
+#[test]
+fn checkpoint_of_another_set_up_is_refused() {
+    let dir = scratch("foreign-ckpt");
+    let ckpt = checkpoint_at_0_3ms(&dir);
+    for other in [
+        ["--radial-load", "500N"],
+        ["--oil-temperature", "90C"],
+        ["--tolerance", "1e-7"],
+    ] {
+        let mut args = vec!["--duration", "0.4ms", "--resume", text(&ckpt)];
+        args.extend_from_slice(&other);
+        let out = simulate(&args);
+        assert_eq!(out.status.code(), Some(2), "{other:?} accepted");
+        assert!(stderr(&out).contains("different"), "{}", stderr(&out));
+    }
+    std::fs::remove_dir_all(dir).ok();
+}

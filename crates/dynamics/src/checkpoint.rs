@@ -1,7 +1,7 @@
 //! Byte serialisation of the full run state (state vector, integrator memory, accumulators) so
 //! that a resumed run continues bit-for-bit. Little-endian; a tag with the format version
-//! first, a checksum of everything before it last, and a fingerprint of the model so that a
-//! checkpoint cannot be applied to a different bearing.
+//! first, a checksum of everything before it last, and a fingerprint of the set-up (model,
+//! operating conditions, settings) so that a checkpoint cannot be applied to another run.
 
 use crate::error::DynError;
 
@@ -12,7 +12,7 @@ const VERSION: &[u8; 2] = b"06";
 /// Bytes of the checksum that closes a checkpoint.
 const CHECKSUM_BYTES: usize = 8;
 
-/// 64-bit FNV-1a hash: the model fingerprint and the checkpoint checksum (any one changed
+/// 64-bit FNV-1a hash: the set-up fingerprint and the checkpoint checksum (any one changed
 /// byte changes it).
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Fnv1a(u64);
@@ -26,9 +26,6 @@ impl Fnv1a {
             self.0 ^= u64::from(b);
             self.0 = self.0.wrapping_mul(0x100000001b3);
         }
-    }
-    pub fn f64(&mut self, x: f64) {
-        self.bytes(&x.to_bits().to_le_bytes());
     }
     pub fn finish(self) -> u64 {
         self.0

@@ -142,6 +142,7 @@ impl Simulation {
     /// crate). The default is [`crate::TwoLevelLand`] with `ContactParameters::cage_land`.
     pub fn set_cage_land_model(&mut self, model: Box<dyn CageLandModel>) {
         self.model.land_model = model;
+        self.fingerprint = fingerprint(&self.model, &self.settings);
         self.ig.invalidate();
     }
 
@@ -199,7 +200,7 @@ impl Simulation {
         let (scale, relative) = error_scales(&model, set);
         let ig = new_stepper(&model, set, 0.0, y, scale, relative);
         let z = model.z;
-        let fingerprint = fingerprint(&model);
+        let fingerprint = fingerprint(&model, &settings);
         let mut sim = Self {
             scratch_y: vec![0.0; lay.len()],
             scratch_dy: vec![0.0; lay.len()],
@@ -740,7 +741,7 @@ impl Simulation {
         let mut r = Reader::open(bytes)?;
         if r.u64()? != self.fingerprint {
             return Err(DynError::Checkpoint(
-                "the checkpoint belongs to a different bearing model or contact set-up".into(),
+                "the checkpoint belongs to a different set-up (bearing model, operating conditions, contact or integrator settings)".into(),
             ));
         }
         let ig = self.ig.load(&mut r)?;
@@ -1050,28 +1051,16 @@ fn error_scales(model: &Model, set: &IntegratorSettings) -> (Vec<f64>, Vec<f64>)
     (s, rel)
 }
 
-fn fingerprint(model: &Model) -> u64 {
-    // FNV-1a over the numbers that define the dynamics
+/// Fingerprint of everything that defines the dynamics of a run — the model (bearing,
+/// contacts, traction, operating conditions, cage land) and the settings except the output step
+/// and the integrator method (both checked apart) — so that a checkpoint is not resumed into
+/// another set-up. FNV-1a of their exact `Debug` text (floats print as round-trip values).
+fn fingerprint(model: &Model, settings: &DynamicsSettings) -> u64 {
+    let mut settings = *settings;
+    settings.output_step_s = 0.0;
+    settings.integrator.method = IntegratorMethod::Dopri5;
     let mut h = Fnv1a::new();
-    let mut eat = |x: f64| h.f64(x);
-    eat(model.z as f64);
-    eat(model.m_r);
-    eat(model.ia_r);
-    eat(model.m_c);
-    eat(model.rw);
-    eat(model.ri);
-    eat(model.ro);
-    eat(model.r_bar);
-    eat(model.half_pocket);
-    for &k in model.inner.k.iter().chain(&model.outer.k) {
-        eat(k);
-    }
-    for &x in &model.slice_drop {
-        eat(x);
-    }
-    eat(model.conditions.inner_speed.speed(0.0));
-    eat(model.conditions.cage_drag_n_m_s);
-    eat(model.conditions.misalignment_rad);
+    h.bytes(format!("{model:?}{settings:?}").as_bytes());
     h.finish()
 }
 
