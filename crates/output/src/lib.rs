@@ -147,7 +147,7 @@ impl TableWriter {
         names: &[String],
         formats: Formats,
         keep_rows: usize,
-        on_row: impl FnMut(&[f64]),
+        mut on_row: impl FnMut(&[f64]),
     ) -> Result<Self, OutputError> {
         if keep_rows == 0 {
             return Self::create(dir, stem, names, formats);
@@ -156,8 +156,16 @@ impl TableWriter {
         if !formats.csv {
             return Err(fail(&path, "a table is resumed from its CSV file"));
         }
-        let mut table = Self::without_csv(dir, stem, names, formats)?;
-        let end = table.replay_csv(&path, keep_rows, on_row)?;
+        let names: Vec<String> = names.iter().map(|n| column_name(n)).collect();
+        // the first pass checks the CSV file, so that nothing is changed when it does not fit
+        let end = read_rows(&path, &names, keep_rows, |_| Ok(()))?;
+        let mut table = Self::without_csv(dir, stem, &names, formats)?;
+        read_rows(&path, &names, keep_rows, |row| {
+            table.push_parquet(row)?;
+            on_row(row);
+            Ok(())
+        })?;
+        table.rows = keep_rows;
         let file = std::fs::OpenOptions::new()
             .append(true)
             .open(&path)
@@ -208,54 +216,6 @@ impl TableWriter {
             rows: 0,
             finished: false,
         })
-    }
-
-    /// Reads the first `keep_rows` rows of the CSV file at `path` into the Parquet file, the row
-    /// count and `on_row`; returns the byte offset where they end.
-    fn replay_csv(
-        &mut self,
-        path: &Path,
-        keep_rows: usize,
-        mut on_row: impl FnMut(&[f64]),
-    ) -> Result<u64, OutputError> {
-        let mut reader = csv::ReaderBuilder::new()
-            .flexible(true)
-            .from_path(path)
-            .map_err(|e| fail(path, e))?;
-        let header = reader.headers().map_err(|e| fail(path, e))?;
-        if !header.iter().eq(self.names.iter()) {
-            return Err(fail(path, "the header differs from this run's columns"));
-        }
-        let mut record = csv::StringRecord::new();
-        let mut values = vec![0.0; self.names.len()];
-        let mut end = reader.position().byte();
-        while self.rows < keep_rows
-            && reader.read_record(&mut record).map_err(|e| fail(path, e))?
-            && record.len() == values.len()
-        {
-            for (value, field) in values.iter_mut().zip(&record) {
-                *value = parse_field(field).ok_or_else(|| {
-                    fail(
-                        path,
-                        format!("row {}: '{field}' is not a number", self.rows + 1),
-                    )
-                })?;
-            }
-            self.push_parquet(&values)?;
-            on_row(&values);
-            self.rows += 1;
-            end = reader.position().byte();
-        }
-        if self.rows > 0 && !ends_a_line(path, end)? {
-            self.rows -= 1;
-        }
-        if self.rows < keep_rows {
-            return Err(fail(
-                path,
-                format!("{} complete rows where {keep_rows} are needed", self.rows),
-            ));
-        }
-        Ok(end)
     }
 
     /// Column names as written (sanitised for Parquet).
@@ -336,6 +296,57 @@ impl TableWriter {
         }
         Ok(())
     }
+}
+
+/// Reads the first `keep_rows` rows of the CSV file at `path`, which must have the header
+/// `names`, into `on_row`; returns the byte offset where they end. Fails when the file holds
+/// fewer complete rows (a last line cut short does not count).
+fn read_rows(
+    path: &Path,
+    names: &[String],
+    keep_rows: usize,
+    mut on_row: impl FnMut(&[f64]) -> Result<(), OutputError>,
+) -> Result<u64, OutputError> {
+    let mut reader = csv::ReaderBuilder::new()
+        .flexible(true)
+        .from_path(path)
+        .map_err(|e| {
+            fail(
+                path,
+                format!("no table of the interrupted run to continue ({e})"),
+            )
+        })?;
+    let header = reader.headers().map_err(|e| fail(path, e))?;
+    if !header.iter().eq(names.iter()) {
+        return Err(fail(path, "the header differs from this run's columns"));
+    }
+    let mut record = csv::StringRecord::new();
+    let mut values = vec![0.0; names.len()];
+    let (mut rows, mut end) = (0, reader.position().byte());
+    while rows < keep_rows
+        && reader.read_record(&mut record).map_err(|e| fail(path, e))?
+        && record.len() == values.len()
+    {
+        for (value, field) in values.iter_mut().zip(&record) {
+            *value = parse_field(field).ok_or_else(|| {
+                fail(path, format!("row {}: '{field}' is not a number", rows + 1))
+            })?;
+        }
+        rows += 1;
+        end = reader.position().byte();
+        if rows < keep_rows || ends_a_line(path, end)? {
+            on_row(&values)?;
+        } else {
+            rows -= 1;
+        }
+    }
+    if rows < keep_rows {
+        return Err(fail(
+            path,
+            format!("{rows} complete rows where {keep_rows} are needed"),
+        ));
+    }
+    Ok(end)
 }
 
 /// The value of a CSV field as written by [`csv_field`]: empty is not finite.

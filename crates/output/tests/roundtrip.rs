@@ -115,6 +115,8 @@ fn resumed_table_equals_an_uninterrupted_one() {
             replayed.push(r[0])
         })
     };
+    let killed_files = |f: &str| std::fs::read(killed.join(f)).unwrap();
+    let before = (killed_files("series.csv"), killed_files("series.parquet"));
     let short = resume(4301).err().expect("more rows than the CSV holds");
     assert!(
         short.reason.contains("4300 complete rows"),
@@ -137,6 +139,8 @@ fn resumed_table_equals_an_uninterrupted_one() {
             .reason
             .contains("header")
     );
+    let after = (killed_files("series.csv"), killed_files("series.parquet"));
+    assert!(before == after, "a refused resume changed the files");
     let mut w = resume(4100).unwrap();
     assert_eq!(w.rows(), 4100);
     assert!((0..4100).map(|k| row(k)[0]).eq(replayed.iter().copied()));

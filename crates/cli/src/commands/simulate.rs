@@ -93,7 +93,8 @@ pub struct Args {
     /// Integration method (default: the settings default, dopri5).
     #[arg(long, value_enum)]
     pub integrator: Option<IntegratorArg>,
-    /// Write the state to this file after every cage revolution (and at the end).
+    /// Write the state to this file every `--checkpoint-interval` and at the end (the `--out`
+    /// CSV rows are flushed first; README "Long runs").
     #[arg(long)]
     pub checkpoint: Option<PathBuf>,
     /// Interval of the checkpoints: cage revolutions (`2rev`) or time (`10ms`); default 1rev.
