@@ -307,3 +307,41 @@ fn checkpoint_of_another_set_up_is_refused() {
     }
     std::fs::remove_dir_all(dir).ok();
 }
+
+/// `--resume` into the `--out` folder of another run (same tables, enough rows) is refused and
+/// leaves that folder as it was: the checkpoint knows a digest of the rows its run wrote.
+#[test]
+fn resume_into_another_runs_folder_is_refused() {
+    let dir = scratch("resume-foreign-folder");
+    let (own, other) = (dir.join("own"), dir.join("other"));
+    let ckpt = dir.join("state.ckpt");
+    assert_success(&simulate(&[
+        "--duration",
+        "0.3ms",
+        "--out",
+        text(&own),
+        "--checkpoint",
+        text(&ckpt),
+    ]));
+    let other_run = ["--duration", "0.6ms", "--out", text(&other)];
+    let mut args = other_run.to_vec();
+    args.extend_from_slice(&["--radial-load", "500N"]);
+    assert_success(&simulate(&args));
+    let before = std::fs::read(other.join("bearing.csv")).unwrap();
+    let out = simulate(&[
+        "--duration",
+        "0.6ms",
+        "--out",
+        text(&other),
+        "--resume",
+        text(&ckpt),
+    ]);
+    assert_eq!(
+        out.status.code(),
+        Some(2),
+        "resumed into another run's folder"
+    );
+    assert!(stderr(&out).contains("rows differ"), "{}", stderr(&out));
+    assert!(std::fs::read(other.join("bearing.csv")).unwrap() == before);
+    std::fs::remove_dir_all(dir).ok();
+}

@@ -7,7 +7,7 @@ use crate::error::DynError;
 
 /// Tag that opens every checkpoint, followed by the two-digit format version.
 const TAG: &[u8; 6] = b"RDYNCK";
-/// Format version (06: checksum, output step and count of samples).
+/// Format version (06: checksum, output step, the caller's note).
 const VERSION: &[u8; 2] = b"06";
 /// Bytes of the checksum that closes a checkpoint.
 const CHECKSUM_BYTES: usize = 8;
@@ -61,6 +61,11 @@ impl Writer {
     }
     pub fn u64(&mut self, x: u64) {
         self.buf.extend_from_slice(&x.to_le_bytes());
+    }
+    /// Length-prefixed bytes.
+    pub fn bytes(&mut self, b: &[u8]) {
+        self.u64(b.len() as u64);
+        self.buf.extend_from_slice(b);
     }
     pub fn slice(&mut self, v: &[f64]) {
         self.u64(v.len() as u64);
@@ -132,6 +137,18 @@ impl<'a> Reader<'a> {
     }
     pub fn u64(&mut self) -> Result<u64, DynError> {
         Ok(u64::from_le_bytes(self.take8()?))
+    }
+    /// Bytes written by [`Writer::bytes`].
+    pub fn bytes(&mut self) -> Result<Vec<u8>, DynError> {
+        let n = self.u64()?;
+        let end = usize::try_from(n)
+            .ok()
+            .and_then(|n| self.pos.checked_add(n))
+            .filter(|&end| end <= self.buf.len())
+            .ok_or_else(|| DynError::Checkpoint("truncated data".into()))?;
+        let b = self.buf[self.pos..end].to_vec();
+        self.pos = end;
+        Ok(b)
     }
     pub fn slice_into(&mut self, v: &mut [f64]) -> Result<(), DynError> {
         let n = self.u64()? as usize;

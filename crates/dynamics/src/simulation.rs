@@ -59,8 +59,6 @@ struct Tracker {
     prev_rev_speed: f64,
     steady_at: f64,
     next_sample: u64,
-    /// samples sent to the output sink (rows of the `bearing` table)
-    samples: u64,
     wall: f64,
 }
 
@@ -217,7 +215,6 @@ impl Simulation {
                 prev_rev_speed: f64::NAN,
                 steady_at: f64::NAN,
                 next_sample: 0,
-                samples: 0,
                 wall: 0.0,
             },
             model,
@@ -284,11 +281,6 @@ impl Simulation {
     /// Completed cage revolutions (each one sent to the output sink).
     pub fn revolutions(&self) -> u64 {
         self.tr.revolutions
-    }
-
-    /// Samples sent to the output sink since the start of the run (kept by checkpoints).
-    pub fn samples_written(&self) -> u64 {
-        self.tr.samples
     }
 
     /// Number of rollers.
@@ -643,7 +635,6 @@ impl Simulation {
             },
         };
         sink.sample(t, &snapshot);
-        self.tr.samples += 1;
     }
 
     /// Evaluates the right-hand side `f(t, y)` at the current state into `dy` (benchmarks and
@@ -715,6 +706,13 @@ impl Simulation {
     /// Serialises the complete run state (state vector, integrator memory incl. the dense
     /// output of the last step, statistics, summary accumulators, output position) to bytes.
     pub fn checkpoint(&self) -> Vec<u8> {
+        self.checkpoint_with(&[])
+    }
+
+    /// [`Simulation::checkpoint`] with a `note` of the caller's own (e.g. what it knows of its
+    /// outputs at this point), given back by [`Simulation::restore`] and covered by the
+    /// checksum.
+    pub fn checkpoint_with(&self, note: &[u8]) -> Vec<u8> {
         let mut w = Writer::new();
         w.u64(self.fingerprint);
         self.ig.save(&mut w);
@@ -728,16 +726,17 @@ impl Simulation {
         w.f64(tr.steady_at);
         w.u64(tr.next_sample);
         w.f64(self.settings.output_step_s);
-        w.u64(tr.samples);
         w.f64(tr.wall);
+        w.bytes(note);
         w.seal()
     }
 
     /// Restores a checkpoint written by [`Simulation::checkpoint`] of a simulation built from
     /// the same inputs; the run then continues bit-for-bit. A damaged checkpoint (checksum),
     /// one of another format version or bearing, and one written with another non-zero output
-    /// step (the samples would change their spacing) are refused.
-    pub fn restore(&mut self, bytes: &[u8]) -> Result<(), DynError> {
+    /// step (the samples would change their spacing) are refused. Returns the note of
+    /// [`Simulation::checkpoint_with`] (empty for [`Simulation::checkpoint`]).
+    pub fn restore(&mut self, bytes: &[u8]) -> Result<Vec<u8>, DynError> {
         let mut r = Reader::open(bytes)?;
         if r.u64()? != self.fingerprint {
             return Err(DynError::Checkpoint(
@@ -755,8 +754,8 @@ impl Simulation {
         tr.steady_at = r.f64()?;
         tr.next_sample = r.u64()?;
         let output_step = r.f64()?;
-        tr.samples = r.u64()?;
         tr.wall = r.f64()?;
+        let note = r.bytes()?;
         if !r.at_end() {
             return Err(DynError::Checkpoint("trailing data".into()));
         }
@@ -772,7 +771,7 @@ impl Simulation {
         }
         self.ig = ig;
         self.tr = tr;
-        Ok(())
+        Ok(note)
     }
 }
 

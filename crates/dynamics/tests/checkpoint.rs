@@ -166,3 +166,15 @@ fn damaged_or_foreign_checkpoint_is_refused() {
     assert!(refusal(&older).contains("format version 05"));
     build().restore(&bytes).unwrap();
 }
+
+/// The caller's note travels with the checkpoint.
+#[test]
+fn checkpoint_note_is_given_back() {
+    let mut a = build();
+    a.run_until(2e-4, &mut NullSink, &mut |_| {}).unwrap();
+    assert_eq!(
+        build().restore(&a.checkpoint_with(b"tables")).unwrap(),
+        b"tables"
+    );
+    assert!(build().restore(&a.checkpoint()).unwrap().is_empty());
+}

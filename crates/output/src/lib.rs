@@ -94,7 +94,36 @@ pub struct TableWriter {
     parquet: Option<ParquetSink>,
     row_group_rows: usize,
     rows: usize,
+    digest: RowDigest,
     finished: bool,
+}
+
+/// A digest of the rows of a table as they read back from its CSV file (a value that is not
+/// finite counts as NaN), so that a resumed table can be recognised. Deterministic within a
+/// rolldyn version (SipHash with fixed keys).
+#[derive(Clone, Default)]
+struct RowDigest(std::collections::hash_map::DefaultHasher);
+
+impl RowDigest {
+    fn add(&mut self, row: &[f64]) {
+        use std::hash::Hasher;
+        for &v in row {
+            let v = if v.is_finite() { v } else { f64::NAN };
+            self.0.write_u64(v.to_bits());
+        }
+    }
+    fn value(&self) -> u64 {
+        use std::hash::Hasher;
+        self.0.finish()
+    }
+}
+
+/// The rows of an interrupted table that a resume keeps: how many, and the
+/// digest of the table after them ([`TableWriter::kept`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct KeptRows {
+    pub rows: usize,
+    pub digest: u64,
 }
 
 /// A Parquet-safe column name: letters, digits and `_` only.
@@ -135,20 +164,22 @@ impl TableWriter {
         Ok(table)
     }
 
-    /// Continues the table of an interrupted run in `dir` after its first `keep_rows` rows:
-    /// the CSV (the record of the run, which must hold them under the same header) is cut after
-    /// them — dropping later rows and a partial last line — and the Parquet file is rebuilt from
-    /// them; `on_row` sees each kept row (to rebuild what the caller derives from the rows).
-    /// Writing then goes on as if the run had never stopped. With `keep_rows` 0 the table
-    /// starts anew.
+    /// Continues the table of an interrupted run in `dir` after its first `kept.rows` rows:
+    /// the CSV (the record of the run, which must hold them under the same header and with the
+    /// same digest) is cut after them — dropping later rows and a partial last line — and the
+    /// Parquet file is rebuilt from them; `on_row` sees each kept row (to rebuild what the
+    /// caller derives from the rows). Writing then goes on as if the run had never stopped.
+    /// Nothing is changed when the CSV file does not fit. With no rows kept the table starts
+    /// anew.
     pub fn resume(
         dir: &Path,
         stem: &str,
         names: &[String],
         formats: Formats,
-        keep_rows: usize,
+        kept: KeptRows,
         mut on_row: impl FnMut(&[f64]),
     ) -> Result<Self, OutputError> {
+        let keep_rows = kept.rows;
         if keep_rows == 0 {
             return Self::create(dir, stem, names, formats);
         }
@@ -158,7 +189,17 @@ impl TableWriter {
         }
         let names: Vec<String> = names.iter().map(|n| column_name(n)).collect();
         // the first pass checks the CSV file, so that nothing is changed when it does not fit
-        let end = read_rows(&path, &names, keep_rows, |_| Ok(()))?;
+        let mut digest = RowDigest::default();
+        let end = read_rows(&path, &names, keep_rows, |row| {
+            digest.add(row);
+            Ok(())
+        })?;
+        if digest.value() != kept.digest {
+            return Err(fail(
+                &path,
+                "its rows differ from those of the interrupted run (the folder of another run?)",
+            ));
+        }
         let mut table = Self::without_csv(dir, stem, &names, formats)?;
         read_rows(&path, &names, keep_rows, |row| {
             table.push_parquet(row)?;
@@ -166,6 +207,7 @@ impl TableWriter {
             Ok(())
         })?;
         table.rows = keep_rows;
+        table.digest = digest;
         let file = std::fs::OpenOptions::new()
             .append(true)
             .open(&path)
@@ -214,6 +256,7 @@ impl TableWriter {
             parquet,
             row_group_rows: 4096,
             rows: 0,
+            digest: RowDigest::default(),
             finished: false,
         })
     }
@@ -226,6 +269,15 @@ impl TableWriter {
     /// Rows written so far.
     pub fn rows(&self) -> usize {
         self.rows
+    }
+
+    /// Digest of the rows written so far (with [`TableWriter::rows`], what
+    /// [`TableWriter::resume`] checks).
+    pub fn kept(&self) -> KeptRows {
+        KeptRows {
+            rows: self.rows,
+            digest: self.digest.value(),
+        }
     }
 
     /// Appends one row; `values.len()` must equal the number of columns.
@@ -247,6 +299,7 @@ impl TableWriter {
                 .map_err(|e| fail(path, e))?;
         }
         self.push_parquet(values)?;
+        self.digest.add(values);
         self.rows += 1;
         Ok(())
     }

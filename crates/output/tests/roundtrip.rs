@@ -2,7 +2,7 @@
 
 use parquet::file::reader::{FileReader, SerializedFileReader};
 use parquet::record::RowAccessor;
-use rolldyn_output::{Formats, TableWriter};
+use rolldyn_output::{Formats, KeptRows, TableWriter};
 
 #[test]
 fn csv_and_parquet_round_trip_across_row_groups() {
@@ -99,8 +99,12 @@ fn resumed_table_equals_an_uninterrupted_one() {
     }
     w.finish().unwrap();
     let mut w = TableWriter::create(&killed, "series", &names, Formats::default()).unwrap();
+    let mut checkpoint = w.kept();
     for k in 0..4300 {
         w.write_row(&row(k)).unwrap();
+        if k == 4099 {
+            checkpoint = w.kept();
+        }
     }
     w.flush().unwrap();
     std::mem::forget(w);
@@ -117,7 +121,12 @@ fn resumed_table_equals_an_uninterrupted_one() {
     };
     let killed_files = |f: &str| std::fs::read(killed.join(f)).unwrap();
     let before = (killed_files("series.csv"), killed_files("series.parquet"));
-    let short = resume(4301).err().expect("more rows than the CSV holds");
+    let short = resume(KeptRows {
+        rows: 4301,
+        ..checkpoint
+    })
+    .err()
+    .expect("more rows than the CSV holds");
     assert!(
         short.reason.contains("4300 complete rows"),
         "{}",
@@ -129,7 +138,7 @@ fn resumed_table_equals_an_uninterrupted_one() {
         "series",
         &other_names,
         Formats::default(),
-        1,
+        checkpoint,
         |_| {},
     );
     assert!(
@@ -139,10 +148,15 @@ fn resumed_table_equals_an_uninterrupted_one() {
             .reason
             .contains("header")
     );
+    let foreign = resume(KeptRows {
+        digest: checkpoint.digest ^ 1,
+        ..checkpoint
+    });
+    assert!(foreign.err().expect("other rows").reason.contains("differ"));
     let after = (killed_files("series.csv"), killed_files("series.parquet"));
     assert!(before == after, "a refused resume changed the files");
-    let mut w = resume(4100).unwrap();
-    assert_eq!(w.rows(), 4100);
+    let mut w = resume(checkpoint).unwrap();
+    assert_eq!(w.kept(), checkpoint);
     assert!((0..4100).map(|k| row(k)[0]).eq(replayed.iter().copied()));
     for k in 4100..rows {
         w.write_row(&row(k)).unwrap();

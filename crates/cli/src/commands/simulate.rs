@@ -11,7 +11,9 @@ use rolldyn_dynamics::output_columns::{
 };
 use rolldyn_dynamics::settings::DynamicsSettings;
 use rolldyn_dynamics::{IntegratorMethod, Simulation, SummaryValue};
-use rolldyn_output::{ByteSize, Formats, OutputError, TableWriter, estimated_table_bytes};
+use rolldyn_output::{
+    ByteSize, Formats, KeptRows, OutputError, TableWriter, estimated_table_bytes,
+};
 use rolldyn_plot::{Labels, Series, line_plot};
 use rolldyn_units::{Quantity, Time};
 use serde::Serialize;
@@ -209,6 +211,37 @@ impl Plots {
     }
 }
 
+/// What a checkpoint notes of the `--out` tables `bearing`, `rollers` and `revolutions`: their
+/// rows and digests at that point.
+type TablesNote = [KeptRows; 3];
+
+fn encode_note(note: &TablesNote) -> Vec<u8> {
+    note.iter()
+        .flat_map(|k| [k.rows as u64, k.digest])
+        .flat_map(u64::to_le_bytes)
+        .collect()
+}
+
+/// The tables note of a checkpoint; `None` when its run had no `--out` (an empty note).
+fn decode_note(note: &[u8]) -> Result<Option<TablesNote>, String> {
+    if note.is_empty() {
+        return Ok(None);
+    }
+    let words: Vec<u64> = note
+        .chunks_exact(8)
+        .map(|b| u64::from_le_bytes(b.try_into().expect("8 bytes")))
+        .collect();
+    match words.as_slice() {
+        &[r0, d0, r1, d1, r2, d2] if note.len() == 48 => Ok(Some(
+            [(r0, d0), (r1, d1), (r2, d2)].map(|(rows, digest)| KeptRows {
+                rows: rows as usize,
+                digest,
+            }),
+        )),
+        _ => Err("the note on the output tables is not one of rolldyn simulate".into()),
+    }
+}
+
 /// Streams samples to tables and keeps decimated histories for the plots.
 struct FileSink {
     bearing: TableWriter,
@@ -220,56 +253,51 @@ struct FileSink {
 }
 
 impl FileSink {
-    /// The tables of `sim` in `dir`: new ones, or, for a resumed `sim`, those of the
-    /// interrupted run continued after the rows it had written when its checkpoint was taken
-    /// (new ones when that run wrote no samples); the plots start from the kept rows.
-    fn open(dir: &Path, sim: &Simulation, resumed: bool) -> Result<Self, Failure> {
-        let samples = match resumed {
-            true => sim.samples_written() as usize,
-            false => 0,
-        };
-        let continued = |rows: usize| if samples > 0 { rows } else { 0 };
-        let table =
-            |stem: &str, names: Vec<String>, rows: usize, on_row: &mut dyn FnMut(&[f64])| {
-                TableWriter::resume(
-                dir,
-                stem,
-                &names,
-                Formats::default(),
-                continued(rows),
-                on_row,
+    /// The tables in `dir`: new ones, or those of an interrupted run continued after the rows
+    /// `kept` by its checkpoint (a `resumed` run; new tables when that run had no `--out`); the
+    /// plots start from the kept rows.
+    fn open(dir: &Path, kept: Option<TablesNote>, resumed: bool) -> Result<Self, Failure> {
+        let fresh = KeptRows { rows: 0, digest: 0 };
+        let [bearing, rollers, revolutions] = kept.unwrap_or([fresh; 3]);
+        let table = |stem: &str, names: Vec<String>, kept, on_row: &mut dyn FnMut(&[f64])| {
+            TableWriter::resume(dir, stem, &names, Formats::default(), kept, on_row).map_err(
+                |e| match resumed {
+                    true => Failure::Input(format!(
+                        "{e} (--resume continues the --out folder of the run that wrote the checkpoint)"
+                    )),
+                    false => Failure::Run(e.to_string()),
+                },
             )
-            .map_err(|e| match resumed {
-                true => Failure::Input(format!(
-                    "{e} (--resume continues the --out folder of the run that wrote the checkpoint)"
-                )),
-                false => Failure::Run(e.to_string()),
-            })
-            };
+        };
         let mut plots = Plots::new();
         Ok(Self {
             bearing: table(
                 "bearing",
                 column_names(&BEARING_COLUMNS),
-                samples,
+                bearing,
                 &mut |row| plots.bearing(row),
             )?,
             rollers: table(
                 "rollers",
                 column_names(&ROLLER_COLUMNS),
-                samples * sim.roller_count(),
+                rollers,
                 &mut |row| plots.roller(row),
             )?,
             revolutions: table(
                 "revolutions",
                 column_names(&REVOLUTION_COLUMNS),
-                sim.revolutions() as usize,
+                revolutions,
                 &mut |_| {},
             )?,
             row: Vec::with_capacity(ROLLER_COLUMNS.len()),
             error: None,
             plots,
         })
+    }
+
+    /// The rows written so far, for the checkpoint's note.
+    fn kept(&self) -> TablesNote {
+        [&self.bearing, &self.rollers, &self.revolutions].map(TableWriter::kept)
     }
 
     fn keep(&mut self, result: Result<(), OutputError>) {
@@ -485,9 +513,10 @@ pub fn run(args: Args) -> Result<(), Failure> {
         sim.set_integrator_method(integrator.method());
     }
     let t_end = args.duration.end_time(revolution).map_err(Failure::Input)?;
-    if let Some(path) = &args.resume {
-        resume(&mut sim, path, t_end)?;
-    }
+    let kept = match &args.resume {
+        Some(path) => resume(&mut sim, path, t_end)?,
+        None => None,
+    };
     let chunk = checkpoint_interval(&args, revolution)?.unwrap_or(t_end);
     let dir = match &args.out {
         Some(dir) => {
@@ -498,7 +527,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
     };
     let mut sinks = Sinks(
         dir.as_deref()
-            .map(|dir| FileSink::open(dir, &sim, args.resume.is_some()))
+            .map(|dir| FileSink::open(dir, kept, args.resume.is_some()))
             .transpose()?,
     );
     let bar = progress_bar(args.quiet, t_end);
@@ -508,10 +537,12 @@ pub fn run(args: Args) -> Result<(), Failure> {
         let target = (sim.time() + chunk).min(t_end);
         result = sim.run_until(target, &mut sinks, &mut report);
         if let (Some(path), Ok(_)) = (&args.checkpoint, &result) {
+            let mut note = Vec::new();
             if let Some(files) = &mut sinks.0 {
                 files.flush().map_err(|e| Failure::Run(e.to_string()))?;
+                note = encode_note(&files.kept());
             }
-            write_checkpoint(path, &sim.checkpoint())?;
+            write_checkpoint(path, &sim.checkpoint_with(&note))?;
         }
     }
     bar.finish_and_clear();
@@ -554,12 +585,12 @@ fn checked_output_step(step: Quantity<Time>) -> Result<f64, Failure> {
     }
 }
 
-/// Restores the checkpoint at `path` into `sim`; refuses one that is damaged, foreign, or
-/// already at or past the end time `t_end` [s].
-fn resume(sim: &mut Simulation, path: &Path, t_end: f64) -> Result<(), Failure> {
+/// Restores the checkpoint at `path` into `sim` and returns its note on the output tables;
+/// refuses one that is damaged, foreign, or already at or past the end time `t_end` [s].
+fn resume(sim: &mut Simulation, path: &Path, t_end: f64) -> Result<Option<TablesNote>, Failure> {
     let bytes =
         std::fs::read(path).map_err(|e| Failure::Input(format!("{}: {e}", path.display())))?;
-    sim.restore(&bytes).map_err(|e| {
+    let note = sim.restore(&bytes).map_err(|e| {
         let text = e.to_string();
         let hint = if text.contains("integrator method") {
             " (resume with the --integrator of the run that wrote it)"
@@ -577,7 +608,7 @@ fn resume(sim: &mut Simulation, path: &Path, t_end: f64) -> Result<(), Failure> 
             sim.time()
         )));
     }
-    Ok(())
+    decode_note(&note).map_err(|e| Failure::Input(format!("{}: {e}", path.display())))
 }
 
 /// The simulated time between checkpoints [s]: `--checkpoint-interval`, else one cage
