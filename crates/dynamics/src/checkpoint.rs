@@ -12,30 +12,12 @@ const VERSION: &[u8; 2] = b"06";
 /// Bytes of the checksum that closes a checkpoint.
 const CHECKSUM_BYTES: usize = 8;
 
-/// 64-bit FNV-1a hash: the set-up fingerprint and the checkpoint checksum (any one changed
-/// byte changes it).
-#[derive(Debug, Clone, Copy)]
-pub(crate) struct Fnv1a(u64);
-
-impl Fnv1a {
-    pub fn new() -> Self {
-        Self(0xcbf29ce484222325)
-    }
-    pub fn bytes(&mut self, bytes: &[u8]) {
-        for &b in bytes {
-            self.0 ^= u64::from(b);
-            self.0 = self.0.wrapping_mul(0x100000001b3);
-        }
-    }
-    pub fn finish(self) -> u64 {
-        self.0
-    }
-}
-
-fn checksum(bytes: &[u8]) -> u64 {
-    let mut h = Fnv1a::new();
-    h.bytes(bytes);
-    h.finish()
+/// 64-bit FNV-1a hash of `bytes`: the set-up fingerprint and the checkpoint checksum (any one
+/// changed byte changes it).
+pub(crate) fn fnv1a(bytes: &[u8]) -> u64 {
+    bytes.iter().fold(0xcbf29ce484222325, |h, &b| {
+        (h ^ u64::from(b)).wrapping_mul(0x100000001b3)
+    })
 }
 
 /// Appends values to a byte buffer that starts with the tag and version.
@@ -52,7 +34,7 @@ impl Writer {
     }
     /// The checkpoint: the buffer closed by its checksum.
     pub fn seal(mut self) -> Vec<u8> {
-        let sum = checksum(&self.buf);
+        let sum = fnv1a(&self.buf);
         self.u64(sum);
         self.buf
     }
@@ -109,7 +91,7 @@ impl<'a> Reader<'a> {
             return refuse(damaged.into());
         };
         let (body, sum) = bytes.split_at(body_len);
-        if sum != checksum(body).to_le_bytes() {
+        if sum != fnv1a(body).to_le_bytes() {
             return refuse(damaged.into());
         }
         Ok(Self {

@@ -1,6 +1,6 @@
 //! The public entry point: [`Simulation`].
 
-use crate::checkpoint::{Fnv1a, Reader, Writer};
+use crate::checkpoint::{Reader, Writer, fnv1a};
 use crate::conditions::OperatingConditions;
 use crate::error::DynError;
 use crate::initial::{
@@ -1058,9 +1058,7 @@ fn fingerprint(model: &Model, settings: &DynamicsSettings) -> u64 {
     let mut settings = *settings;
     settings.output_step_s = 0.0;
     settings.integrator.method = IntegratorMethod::Dopri5;
-    let mut h = Fnv1a::new();
-    h.bytes(format!("{model:?}{settings:?}").as_bytes());
-    h.finish()
+    fnv1a(format!("{model:?}{settings:?}").as_bytes())
 }
 
 /// Total mechanical energy (see [`Simulation::mechanical_energy`]).
