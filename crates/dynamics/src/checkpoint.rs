@@ -1,24 +1,53 @@
 //! Byte serialisation of the full run state (state vector, integrator memory, accumulators) so
-//! that a resumed run continues bit-for-bit. Little-endian, versioned, with a fingerprint of
-//! the model so that a checkpoint cannot be applied to a different bearing.
+//! that a resumed run continues bit-for-bit. Little-endian; a tag with the format version
+//! first, a checksum of everything before it last, and a fingerprint of the set-up (model,
+//! operating conditions, settings) so that a checkpoint cannot be applied to another run.
 
 use crate::error::DynError;
 
-/// Format tag (02: integrator method tag and Rosenbrock-W state).
-pub(crate) const MAGIC: &[u8; 8] = b"RDYNCK05";
+/// Tag that opens every checkpoint, followed by the two-digit format version.
+const TAG: &[u8; 6] = b"RDYNCK";
+/// Format version (06: checksum, output step, the caller's note).
+const VERSION: &[u8; 2] = b"06";
+/// Bytes of the checksum that closes a checkpoint.
+const CHECKSUM_BYTES: usize = 8;
 
-/// Appends values to a byte buffer.
-#[derive(Debug, Default)]
+/// 64-bit FNV-1a hash of `bytes`: the set-up fingerprint and the checkpoint checksum (any one
+/// changed byte changes it).
+pub(crate) fn fnv1a(bytes: &[u8]) -> u64 {
+    bytes.iter().fold(0xcbf29ce484222325, |h, &b| {
+        (h ^ u64::from(b)).wrapping_mul(0x100000001b3)
+    })
+}
+
+/// Appends values to a byte buffer that starts with the tag and version.
+#[derive(Debug)]
 pub(crate) struct Writer {
     pub buf: Vec<u8>,
 }
 
 impl Writer {
+    pub fn new() -> Self {
+        Self {
+            buf: [TAG.as_slice(), VERSION].concat(),
+        }
+    }
+    /// The checkpoint: the buffer closed by its checksum.
+    pub fn seal(mut self) -> Vec<u8> {
+        let sum = fnv1a(&self.buf);
+        self.u64(sum);
+        self.buf
+    }
     pub fn f64(&mut self, x: f64) {
         self.buf.extend_from_slice(&x.to_bits().to_le_bytes());
     }
     pub fn u64(&mut self, x: u64) {
         self.buf.extend_from_slice(&x.to_le_bytes());
+    }
+    /// Length-prefixed bytes.
+    pub fn bytes(&mut self, b: &[u8]) {
+        self.u64(b.len() as u64);
+        self.buf.extend_from_slice(b);
     }
     pub fn slice(&mut self, v: &[f64]) {
         self.u64(v.len() as u64);
@@ -36,8 +65,43 @@ pub(crate) struct Reader<'a> {
 }
 
 impl<'a> Reader<'a> {
-    pub fn new(buf: &'a [u8]) -> Self {
-        Self { buf, pos: 0 }
+    /// Reads a checkpoint written by [`Writer::seal`]: refuses another file, another format
+    /// version and a checkpoint whose checksum does not match (a changed or cut byte).
+    pub fn open(bytes: &'a [u8]) -> Result<Self, DynError> {
+        let refuse = |reason: String| Err(DynError::Checkpoint(reason));
+        let header = TAG.len() + VERSION.len();
+        if bytes.len() < header || &bytes[..TAG.len()] != TAG {
+            return refuse("not a rolldyn dynamics checkpoint".into());
+        }
+        let version = &bytes[TAG.len()..header];
+        if version != VERSION {
+            return refuse(format!(
+                "format version {}, this rolldyn reads version {} (written by another rolldyn: run again from the start)",
+                String::from_utf8_lossy(version),
+                String::from_utf8_lossy(VERSION)
+            ));
+        }
+        let damaged =
+            "damaged: its checksum does not match (a byte was changed or the file cut short)";
+        let Some(body_len) = bytes
+            .len()
+            .checked_sub(CHECKSUM_BYTES)
+            .filter(|&n| n >= header)
+        else {
+            return refuse(damaged.into());
+        };
+        let (body, sum) = bytes.split_at(body_len);
+        if sum != fnv1a(body).to_le_bytes() {
+            return refuse(damaged.into());
+        }
+        Ok(Self {
+            buf: body,
+            pos: header,
+        })
+    }
+    /// Whether every value has been read.
+    pub fn at_end(&self) -> bool {
+        self.pos == self.buf.len()
     }
     fn take8(&mut self) -> Result<[u8; 8], DynError> {
         let end = self.pos + 8;
@@ -56,6 +120,18 @@ impl<'a> Reader<'a> {
     pub fn u64(&mut self) -> Result<u64, DynError> {
         Ok(u64::from_le_bytes(self.take8()?))
     }
+    /// Bytes written by [`Writer::bytes`].
+    pub fn bytes(&mut self) -> Result<Vec<u8>, DynError> {
+        let n = self.u64()?;
+        let end = usize::try_from(n)
+            .ok()
+            .and_then(|n| self.pos.checked_add(n))
+            .filter(|&end| end <= self.buf.len())
+            .ok_or_else(|| DynError::Checkpoint("truncated data".into()))?;
+        let b = self.buf[self.pos..end].to_vec();
+        self.pos = end;
+        Ok(b)
+    }
     pub fn slice_into(&mut self, v: &mut [f64]) -> Result<(), DynError> {
         let n = self.u64()? as usize;
         if n != v.len() {
@@ -66,15 +142,6 @@ impl<'a> Reader<'a> {
         }
         for x in v.iter_mut() {
             *x = self.f64()?;
-        }
-        Ok(())
-    }
-    pub fn magic(&mut self) -> Result<(), DynError> {
-        let a = self.take8()?;
-        if &a != MAGIC {
-            return Err(DynError::Checkpoint(
-                "not a rolldyn dynamics checkpoint (or another format version)".into(),
-            ));
         }
         Ok(())
     }

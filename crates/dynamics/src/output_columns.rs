@@ -332,6 +332,13 @@ pub const REVOLUTION_COLUMNS: [RevolutionColumn; 19] = [
     },
 ];
 
+/// Values in the three tables of a run with `samples` output times, `revolutions` cage
+/// revolutions and `rollers` rollers (for the estimate of their size).
+pub fn table_values(samples: f64, revolutions: f64, rollers: usize) -> f64 {
+    let per_sample = BEARING_COLUMNS.len() + rollers * ROLLER_COLUMNS.len();
+    samples * per_sample as f64 + revolutions * REVOLUTION_COLUMNS.len() as f64
+}
+
 /// The `bearing` row of a snapshot, in the order of [`BEARING_COLUMNS`].
 pub fn bearing_row(s: &Snapshot, row: &mut Vec<f64>) {
     row.clear();

@@ -1,6 +1,6 @@
 //! The public entry point: [`Simulation`].
 
-use crate::checkpoint::{MAGIC, Reader, Writer};
+use crate::checkpoint::{Reader, Writer, fnv1a};
 use crate::conditions::OperatingConditions;
 use crate::error::DynError;
 use crate::initial::{
@@ -140,6 +140,7 @@ impl Simulation {
     /// crate). The default is [`crate::TwoLevelLand`] with `ContactParameters::cage_land`.
     pub fn set_cage_land_model(&mut self, model: Box<dyn CageLandModel>) {
         self.model.land_model = model;
+        self.fingerprint = fingerprint(&self.model, &self.settings);
         self.ig.invalidate();
     }
 
@@ -197,7 +198,7 @@ impl Simulation {
         let (scale, relative) = error_scales(&model, set);
         let ig = new_stepper(&model, set, 0.0, y, scale, relative);
         let z = model.z;
-        let fingerprint = fingerprint(&model);
+        let fingerprint = fingerprint(&model, &settings);
         let mut sim = Self {
             scratch_y: vec![0.0; lay.len()],
             scratch_dy: vec![0.0; lay.len()],
@@ -277,9 +278,14 @@ impl Simulation {
         by_kind
     }
 
-    /// Completed cage revolutions.
+    /// Completed cage revolutions (each one sent to the output sink).
     pub fn revolutions(&self) -> u64 {
         self.tr.revolutions
+    }
+
+    /// Number of rollers.
+    pub fn roller_count(&self) -> usize {
+        self.model.z
     }
 
     /// Time at which steady state was first detected (cage-speed change per revolution below
@@ -700,8 +706,14 @@ impl Simulation {
     /// Serialises the complete run state (state vector, integrator memory incl. the dense
     /// output of the last step, statistics, summary accumulators, output position) to bytes.
     pub fn checkpoint(&self) -> Vec<u8> {
-        let mut w = Writer::default();
-        w.buf.extend_from_slice(MAGIC);
+        self.checkpoint_with(&[])
+    }
+
+    /// [`Simulation::checkpoint`] with a `note` of the caller's own (e.g. what it knows of its
+    /// outputs at this point), given back by [`Simulation::restore`] and covered by the
+    /// checksum.
+    pub fn checkpoint_with(&self, note: &[u8]) -> Vec<u8> {
+        let mut w = Writer::new();
         w.u64(self.fingerprint);
         self.ig.save(&mut w);
         let tr = &self.tr;
@@ -713,18 +725,22 @@ impl Simulation {
         w.f64(tr.prev_rev_speed);
         w.f64(tr.steady_at);
         w.u64(tr.next_sample);
+        w.f64(self.settings.output_step_s);
         w.f64(tr.wall);
-        w.buf
+        w.bytes(note);
+        w.seal()
     }
 
     /// Restores a checkpoint written by [`Simulation::checkpoint`] of a simulation built from
-    /// the same inputs; the run then continues bit-for-bit.
-    pub fn restore(&mut self, bytes: &[u8]) -> Result<(), DynError> {
-        let mut r = Reader::new(bytes);
-        r.magic()?;
+    /// the same inputs; the run then continues bit-for-bit. A damaged checkpoint (checksum),
+    /// one of another format version or bearing, and one written with another non-zero output
+    /// step (the samples would change their spacing) are refused. Returns the note of
+    /// [`Simulation::checkpoint_with`] (empty for [`Simulation::checkpoint`]).
+    pub fn restore(&mut self, bytes: &[u8]) -> Result<Vec<u8>, DynError> {
+        let mut r = Reader::open(bytes)?;
         if r.u64()? != self.fingerprint {
             return Err(DynError::Checkpoint(
-                "the checkpoint belongs to a different bearing model or contact set-up".into(),
+                "the checkpoint belongs to a different set-up (bearing model, operating conditions, contact or integrator settings)".into(),
             ));
         }
         let ig = self.ig.load(&mut r)?;
@@ -737,13 +753,25 @@ impl Simulation {
         tr.prev_rev_speed = r.f64()?;
         tr.steady_at = r.f64()?;
         tr.next_sample = r.u64()?;
+        let output_step = r.f64()?;
         tr.wall = r.f64()?;
-        if r.pos != bytes.len() {
+        let note = r.bytes()?;
+        if !r.at_end() {
             return Err(DynError::Checkpoint("trailing data".into()));
+        }
+        let step = self.settings.output_step_s;
+        if output_step != step {
+            if output_step > 0.0 && step > 0.0 {
+                return Err(DynError::Checkpoint(format!(
+                    "written with an output step of {output_step:e} s, this run has {step:e} s"
+                )));
+            }
+            // samples start (again) at the first output time of the resumed run
+            tr.next_sample = 0;
         }
         self.ig = ig;
         self.tr = tr;
-        Ok(())
+        Ok(note)
     }
 }
 
@@ -1022,34 +1050,15 @@ fn error_scales(model: &Model, set: &IntegratorSettings) -> (Vec<f64>, Vec<f64>)
     (s, rel)
 }
 
-fn fingerprint(model: &Model) -> u64 {
-    // FNV-1a over the numbers that define the dynamics
-    let mut h: u64 = 0xcbf29ce484222325;
-    let mut eat = |x: f64| {
-        for b in x.to_bits().to_le_bytes() {
-            h ^= u64::from(b);
-            h = h.wrapping_mul(0x100000001b3);
-        }
-    };
-    eat(model.z as f64);
-    eat(model.m_r);
-    eat(model.ia_r);
-    eat(model.m_c);
-    eat(model.rw);
-    eat(model.ri);
-    eat(model.ro);
-    eat(model.r_bar);
-    eat(model.half_pocket);
-    for &k in model.inner.k.iter().chain(&model.outer.k) {
-        eat(k);
-    }
-    for &x in &model.slice_drop {
-        eat(x);
-    }
-    eat(model.conditions.inner_speed.speed(0.0));
-    eat(model.conditions.cage_drag_n_m_s);
-    eat(model.conditions.misalignment_rad);
-    h
+/// Fingerprint of everything that defines the dynamics of a run — the model (bearing,
+/// contacts, traction, operating conditions, cage land) and the settings except the output step
+/// and the integrator method (both checked apart) — so that a checkpoint is not resumed into
+/// another set-up. FNV-1a of their exact `Debug` text (floats print as round-trip values).
+fn fingerprint(model: &Model, settings: &DynamicsSettings) -> u64 {
+    let mut settings = *settings;
+    settings.output_step_s = 0.0;
+    settings.integrator.method = IntegratorMethod::Dopri5;
+    fnv1a(format!("{model:?}{settings:?}").as_bytes())
 }
 
 /// Total mechanical energy (see [`Simulation::mechanical_energy`]).

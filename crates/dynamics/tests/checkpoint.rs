@@ -68,10 +68,12 @@ fn resume_from_checkpoint_is_bit_for_bit() {
 #[test]
 fn resume_from_checkpoint_is_bit_for_bit_rosenbrock_w() {
     resume(IntegratorMethod::RosenbrockW);
-    // a checkpoint of one method is refused by a simulation using the other
+    // a checkpoint of one method is refused by a simulation using the other (with the same
+    // settings otherwise: they are part of the checkpoint's set-up)
     let mut a = build_with(IntegratorMethod::RosenbrockW);
     a.run_until(5e-4, &mut NullSink, &mut |_| {}).unwrap();
-    let mut d = build();
+    let mut d = build_with(IntegratorMethod::RosenbrockW);
+    d.set_integrator_method(IntegratorMethod::Dopri5);
     assert!(matches!(
         d.restore(&a.checkpoint()),
         Err(DynError::Checkpoint(_))
@@ -135,4 +137,44 @@ fn resume(method: IntegratorMethod) {
         o.restore(&bytes[..20]),
         Err(DynError::Checkpoint(_))
     ));
+}
+
+/// A checkpoint carries a format version and a checksum: a flipped byte, a truncated file or
+/// another format version is refused with a reason (not restored into different results).
+#[test]
+fn damaged_or_foreign_checkpoint_is_refused() {
+    let mut a = build();
+    a.run_until(3e-4, &mut NullSink, &mut |_| {}).unwrap();
+    let bytes = a.checkpoint();
+    let refusal = |bytes: &[u8]| match build().restore(bytes) {
+        Err(DynError::Checkpoint(reason)) => reason,
+        other => panic!("restored: {other:?}"),
+    };
+    for k in [8, 20, bytes.len() / 2, bytes.len() - 9, bytes.len() - 1] {
+        let mut flipped = bytes.clone();
+        flipped[k] ^= 0x01;
+        let reason = refusal(&flipped);
+        assert!(
+            reason.contains("damaged") || reason.contains("format version"),
+            "byte {k}: {reason}"
+        );
+    }
+    assert!(refusal(&bytes[..bytes.len() - 1]).contains("damaged"));
+    assert!(refusal(b"[bearing]\nname = \"x\"\n").contains("not a rolldyn"));
+    let mut older = bytes.clone();
+    older[6..8].copy_from_slice(b"05");
+    assert!(refusal(&older).contains("format version 05"));
+    build().restore(&bytes).unwrap();
+}
+
+/// The caller's note travels with the checkpoint.
+#[test]
+fn checkpoint_note_is_given_back() {
+    let mut a = build();
+    a.run_until(2e-4, &mut NullSink, &mut |_| {}).unwrap();
+    assert_eq!(
+        build().restore(&a.checkpoint_with(b"tables")).unwrap(),
+        b"tables"
+    );
+    assert!(build().restore(&a.checkpoint()).unwrap().is_empty());
 }

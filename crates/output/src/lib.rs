@@ -3,14 +3,19 @@
 //! A [`TableWriter`] receives one row at a time and never holds more than one Parquet row group
 //! (default 4096 rows) in memory, so a long simulation streams to disk. Rows written before a
 //! failure stay readable: call [`TableWriter::finish`] on the error path too (it writes the
-//! Parquet footer); dropping an unfinished writer also finishes it, best effort. A value that
-//! is not finite is written as an empty CSV field and a Parquet null ([`non_finite`]).
+//! Parquet footer); dropping an unfinished writer also finishes it, best effort. A process that
+//! is killed leaves a Parquet file without footer, but its CSV file holds every row up to the
+//! last [`TableWriter::flush`]: [`TableWriter::resume`] continues the table from there and
+//! rebuilds the Parquet file. A value that is not finite is written as an empty CSV field and a
+//! Parquet null ([`non_finite`]).
 
 pub mod mixed_table;
 pub mod non_finite;
+pub mod size;
 
 pub use mixed_table::{Column, Values, write_parquet_table};
 pub use non_finite::{csv_field, default_reason, mark_non_finite};
+pub use size::{ByteSize, estimated_table_bytes};
 
 use parquet::basic::Compression;
 use parquet::data_type::DoubleType;
@@ -22,7 +27,7 @@ use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 /// Writing a table failed.
-#[derive(Debug, thiserror::Error)]
+#[derive(Debug, Clone, thiserror::Error)]
 #[error("cannot write {path}: {reason}")]
 pub struct OutputError {
     pub path: String,
@@ -91,7 +96,36 @@ pub struct TableWriter {
     parquet: Option<ParquetSink>,
     row_group_rows: usize,
     rows: usize,
+    digest: RowDigest,
     finished: bool,
+}
+
+/// A digest of the rows of a table as they read back from its CSV file (a value that is not
+/// finite counts as NaN), so that a resumed table can be recognised. Deterministic within a
+/// rolldyn version (SipHash with fixed keys).
+#[derive(Clone, Default)]
+struct RowDigest(std::collections::hash_map::DefaultHasher);
+
+impl RowDigest {
+    fn add(&mut self, row: &[f64]) {
+        use std::hash::Hasher;
+        for &v in row {
+            let v = if v.is_finite() { v } else { f64::NAN };
+            self.0.write_u64(v.to_bits());
+        }
+    }
+    fn value(&self) -> u64 {
+        use std::hash::Hasher;
+        self.0.finish()
+    }
+}
+
+/// The rows of an interrupted table that a resume keeps: how many, and the
+/// digest of the table after them ([`TableWriter::kept`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct KeptRows {
+    pub rows: usize,
+    pub digest: u64,
 }
 
 /// A Parquet-safe column name: letters, digits and `_` only.
@@ -136,15 +170,79 @@ impl TableWriter {
         names: &[String],
         formats: Formats,
     ) -> Result<Self, OutputError> {
-        let names = column_names(names).map_err(|e| fail(&dir.join(stem), e))?;
-        let csv = if formats.csv {
+        let mut table = Self::without_csv(dir, stem, names, formats)?;
+        if formats.csv {
             let path = dir.join(format!("{stem}.csv"));
             let mut writer = csv::Writer::from_path(&path).map_err(|e| fail(&path, e))?;
-            writer.write_record(&names).map_err(|e| fail(&path, e))?;
-            Some((path, writer))
-        } else {
-            None
-        };
+            writer
+                .write_record(&table.names)
+                .map_err(|e| fail(&path, e))?;
+            table.csv = Some((path, writer));
+        }
+        Ok(table)
+    }
+
+    /// Continues the table of an interrupted run in `dir` after its first `kept.rows` rows:
+    /// the CSV (the record of the run, which must hold them under the same header and with the
+    /// same digest) is cut after them — dropping later rows and a partial last line — and the
+    /// Parquet file is rebuilt from them; `on_row` sees each kept row (to rebuild what the
+    /// caller derives from the rows). Writing then goes on as if the run had never stopped.
+    /// Nothing is changed when the CSV file does not fit. With no rows kept the table starts
+    /// anew.
+    pub fn resume(
+        dir: &Path,
+        stem: &str,
+        names: &[String],
+        formats: Formats,
+        kept: KeptRows,
+        mut on_row: impl FnMut(&[f64]),
+    ) -> Result<Self, OutputError> {
+        let keep_rows = kept.rows;
+        if keep_rows == 0 {
+            return Self::create(dir, stem, names, formats);
+        }
+        let path = dir.join(format!("{stem}.csv"));
+        if !formats.csv {
+            return Err(fail(&path, "a table is resumed from its CSV file"));
+        }
+        let names: Vec<String> = names.iter().map(|n| column_name(n)).collect();
+        // the first pass checks the CSV file, so that nothing is changed when it does not fit
+        let mut digest = RowDigest::default();
+        let end = read_rows(&path, &names, keep_rows, |row| {
+            digest.add(row);
+            Ok(())
+        })?;
+        if digest.value() != kept.digest {
+            return Err(fail(
+                &path,
+                "its rows differ from those of the interrupted run (the folder of another run?)",
+            ));
+        }
+        let mut table = Self::without_csv(dir, stem, &names, formats)?;
+        read_rows(&path, &names, keep_rows, |row| {
+            table.push_parquet(row)?;
+            on_row(row);
+            Ok(())
+        })?;
+        table.rows = keep_rows;
+        table.digest = digest;
+        let file = std::fs::OpenOptions::new()
+            .append(true)
+            .open(&path)
+            .map_err(|e| fail(&path, e))?;
+        file.set_len(end).map_err(|e| fail(&path, e))?;
+        table.csv = Some((path, csv::Writer::from_writer(file)));
+        Ok(table)
+    }
+
+    /// The table with its Parquet file (when asked for) and no CSV file yet.
+    fn without_csv(
+        dir: &Path,
+        stem: &str,
+        names: &[String],
+        formats: Formats,
+    ) -> Result<Self, OutputError> {
+        let names = column_names(names).map_err(|e| fail(&dir.join(stem), e))?;
         let parquet = if formats.parquet {
             let path = dir.join(format!("{stem}.parquet"));
             let fields: String = names
@@ -172,10 +270,11 @@ impl TableWriter {
         };
         Ok(Self {
             names,
-            csv,
+            csv: None,
             parquet,
             row_group_rows: 4096,
             rows: 0,
+            digest: RowDigest::default(),
             finished: false,
         })
     }
@@ -188,6 +287,15 @@ impl TableWriter {
     /// Rows written so far.
     pub fn rows(&self) -> usize {
         self.rows
+    }
+
+    /// Digest of the rows written so far (with [`TableWriter::rows`], what
+    /// [`TableWriter::resume`] checks).
+    pub fn kept(&self) -> KeptRows {
+        KeptRows {
+            rows: self.rows,
+            digest: self.digest.value(),
+        }
     }
 
     /// Appends one row; `values.len()` must equal the number of columns.
@@ -208,6 +316,14 @@ impl TableWriter {
                 .write_record(values.iter().map(|&v| csv_field(v)))
                 .map_err(|e| fail(path, e))?;
         }
+        self.push_parquet(values)?;
+        self.digest.add(values);
+        self.rows += 1;
+        Ok(())
+    }
+
+    /// Adds a row to the Parquet row group, written out when full.
+    fn push_parquet(&mut self, values: &[f64]) -> Result<(), OutputError> {
         if let Some(sink) = &mut self.parquet {
             for ((column, levels), &v) in sink.columns.iter_mut().zip(values) {
                 levels.push(i16::from(v.is_finite()));
@@ -219,7 +335,15 @@ impl TableWriter {
                 sink.flush()?;
             }
         }
-        self.rows += 1;
+        Ok(())
+    }
+
+    /// Hands the CSV rows written so far to the operating system, so that they survive the
+    /// process (the Parquet file is complete only after [`TableWriter::finish`]).
+    pub fn flush(&mut self) -> Result<(), OutputError> {
+        if let Some((path, writer)) = &mut self.csv {
+            writer.flush().map_err(|e| fail(path, e))?;
+        }
         Ok(())
     }
 
@@ -243,6 +367,81 @@ impl TableWriter {
         }
         Ok(())
     }
+}
+
+/// Reads the first `keep_rows` rows of the CSV file at `path`, which must have the header
+/// `names`, into `on_row`; returns the byte offset where they end. Fails when the file holds
+/// fewer complete rows (a last line cut short does not count).
+fn read_rows(
+    path: &Path,
+    names: &[String],
+    keep_rows: usize,
+    mut on_row: impl FnMut(&[f64]) -> Result<(), OutputError>,
+) -> Result<u64, OutputError> {
+    let mut reader = csv::ReaderBuilder::new()
+        .flexible(true)
+        .from_path(path)
+        .map_err(|e| {
+            fail(
+                path,
+                format!("no table of the interrupted run to continue ({e})"),
+            )
+        })?;
+    let header = reader.headers().map_err(|e| fail(path, e))?;
+    if !header.iter().eq(names.iter()) {
+        return Err(fail(path, "the header differs from this run's columns"));
+    }
+    let mut record = csv::StringRecord::new();
+    let mut values = vec![0.0; names.len()];
+    let (mut rows, mut end) = (0, reader.position().byte());
+    while rows < keep_rows
+        && reader.read_record(&mut record).map_err(|e| fail(path, e))?
+        && record.len() == values.len()
+    {
+        for (value, field) in values.iter_mut().zip(&record) {
+            *value = parse_field(field).ok_or_else(|| {
+                fail(path, format!("row {}: '{field}' is not a number", rows + 1))
+            })?;
+        }
+        rows += 1;
+        end = reader.position().byte();
+        if rows < keep_rows || ends_a_line(path, end)? {
+            on_row(&values)?;
+        } else {
+            rows -= 1;
+        }
+    }
+    if rows < keep_rows {
+        return Err(fail(
+            path,
+            format!("{rows} complete rows where {keep_rows} are needed"),
+        ));
+    }
+    Ok(end)
+}
+
+/// The value of a CSV field as written by [`csv_field`]: empty is not finite.
+fn parse_field(field: &str) -> Option<f64> {
+    if field.is_empty() {
+        Some(f64::NAN)
+    } else {
+        field.parse().ok()
+    }
+}
+
+/// Whether the byte before `offset` of the file at `path` ends a line (the last row of a file
+/// cut by a kill does not).
+fn ends_a_line(path: &Path, offset: u64) -> Result<bool, OutputError> {
+    use std::io::{Read, Seek, SeekFrom};
+    let Some(last) = offset.checked_sub(1) else {
+        return Ok(false);
+    };
+    let mut file = File::open(path).map_err(|e| fail(path, e))?;
+    let mut byte = [0u8];
+    file.seek(SeekFrom::Start(last))
+        .and_then(|_| file.read_exact(&mut byte))
+        .map_err(|e| fail(path, e))?;
+    Ok(byte[0] == b'\n')
 }
 
 impl Drop for TableWriter {

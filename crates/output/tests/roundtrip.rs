@@ -2,7 +2,7 @@
 
 use parquet::file::reader::{FileReader, SerializedFileReader};
 use parquet::record::RowAccessor;
-use rolldyn_output::{Formats, TableWriter};
+use rolldyn_output::{Formats, KeptRows, TableWriter};
 
 #[test]
 fn csv_and_parquet_round_trip_across_row_groups() {
@@ -68,5 +68,103 @@ fn non_finite_values_are_empty_csv_fields_and_parquet_nulls() {
     assert!(rows[0].get_double(1).is_err());
     assert!(rows[1].get_double(0).is_err());
     assert_eq!(rows[1].get_double(1).unwrap(), 2.0);
+    std::fs::remove_dir_all(dir).ok();
+}
+
+fn row(k: usize) -> [f64; 2] {
+    [
+        k as f64 * 1e-5,
+        if k.is_multiple_of(3) {
+            f64::NAN
+        } else {
+            0.1 * k as f64
+        },
+    ]
+}
+
+/// A table whose writer was killed (rows flushed, then a partial line, no Parquet footer) is
+/// resumed after its first rows: the CSV is cut there, the Parquet rebuilt from it, and the
+/// files end equal to those of an uninterrupted writer.
+#[test]
+fn resumed_table_equals_an_uninterrupted_one() {
+    let dir = std::env::temp_dir().join(format!("rolldyn-output-resume-{}", std::process::id()));
+    let (whole, killed) = (dir.join("whole"), dir.join("killed"));
+    std::fs::create_dir_all(&whole).unwrap();
+    std::fs::create_dir_all(&killed).unwrap();
+    let names = vec!["t".to_string(), "x".to_string()];
+    let rows = 5000;
+    let mut w = TableWriter::create(&whole, "series", &names, Formats::default()).unwrap();
+    for k in 0..rows {
+        w.write_row(&row(k)).unwrap();
+    }
+    w.finish().unwrap();
+    let mut w = TableWriter::create(&killed, "series", &names, Formats::default()).unwrap();
+    let mut checkpoint = w.kept();
+    for k in 0..4300 {
+        w.write_row(&row(k)).unwrap();
+        if k == 4099 {
+            checkpoint = w.kept();
+        }
+    }
+    w.flush().unwrap();
+    std::mem::forget(w);
+    let csv = killed.join("series.csv");
+    let mut partial = std::fs::read(&csv).unwrap();
+    partial.extend_from_slice(b"4.3e-2,4");
+    std::fs::write(&csv, partial).unwrap();
+    let mut replayed = Vec::new();
+    let mut resume = |keep| {
+        replayed.clear();
+        TableWriter::resume(&killed, "series", &names, Formats::default(), keep, |r| {
+            replayed.push(r[0])
+        })
+    };
+    let killed_files = |f: &str| std::fs::read(killed.join(f)).unwrap();
+    let before = (killed_files("series.csv"), killed_files("series.parquet"));
+    let short = resume(KeptRows {
+        rows: 4301,
+        ..checkpoint
+    })
+    .err()
+    .expect("more rows than the CSV holds");
+    assert!(
+        short.reason.contains("4300 complete rows"),
+        "{}",
+        short.reason
+    );
+    let other_names = vec!["t".to_string(), "y".to_string()];
+    let other = TableWriter::resume(
+        &killed,
+        "series",
+        &other_names,
+        Formats::default(),
+        checkpoint,
+        |_| {},
+    );
+    assert!(
+        other
+            .err()
+            .expect("another header")
+            .reason
+            .contains("header")
+    );
+    let foreign = resume(KeptRows {
+        digest: checkpoint.digest ^ 1,
+        ..checkpoint
+    });
+    assert!(foreign.err().expect("other rows").reason.contains("differ"));
+    let after = (killed_files("series.csv"), killed_files("series.parquet"));
+    assert!(before == after, "a refused resume changed the files");
+    let mut w = resume(checkpoint).unwrap();
+    assert_eq!(w.kept(), checkpoint);
+    assert!((0..4100).map(|k| row(k)[0]).eq(replayed.iter().copied()));
+    for k in 4100..rows {
+        w.write_row(&row(k)).unwrap();
+    }
+    w.finish().unwrap();
+    for file in ["series.csv", "series.parquet"] {
+        let a = std::fs::read(whole.join(file)).unwrap();
+        assert!(a == std::fs::read(killed.join(file)).unwrap(), "{file}");
+    }
     std::fs::remove_dir_all(dir).ok();
 }

@@ -6,11 +6,14 @@ use crate::output::{load_model, out_dir, print_json};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use rolldyn_dynamics::output::{OutputSink, RevolutionSummary, RunSummary, Snapshot};
 use rolldyn_dynamics::output_columns::{
-    BEARING_COLUMNS, REVOLUTION_COLUMNS, ROLLER_COLUMNS, bearing_row, column_names, revolution_row,
-    roller_row,
+    BEARING_COLUMNS, Column, REVOLUTION_COLUMNS, ROLLER_COLUMNS, bearing_row, column_names,
+    revolution_row, roller_row, table_values,
 };
-use rolldyn_dynamics::{IntegratorMethod, SummaryValue};
-use rolldyn_output::{Formats, OutputError, TableWriter};
+use rolldyn_dynamics::settings::DynamicsSettings;
+use rolldyn_dynamics::{IntegratorMethod, Simulation, SummaryValue};
+use rolldyn_output::{
+    ByteSize, Formats, KeptRows, OutputError, TableWriter, estimated_table_bytes,
+};
 use rolldyn_plot::{Labels, Series, line_plot};
 use rolldyn_units::{Quantity, Time};
 use serde::Serialize;
@@ -79,19 +82,28 @@ pub struct Args {
     /// Simulated duration: cage revolutions (`20rev`) or time (`0.2s`).
     #[arg(long, default_value = "5rev")]
     pub duration: Duration,
-    /// Interval of the time-series samples.
+    /// Interval of the time-series samples (at least the integrator's minimum step).
     #[arg(long, default_value = "0.05ms")]
     pub output_step: Quantity<Time>,
+    /// Largest estimated size of the `--out` tables: a run whose tables would be larger is
+    /// refused before it starts (e.g. `20GB`).
+    #[arg(long, default_value = "2GB")]
+    pub max_output: ByteSize,
     /// Relative tolerance of the integrator.
     #[arg(long)]
     pub tolerance: Option<f64>,
     /// Integration method (default: the settings default, dopri5).
     #[arg(long, value_enum)]
     pub integrator: Option<IntegratorArg>,
-    /// Write the state to this file after every cage revolution (and at the end).
+    /// Write the state to this file every `--checkpoint-interval` and at the end (the `--out`
+    /// CSV rows are flushed first; README "Long runs").
     #[arg(long)]
     pub checkpoint: Option<PathBuf>,
-    /// Continue a run from a checkpoint file (bit-for-bit) up to the new duration.
+    /// Interval of the checkpoints: cage revolutions (`2rev`) or time (`10ms`); default 1rev.
+    #[arg(long, requires = "checkpoint")]
+    pub checkpoint_interval: Option<Duration>,
+    /// Continue a run from a checkpoint file (bit-for-bit) up to the new duration; with
+    /// `--out`, the tables of that folder are continued.
     #[arg(long)]
     pub resume: Option<PathBuf>,
     /// Print the summary as JSON.
@@ -138,13 +150,9 @@ impl Decimated {
     }
 }
 
-/// Streams samples to tables and keeps decimated histories for the plots.
-struct FileSink {
-    bearing: TableWriter,
-    rollers: TableWriter,
-    revolutions: TableWriter,
-    row: Vec<f64>,
-    error: Option<OutputError>,
+/// The decimated histories of the plots, fed with the table rows (so that a resumed run
+/// rebuilds them from the rows it keeps).
+struct Plots {
     cage_speed: Decimated,
     epicyclic: Decimated,
     cage_slip: Decimated,
@@ -155,21 +163,18 @@ struct FileSink {
     roller_bar: Decimated,
 }
 
-impl FileSink {
-    fn create(dir: &Path) -> Result<Self, OutputError> {
-        let formats = Formats::default();
+/// Position of the column `name` in a table schema.
+fn position<A>(columns: &[Column<A>], name: &str) -> usize {
+    columns
+        .iter()
+        .position(|c| c.name == name)
+        .expect("a column of the schema")
+}
+
+impl Plots {
+    fn new() -> Self {
         let plot = || Decimated::new(4000);
-        Ok(Self {
-            bearing: TableWriter::create(dir, "bearing", &column_names(&BEARING_COLUMNS), formats)?,
-            rollers: TableWriter::create(dir, "rollers", &column_names(&ROLLER_COLUMNS), formats)?,
-            revolutions: TableWriter::create(
-                dir,
-                "revolutions",
-                &column_names(&REVOLUTION_COLUMNS),
-                formats,
-            )?,
-            row: Vec::with_capacity(ROLLER_COLUMNS.len()),
-            error: None,
+        Self {
             cage_speed: plot(),
             epicyclic: plot(),
             cage_slip: plot(),
@@ -178,13 +183,139 @@ impl FileSink {
             roller_inner: plot(),
             roller_outer: plot(),
             roller_bar: plot(),
+        }
+    }
+
+    /// A row of the `bearing` table.
+    fn bearing(&mut self, row: &[f64]) {
+        let v = |name| row[position(&BEARING_COLUMNS, name)];
+        let t = v("time_s");
+        self.cage_speed.push(t, v("cage_speed_rad_s"));
+        self.epicyclic.push(t, v("epicyclic_cage_speed_rad_s"));
+        self.cage_slip.push(t, v("cage_slip"));
+        self.cage_orbit
+            .push(v("cage_x_m") * 1e6, v("cage_y_m") * 1e6);
+        self.inner_orbit
+            .push(v("inner_ring_x_m") * 1e6, v("inner_ring_y_m") * 1e6);
+    }
+
+    /// A row of the `rollers` table: the forces of roller 1 are plotted.
+    fn roller(&mut self, row: &[f64]) {
+        let v = |name| row[position(&ROLLER_COLUMNS, name)];
+        if v("roller") == 1.0 {
+            let t = v("time_s");
+            self.roller_inner.push(t, v("inner_force_n"));
+            self.roller_outer.push(t, v("outer_force_n"));
+            self.roller_bar.push(t, v("cage_bar_force_n"));
+        }
+    }
+}
+
+/// What a checkpoint notes of the `--out` tables `bearing`, `rollers` and `revolutions`: their
+/// rows and digests at that point.
+type TablesNote = [KeptRows; 3];
+
+fn encode_note(note: &TablesNote) -> Vec<u8> {
+    note.iter()
+        .flat_map(|k| [k.rows as u64, k.digest])
+        .flat_map(u64::to_le_bytes)
+        .collect()
+}
+
+/// The tables note of a checkpoint; `None` when its run had no `--out` (an empty note).
+fn decode_note(note: &[u8]) -> Result<Option<TablesNote>, String> {
+    if note.is_empty() {
+        return Ok(None);
+    }
+    let words: Vec<u64> = note
+        .chunks_exact(8)
+        .map(|b| u64::from_le_bytes(b.try_into().expect("8 bytes")))
+        .collect();
+    match words.as_slice() {
+        &[r0, d0, r1, d1, r2, d2] if note.len() == 48 => Ok(Some(
+            [(r0, d0), (r1, d1), (r2, d2)].map(|(rows, digest)| KeptRows {
+                rows: rows as usize,
+                digest,
+            }),
+        )),
+        _ => Err("the note on the output tables is not one of rolldyn simulate".into()),
+    }
+}
+
+/// Streams samples to tables and keeps decimated histories for the plots.
+struct FileSink {
+    bearing: TableWriter,
+    rollers: TableWriter,
+    revolutions: TableWriter,
+    row: Vec<f64>,
+    error: Option<OutputError>,
+    plots: Plots,
+}
+
+impl FileSink {
+    /// The tables in `dir`: new ones, or those of an interrupted run continued after the rows
+    /// `kept` by its checkpoint (a `resumed` run; new tables when that run had no `--out`); the
+    /// plots start from the kept rows.
+    fn open(dir: &Path, kept: Option<TablesNote>, resumed: bool) -> Result<Self, Failure> {
+        let fresh = KeptRows { rows: 0, digest: 0 };
+        let [bearing, rollers, revolutions] = kept.unwrap_or([fresh; 3]);
+        let table = |stem: &str, names: Vec<String>, kept, on_row: &mut dyn FnMut(&[f64])| {
+            TableWriter::resume(dir, stem, &names, Formats::default(), kept, on_row).map_err(
+                |e| match resumed {
+                    true => Failure::Input(format!(
+                        "{e} (--resume continues the --out folder of the run that wrote the checkpoint)"
+                    )),
+                    false => Failure::Run(e.to_string()),
+                },
+            )
+        };
+        let mut plots = Plots::new();
+        Ok(Self {
+            bearing: table(
+                "bearing",
+                column_names(&BEARING_COLUMNS),
+                bearing,
+                &mut |row| plots.bearing(row),
+            )?,
+            rollers: table(
+                "rollers",
+                column_names(&ROLLER_COLUMNS),
+                rollers,
+                &mut |row| plots.roller(row),
+            )?,
+            revolutions: table(
+                "revolutions",
+                column_names(&REVOLUTION_COLUMNS),
+                revolutions,
+                &mut |_| {},
+            )?,
+            row: Vec::with_capacity(ROLLER_COLUMNS.len()),
+            error: None,
+            plots,
         })
+    }
+
+    /// The rows written so far, for the checkpoint's note.
+    fn kept(&self) -> TablesNote {
+        [&self.bearing, &self.rollers, &self.revolutions].map(TableWriter::kept)
     }
 
     fn keep(&mut self, result: Result<(), OutputError>) {
         if let (Err(e), None) = (result, &self.error) {
             self.error = Some(e);
         }
+    }
+
+    /// Hands the rows written so far to the system (before a checkpoint, so that the CSV files
+    /// are never behind it).
+    fn flush(&mut self) -> Result<(), OutputError> {
+        if let Some(e) = &self.error {
+            return Err(e.clone());
+        }
+        for table in [&mut self.bearing, &mut self.rollers, &mut self.revolutions] {
+            table.flush()?;
+        }
+        Ok(())
     }
 
     fn finish(self, dir: &Path) -> Result<(), Failure> {
@@ -205,11 +336,11 @@ impl FileSink {
             &[
                 Series {
                     label: "cage",
-                    points: &self.cage_speed.points,
+                    points: &self.plots.cage_speed.points,
                 },
                 Series {
                     label: "epicyclic",
-                    points: &self.epicyclic.points,
+                    points: &self.plots.epicyclic.points,
                 },
             ],
         )?;
@@ -220,7 +351,7 @@ impl FileSink {
             "slip",
             &[Series {
                 label: "",
-                points: &self.cage_slip.points,
+                points: &self.plots.cage_slip.points,
             }],
         )?;
         plot(
@@ -230,7 +361,7 @@ impl FileSink {
             "y, µm",
             &[Series {
                 label: "",
-                points: &self.cage_orbit.points,
+                points: &self.plots.cage_orbit.points,
             }],
         )?;
         plot(
@@ -240,7 +371,7 @@ impl FileSink {
             "y, µm",
             &[Series {
                 label: "",
-                points: &self.inner_orbit.points,
+                points: &self.plots.inner_orbit.points,
             }],
         )?;
         plot(
@@ -251,15 +382,15 @@ impl FileSink {
             &[
                 Series {
                     label: "inner raceway",
-                    points: &self.roller_inner.points,
+                    points: &self.plots.roller_inner.points,
                 },
                 Series {
                     label: "outer raceway",
-                    points: &self.roller_outer.points,
+                    points: &self.plots.roller_outer.points,
                 },
                 Series {
                     label: "cage bars",
-                    points: &self.roller_bar.points,
+                    points: &self.plots.roller_bar.points,
                 },
             ],
         )?;
@@ -268,29 +399,16 @@ impl FileSink {
 }
 
 impl OutputSink for FileSink {
-    fn sample(&mut self, t: f64, s: &Snapshot) {
+    fn sample(&mut self, _t: f64, s: &Snapshot) {
         bearing_row(s, &mut self.row);
         let result = self.bearing.write_row(&self.row);
         self.keep(result);
-        let r = &s.rollers;
-        for j in 0..r.azimuth_rad.len() {
+        self.plots.bearing(&self.row);
+        for j in 0..s.rollers.azimuth_rad.len() {
             roller_row(s, j, &mut self.row);
             let result = self.rollers.write_row(&self.row);
             self.keep(result);
-        }
-        self.cage_speed.push(t, s.cage_speed_rad_s);
-        self.epicyclic.push(t, s.epicyclic_cage_speed_rad_s);
-        self.cage_slip.push(t, s.cage_slip);
-        self.cage_orbit
-            .push(s.cage_center_m[0] * 1e6, s.cage_center_m[1] * 1e6);
-        self.inner_orbit.push(
-            s.inner_ring_center_m[0] * 1e6,
-            s.inner_ring_center_m[1] * 1e6,
-        );
-        if !r.azimuth_rad.is_empty() {
-            self.roller_inner.push(t, r.inner.force_n[0]);
-            self.roller_outer.push(t, r.outer.force_n[0]);
-            self.roller_bar.push(t, r.cage_bar_force_n[0]);
+            self.plots.roller(&self.row);
         }
     }
 
@@ -384,53 +502,47 @@ impl Duration {
 
 pub fn run(args: Args) -> Result<(), Failure> {
     let model = load_model(args.model.as_deref())?;
-    let output_step = if args.out.is_some() {
-        args.output_step.si()
-    } else {
-        0.0
-    };
+    let output_step = checked_output_step(args.output_step)?;
     let (mut sim, revolution) = prepare(
         &model,
         &args.operating.overrides(),
-        output_step,
+        if args.out.is_some() { output_step } else { 0.0 },
         args.tolerance,
     )?;
     if let Some(integrator) = args.integrator {
         sim.set_integrator_method(integrator.method());
     }
-    if let Some(path) = &args.resume {
-        let bytes =
-            std::fs::read(path).map_err(|e| Failure::Input(format!("{}: {e}", path.display())))?;
-        sim.restore(&bytes).map_err(|e| {
-            let hint = if e.to_string().contains("integrator method") {
-                " (resume with the --integrator of the run that wrote it)"
-            } else {
-                ""
-            };
-            Failure::Input(format!("{}: {e}{hint}", path.display()))
-        })?;
-    }
     let t_end = args.duration.end_time(revolution).map_err(Failure::Input)?;
-    let dir = args.out.as_deref().map(out_dir).transpose()?;
+    let kept = match &args.resume {
+        Some(path) => resume(&mut sim, path, t_end)?,
+        None => None,
+    };
+    let chunk = checkpoint_interval(&args, revolution)?.unwrap_or(t_end);
+    let dir = match &args.out {
+        Some(dir) => {
+            check_output_size(&sim, t_end, output_step, revolution, args.max_output)?;
+            Some(out_dir(dir)?)
+        }
+        None => None,
+    };
     let mut sinks = Sinks(
         dir.as_deref()
-            .map(FileSink::create)
-            .transpose()
-            .map_err(|e| Failure::Run(e.to_string()))?,
+            .map(|dir| FileSink::open(dir, kept, args.resume.is_some()))
+            .transpose()?,
     );
     let bar = progress_bar(args.quiet, t_end);
     let mut report = |t: f64| bar.set_position((1000.0 * t / t_end).min(1000.0) as u64);
-    let chunk = match (&args.checkpoint, revolution) {
-        (Some(_), Some(period)) => period,
-        _ => t_end,
-    };
     let mut result = Ok(sim.summary());
     while sim.time() < t_end && result.is_ok() {
         let target = (sim.time() + chunk).min(t_end);
         result = sim.run_until(target, &mut sinks, &mut report);
         if let (Some(path), Ok(_)) = (&args.checkpoint, &result) {
-            std::fs::write(path, sim.checkpoint())
-                .map_err(|e| Failure::Run(format!("{}: {e}", path.display())))?;
+            let mut note = Vec::new();
+            if let Some(files) = &mut sinks.0 {
+                files.flush().map_err(|e| Failure::Run(e.to_string()))?;
+                note = encode_note(&files.kept());
+            }
+            write_checkpoint(path, &sim.checkpoint_with(&note))?;
         }
     }
     bar.finish_and_clear();
@@ -459,6 +571,90 @@ pub fn run(args: Args) -> Result<(), Failure> {
     }
     print_summary(model.bearing.name(), &summary, &limits);
     Ok(())
+}
+
+/// The `--output-step` in seconds: at least the integrator's minimum step (no sample can
+/// resolve less), so never zero.
+fn checked_output_step(step: Quantity<Time>) -> Result<f64, Failure> {
+    let floor = DynamicsSettings::default().integrator.min_step_s;
+    match step.si() {
+        s if s >= floor => Ok(s),
+        s => Err(Failure::Input(format!(
+            "--output-step {s:e} s: must be at least the integrator's minimum step, {floor:e} s"
+        ))),
+    }
+}
+
+/// Restores the checkpoint at `path` into `sim` and returns its note on the output tables;
+/// refuses one that is damaged, foreign, or already at or past the end time `t_end` [s].
+fn resume(sim: &mut Simulation, path: &Path, t_end: f64) -> Result<Option<TablesNote>, Failure> {
+    let bytes =
+        std::fs::read(path).map_err(|e| Failure::Input(format!("{}: {e}", path.display())))?;
+    let note = sim.restore(&bytes).map_err(|e| {
+        let text = e.to_string();
+        let hint = if text.contains("integrator method") {
+            " (resume with the --integrator of the run that wrote it)"
+        } else if text.contains("output step") {
+            " (resume with the --output-step of the run that wrote it)"
+        } else {
+            ""
+        };
+        Failure::Input(format!("{}: {text}{hint}", path.display()))
+    })?;
+    if sim.time() >= t_end {
+        return Err(Failure::Input(format!(
+            "{}: the checkpoint is at t = {:.6e} s, at or past the end of --duration ({t_end:.6e} s): nothing to simulate; give a longer --duration",
+            path.display(),
+            sim.time()
+        )));
+    }
+    decode_note(&note).map_err(|e| Failure::Input(format!("{}: {e}", path.display())))
+}
+
+/// The simulated time between checkpoints [s]: `--checkpoint-interval`, else one cage
+/// revolution; `None` (only at the end) without `--checkpoint` or for rings starting at rest.
+fn checkpoint_interval(args: &Args, revolution: Option<f64>) -> Result<Option<f64>, Failure> {
+    if args.checkpoint.is_none() {
+        return Ok(None);
+    }
+    match (args.checkpoint_interval, revolution) {
+        (Some(Duration::CageRevolutions(_)), None) => Err(Failure::Input(
+            "--checkpoint-interval: the inner ring starts at rest (operating.speed_schedule): give the interval as a time, e.g. 10ms".into(),
+        )),
+        (Some(interval), _) => interval.end_time(revolution).map(Some).map_err(Failure::Input),
+        (None, period) => Ok(period),
+    }
+}
+
+/// Refuses (bad input) a run whose tables are estimated ([`estimated_table_bytes`]) to exceed
+/// `--max-output`, before anything is written.
+fn check_output_size(
+    sim: &Simulation,
+    t_end: f64,
+    output_step: f64,
+    revolution: Option<f64>,
+    max_output: ByteSize,
+) -> Result<(), Failure> {
+    let samples = (t_end / output_step).floor() + 1.0;
+    let revolutions = revolution.map_or(0.0, |period| t_end / period);
+    let size = estimated_table_bytes(table_values(samples, revolutions, sim.roller_count()));
+    if size <= max_output {
+        return Ok(());
+    }
+    Err(Failure::Input(format!(
+        "--out: {samples:.3e} samples (--output-step {output_step:e} s over {t_end:.6e} s) would take an estimated {size}, more than --max-output {max_output}: choose a larger --output-step or a shorter --duration, or raise --max-output"
+    )))
+}
+
+/// Writes a checkpoint through a temporary file renamed over `path`, so that a run killed
+/// while writing leaves the previous checkpoint intact.
+fn write_checkpoint(path: &Path, bytes: &[u8]) -> Result<(), Failure> {
+    let mut partial = path.as_os_str().to_owned();
+    partial.push(".partial");
+    let partial = PathBuf::from(partial);
+    std::fs::write(&partial, bytes)
+        .and_then(|_| std::fs::rename(&partial, path))
+        .map_err(|e| Failure::Run(format!("{}: {e}", path.display())))
 }
 
 fn progress_bar(quiet: bool, t_end: f64) -> ProgressBar {
