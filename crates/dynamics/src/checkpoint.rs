@@ -12,13 +12,7 @@ const VERSION: &[u8; 2] = b"06";
 /// Bytes of the checksum that closes a checkpoint.
 const CHECKSUM_BYTES: usize = 8;
 
-/// 64-bit FNV-1a hash of `bytes`: the set-up fingerprint and the checkpoint checksum (any one
-/// changed byte changes it).
-pub(crate) fn fnv1a(bytes: &[u8]) -> u64 {
-    bytes.iter().fold(0xcbf29ce484222325, |h, &b| {
-        (h ^ u64::from(b)).wrapping_mul(0x100000001b3)
-    })
-}
+pub(crate) use rolldyn_numerics::hash::fnv1a;
 
 /// Appends values to a byte buffer that starts with the tag and version.
 #[derive(Debug)]

@@ -11,12 +11,14 @@
 //! * [`maximize1d`]: golden-section search and Brent's method for the maximum of a function
 //!   of one variable.
 //! * [`step`]: the ADAMS cubic STEP ramp (SPEC §3.4), with the degenerate span defined.
+//! * [`hash`]: FNV-1a, the stable hash of fingerprints and checksums.
 //! * [`fastmath`]: branch-free, vectorisable `exp`, `ln`, `sin_cos` for hot loops.
 //! * [`avx512_twin!`]: a hot loop and its AVX-512F copy from one parameter list; [`vector_copies::LoopCopy`] for callers that dispatch themselves.
 
 pub mod brent;
 pub mod dense_lu;
 pub mod fastmath;
+pub mod hash;
 pub mod maximize1d;
 pub mod newton2d;
 pub mod root1d;

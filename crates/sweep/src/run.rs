@@ -2,13 +2,13 @@
 
 use crate::file::{SweepError, SweepFile, Variant};
 use rayon::prelude::*;
+use rolldyn_numerics::hash::fnv1a;
 use rolldyn_output::{Column, Values, csv_field, write_parquet_table};
 use rolldyn_plot::{Labels, Series, line_plot};
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::str::FromStr;
-use twox_hash::XxHash64;
 
 /// Run every n-th variant: shard `k/n` takes variants `i` with `i mod n = k − 1`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -92,7 +92,7 @@ pub fn fingerprint(sweep: &SweepFile, variant: &Variant, settings: &str) -> Stri
         sweep.analysis,
         sweep.duration
     );
-    format!("{:016x}", XxHash64::oneshot(0, inputs.as_bytes()))
+    format!("{:016x}", fnv1a(inputs.as_bytes()))
 }
 
 fn variant_file(out: &Path, name: &str) -> PathBuf {
