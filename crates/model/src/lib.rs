@@ -37,6 +37,25 @@ pub struct Model {
     pub startup: Option<Startup>,
     /// `[dynamics]`: contact parameters (SPEC Table 2.1) and cage drag; defaults where silent.
     pub dynamics: DynamicsInputs,
+    /// The file the model was read from, to name it in errors found after loading.
+    pub source: Source,
+}
+
+/// The name and text of a model file: errors found after loading (a missing oil property, an
+/// override out of bounds) name the file, line and key like load-time errors.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Source {
+    pub file: String,
+    text: String,
+}
+
+impl Source {
+    /// The error `reason` at dotted `key` of this file (at its line when the key is in it).
+    pub fn error(&self, key: &str, reason: impl Into<String>) -> ModelError {
+        let tree = DeTable::parse(&self.text).ok();
+        let span = tree.as_ref().and_then(|t| error::span_of(t, key));
+        located(&self.text, &self.file, key, span, reason.into())
+    }
 }
 
 use std::path::Path;
@@ -191,6 +210,10 @@ pub fn parse(text: &str, file: &str) -> Result<Model, ModelError> {
         schedules,
         startup: operation::startup(schema.startup.as_ref()).map_err(locate)?,
         dynamics: dynamics::dynamics(schema.dynamics.as_ref()).map_err(locate)?,
+        source: Source {
+            file: file.to_string(),
+            text: text.to_string(),
+        },
     })
 }
 

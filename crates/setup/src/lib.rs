@@ -19,6 +19,37 @@ use rolldyn_geometry::BearingModel;
 #[error("{0}")]
 pub struct SetupError(pub String);
 
+impl From<rolldyn_model::ModelError> for SetupError {
+    fn from(e: rolldyn_model::ModelError) -> Self {
+        Self(e.to_string())
+    }
+}
+
+impl From<rolldyn_geometry::GeometryError> for SetupError {
+    /// A flag out of its bounds: `--flag: reason`.
+    fn from(e: rolldyn_geometry::GeometryError) -> Self {
+        Self(e.to_string())
+    }
+}
+
+/// Checks the speed, outer-speed and oil-temperature overrides against the plausibility
+/// bounds of [`rolldyn_model::bounds`], naming the flag.
+fn check_overrides(
+    speeds: [(&str, Option<f64>); 2],
+    oil_temperature: Option<(&str, f64)>,
+    model: &rolldyn_model::Model,
+) -> Result<(), SetupError> {
+    for (flag, speed) in speeds {
+        if let Some(w) = speed {
+            rolldyn_model::bounds::check_speed(&model.bearing, flag, w)?;
+        }
+    }
+    if let Some((flag, t)) = oil_temperature {
+        rolldyn_model::bounds::check_temperature(flag, t)?;
+    }
+    Ok(())
+}
+
 /// Direction of the main radial load.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum LoadDirection {
@@ -74,22 +105,30 @@ fn conditions_with_temperature_at(
     use rolldyn_dynamics::conditions::SpeedLaw;
     let op = &model.operating;
     let sched = &model.schedules;
+    check_overrides(
+        [("--speed", args.speed), ("--outer-speed", args.outer_speed)],
+        args.oil_temperature.map(|t| ("--oil-temperature", t)),
+        model,
+    )?;
     let speed = match (args.speed.or(op.inner_speed), &sched.speed) {
         (Some(w), _) => SpeedLaw::Constant(w),
         (None, Some(points)) => SpeedLaw::Schedule(points.clone()),
         (None, None) => {
-            return Err(SetupError(
-                "no inner-ring speed: give --speed, operating.inner_speed or operating.speed_schedule"
-                    .into(),
-            ));
+            return Err(model.source.error(
+                "operating.inner_speed",
+                "no inner-ring speed: give --speed, operating.inner_speed or operating.speed_schedule",
+            ).into());
         }
     };
+    if args.radial_load.is_some_and(|l| !(l >= 0.0)) {
+        return Err(SetupError("--radial-load: must be ≥ 0".into()));
+    }
     let load = args.radial_load.or(op.radial_load);
     if load.is_none() && sched.loads.is_empty() && op.unbalance.is_none() {
-        return Err(SetupError(
-            "no radial load: give --radial-load, operating.radial_load, operating.unbalance or [[operating.loads]]"
-                .into(),
-        ));
+        return Err(model.source.error(
+            "operating.radial_load",
+            "no radial load: give --radial-load, operating.radial_load, operating.unbalance or [[operating.loads]]",
+        ).into());
     }
     let oil_t = match (
         args.oil_temperature,
@@ -101,18 +140,12 @@ fn conditions_with_temperature_at(
             rolldyn_dynamics::conditions::piecewise_linear(points, t_temperature)
         }
         (None, None, None) => {
-            return Err(SetupError(
-                "no oil temperature: give --oil-temperature, operating.temperatures.oil or operating.oil_temperature_schedule"
-                    .into(),
-            ));
+            return Err(model.source.error(
+                "operating.temperatures.oil",
+                "no oil temperature: give --oil-temperature, operating.temperatures.oil or operating.oil_temperature_schedule",
+            ).into());
         }
     };
-    let bad = |x: f64, smallest_ok: f64| x.is_nan() || x < smallest_ok;
-    if bad(load.unwrap_or(0.0), 0.0) || bad(oil_t, f64::MIN_POSITIVE) {
-        return Err(SetupError(
-            "--radial-load must be ≥ 0 and the temperature above 0 K".into(),
-        ));
-    }
     let mut c = OperatingConditions::new(0.0, 0.0);
     c.inner_speed = speed;
     let rotating = match args.load_direction {
@@ -299,17 +332,16 @@ fn bearing_and_oil(
     SetupError,
 > {
     let BearingModel::Cylindrical(bearing) = &model.bearing else {
-        return Err(SetupError(format!(
-            "{}: simulate needs a complete bearing (bearing.kind = \"cylindrical\")",
-            model.bearing.name()
-        )));
+        return Err(model
+            .source
+            .error(
+                "bearing.kind",
+                "simulate needs a complete bearing (bearing.kind = \"cylindrical\")",
+            )
+            .into());
     };
-    let lubrication = model.lubrication.as_ref().ok_or_else(|| {
-        SetupError(format!(
-            "{}: simulate needs a [lubricant] section",
-            model.bearing.name()
-        ))
-    })?;
+    let lubrication = quasi_static::lubrication(model, "simulate")?;
+    quasi_static::check_traction_oil(model, lubrication)?;
     Ok((bearing, lubrication))
 }
 

@@ -75,9 +75,7 @@ fn parse_temperatures(text: &str) -> Result<Temperatures, String> {
         let t = Quantity::<Temperature>::parse(value)
             .map_err(|e| e.to_string())?
             .si();
-        if t <= 0.0 {
-            return Err(format!("'{item}' is below absolute zero"));
-        }
+        rolldyn_model::bounds::check_temperature(part.trim(), t).map_err(|e| e.to_string())?;
         let slot = match part.trim() {
             "oil" => &mut parts.oil,
             "inner" => &mut parts.inner_ring,
@@ -226,6 +224,21 @@ impl SweepRow {
     }
 }
 
+/// A quasi-static failure: rejected input names the model file (exit 2), a failed iteration
+/// or contact solve is a failed run (exit 1).
+fn solve_failure(model: &Model, e: rolldyn_quasistatic::QsError) -> Failure {
+    use rolldyn_quasistatic::QsError::*;
+    match e {
+        InvalidInput(_) | Geometry(_) => {
+            Failure::Input(model.source.error("", e.to_string()).to_string())
+        }
+        Lubrication(_) => {
+            Failure::Input(model.source.error("lubricant", e.to_string()).to_string())
+        }
+        Contact(_) | NotConverged { .. } => Failure::Run(e.to_string()),
+    }
+}
+
 /// Solves the operating point, or the sweep, and prints it (text or JSON); a sweep also writes
 /// its table and plot to `--out`.
 pub fn run(args: Args) -> Result<(), Failure> {
@@ -249,7 +262,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
     let Some(swept) = swept(&args)? else {
         let result =
             rolldyn_quasistatic::solve_with_land_model(bearing, &base, &options, land.as_ref())
-                .map_err(|e| Failure::Run(e.to_string()))?;
+                .map_err(|e| solve_failure(&model, e))?;
         if args.json {
             return print_json(&result);
         }
