@@ -105,3 +105,9 @@ fn check_of_dev_zero_exits_2_quickly() {
     );
     assert!(start.elapsed().as_secs_f64() < 10.0);
 }
+
+#[test]
+fn a_valid_model_exits_0() {
+    let out = rolldyn(&["check", &common::example("2002834.toml"), "--json"]);
+    assert_eq!(common::json(&out)["name"], "2002834");
+}

@@ -664,7 +664,8 @@ pub(crate) fn run(
     // the residual the root finder tested: Φ over the moment sum of its first iterate
     let cage_residual = ws.balance.residual_n_m / ws.scale.unwrap_or(ws.balance.scale_n_m);
     let accepted = opts.cage_tolerance * BRACKETED_ROOT_SLACK;
-    if !(cage_residual.abs() <= accepted) && (wi != 0.0 || wo != 0.0) {
+    let passed = cage_residual.abs() <= accepted;
+    if !passed && (wi != 0.0 || wo != 0.0) {
         // the bracket can close on a jump of Φ (or an end of the speed range) without a root
         return Err(QsError::not_converged(
             "cage moment equation",

@@ -120,7 +120,7 @@ fn conditions_with_temperature_at(
             ).into());
         }
     };
-    if args.radial_load.is_some_and(|l| !(l >= 0.0)) {
+    if args.radial_load.is_some_and(|l| l.is_nan() || l < 0.0) {
         return Err(SetupError("--radial-load: must be ≥ 0".into()));
     }
     let load = args.radial_load.or(op.radial_load);

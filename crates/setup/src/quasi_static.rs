@@ -92,7 +92,7 @@ pub fn quasi_static_conditions(
         None,
         model,
     )?;
-    if overrides.radial_load.is_some_and(|l| !(l >= 0.0)) {
+    if overrides.radial_load.is_some_and(|l| l.is_nan() || l < 0.0) {
         return Err(SetupError("--radial-load: must be ≥ 0".into()));
     }
     let inner = overrides.speed.or(op.inner_speed).ok_or_else(|| {

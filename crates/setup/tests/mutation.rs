@@ -16,7 +16,7 @@ use std::path::{Path, PathBuf};
 /// Mutants per example model.
 const MUTANTS_PER_MODEL: usize = 300;
 /// Every this many loadable mutants of a complete bearing are also solved quasi-statically.
-const SKID_EVERY: usize = 15;
+const SKID_EVERY: usize = 3;
 
 const EXAMPLES: [&str; 4] = [
     "2002834.toml",
@@ -229,8 +229,8 @@ fn check_skid(r: &SkidResult) -> Result<(), String> {
     finite("skid", &values)
 }
 
-/// What the command line would do with a mutant: 0 (accepted), 2 (bad input) or 1 (a
-/// numerical failure with its diagnosis); an `Err` is a broken guarantee.
+/// What the command line would do with a mutant: 0 (accepted) or 2 (bad input); an `Err` is a
+/// broken guarantee (a non-finite number, a numerical failure of an accepted model).
 fn run_mutant(text: &str, file: &str, skid: bool) -> Result<u8, String> {
     let Ok(model) = rolldyn_model::parse(text, file) else {
         return Ok(2);
@@ -252,14 +252,9 @@ fn run_mutant(text: &str, file: &str, skid: bool) -> Result<u8, String> {
         Ok(r) if r.converged => check_skid(&r).map(|()| 0),
         Ok(r) => Err(format!("a result flagged not converged: {:?}", r.residuals)),
         Err(QsError::InvalidInput(_) | QsError::Geometry(_) | QsError::Lubrication(_)) => Ok(2),
-        Err(e @ (QsError::NotConverged { .. } | QsError::Contact(_))) => {
-            let diagnosis = e.to_string();
-            if diagnosis.is_empty() {
-                Err("a numerical failure without diagnosis".into())
-            } else {
-                Ok(1)
-            }
-        }
+        Err(e @ (QsError::NotConverged { .. } | QsError::Contact(_))) => Err(format!(
+            "a plausible mutant failed numerically (exit 1): {e}"
+        )),
     }
 }
 
@@ -289,8 +284,8 @@ fn mutants_of_the_examples_never_panic_nor_print_non_finite_numbers() {
         }
     }
     println!(
-        "mutants: {} accepted, {} rejected as bad input, {} numerical failures; {skids} skid points",
-        counts[0], counts[2], counts[1]
+        "mutants: {} accepted, {} rejected as bad input; {skids} skid points",
+        counts[0], counts[2]
     );
     assert!(broken.is_empty(), "{}", broken.join("\n"));
     assert!(counts.iter().sum::<usize>() >= 1000);

@@ -55,10 +55,10 @@ fn a_missing_oil_property_names_the_file_and_the_lubricant() {
         .0;
     assert!(m.starts_with(&format!("m.toml:{line}:")), "{m}");
     assert!(m.contains("lubricant — ") && m.contains("density"), "{m}");
-    let m = rolldyn_setup::prepare(&model, &Overrides::default(), 1e-4, None)
-        .err()
-        .expect("no density")
-        .0;
+    let Err(e) = rolldyn_setup::prepare(&model, &Overrides::default(), 1e-4, None) else {
+        panic!("an oil without density sets up");
+    };
+    let m = e.0;
     assert!(m.starts_with(&format!("m.toml:{line}:")), "{m}");
 }
 
