@@ -32,22 +32,32 @@ impl From<rolldyn_geometry::GeometryError> for SetupError {
     }
 }
 
-/// Checks the speed, outer-speed and oil-temperature overrides against the plausibility
-/// bounds of [`rolldyn_model::bounds`], naming the flag.
-fn check_overrides(
-    speeds: [(&str, Option<f64>); 2],
-    oil_temperature: Option<(&str, f64)>,
-    model: &rolldyn_model::Model,
-) -> Result<(), SetupError> {
-    for (flag, speed) in speeds {
-        if let Some(w) = speed {
-            rolldyn_model::bounds::check_speed(&model.bearing, flag, w)?;
+/// Command-line values checked against the plausibility bounds of [`rolldyn_model::bounds`]
+/// (a radial load must not be negative), SI; an error names the flag.
+#[derive(Default)]
+struct FlagValues {
+    speed: Option<f64>,
+    outer_speed: Option<f64>,
+    radial_load: Option<f64>,
+    oil_temperature: Option<f64>,
+}
+
+impl FlagValues {
+    fn check(&self, model: &rolldyn_model::Model) -> Result<(), SetupError> {
+        use rolldyn_model::bounds::{check_speed, check_temperature};
+        for (flag, speed) in [("--speed", self.speed), ("--outer-speed", self.outer_speed)] {
+            if let Some(w) = speed {
+                check_speed(&model.bearing, flag, w)?;
+            }
         }
+        if self.radial_load.is_some_and(|l| l.is_nan() || l < 0.0) {
+            return Err(SetupError("--radial-load: must be ≥ 0".into()));
+        }
+        if let Some(t) = self.oil_temperature {
+            check_temperature("--oil-temperature", t)?;
+        }
+        Ok(())
     }
-    if let Some((flag, t)) = oil_temperature {
-        rolldyn_model::bounds::check_temperature(flag, t)?;
-    }
-    Ok(())
 }
 
 /// Direction of the main radial load.
@@ -105,11 +115,13 @@ fn conditions_with_temperature_at(
     use rolldyn_dynamics::conditions::SpeedLaw;
     let op = &model.operating;
     let sched = &model.schedules;
-    check_overrides(
-        [("--speed", args.speed), ("--outer-speed", args.outer_speed)],
-        args.oil_temperature.map(|t| ("--oil-temperature", t)),
-        model,
-    )?;
+    FlagValues {
+        speed: args.speed,
+        outer_speed: args.outer_speed,
+        radial_load: args.radial_load,
+        oil_temperature: args.oil_temperature,
+    }
+    .check(model)?;
     let speed = match (args.speed.or(op.inner_speed), &sched.speed) {
         (Some(w), _) => SpeedLaw::Constant(w),
         (None, Some(points)) => SpeedLaw::Schedule(points.clone()),
@@ -120,9 +132,6 @@ fn conditions_with_temperature_at(
             ).into());
         }
     };
-    if args.radial_load.is_some_and(|l| l.is_nan() || l < 0.0) {
-        return Err(SetupError("--radial-load: must be ≥ 0".into()));
-    }
     let load = args.radial_load.or(op.radial_load);
     if load.is_none() && sched.loads.is_empty() && op.unbalance.is_none() {
         return Err(model.source.error(

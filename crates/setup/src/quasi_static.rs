@@ -84,17 +84,13 @@ pub fn quasi_static_conditions(
 ) -> Result<QuasiStaticConditions, SetupError> {
     let op = &model.operating;
     let lubrication = lubrication(model, "skid")?;
-    crate::check_overrides(
-        [
-            ("--speed", overrides.speed),
-            ("--outer-speed", overrides.outer_speed),
-        ],
-        None,
-        model,
-    )?;
-    if overrides.radial_load.is_some_and(|l| l.is_nan() || l < 0.0) {
-        return Err(SetupError("--radial-load: must be ≥ 0".into()));
+    crate::FlagValues {
+        speed: overrides.speed,
+        outer_speed: overrides.outer_speed,
+        radial_load: overrides.radial_load,
+        ..Default::default()
     }
+    .check(model)?;
     let inner = overrides.speed.or(op.inner_speed).ok_or_else(|| {
         model.source.error(
             "operating.inner_speed",

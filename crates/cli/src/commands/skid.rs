@@ -75,7 +75,8 @@ fn parse_temperatures(text: &str) -> Result<Temperatures, String> {
         let t = Quantity::<Temperature>::parse(value)
             .map_err(|e| e.to_string())?
             .si();
-        rolldyn_model::bounds::check_temperature(part.trim(), t).map_err(|e| e.to_string())?;
+        rolldyn_model::bounds::check_temperature(&format!("--temperatures {}", part.trim()), t)
+            .map_err(|e| e.to_string())?;
         let slot = match part.trim() {
             "oil" => &mut parts.oil,
             "inner" => &mut parts.inner_ring,
