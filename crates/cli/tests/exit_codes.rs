@@ -111,3 +111,20 @@ fn a_valid_model_exits_0() {
     let out = rolldyn(&["check", &common::example("2002834.toml"), "--json"]);
     assert_eq!(common::json(&out)["name"], "2002834");
 }
+
+#[test]
+fn flag_values_out_of_bounds_exit_2_naming_the_flag() {
+    let model = common::example("2002834.toml");
+    for args in [
+        vec!["check", &model, "--speed", "1e30rpm"],
+        vec!["skid", &model, "--speed", "1000rpm..1e30rpm:1e29rpm"],
+        vec!["skid", &model, "--radial-load=-5N"],
+    ] {
+        let (code, line) = run(&args);
+        assert_eq!(code, 2, "{args:?}: {line}");
+        assert!(
+            line.contains("--speed:") || line.contains("--radial-load:"),
+            "{line}"
+        );
+    }
+}

@@ -34,16 +34,16 @@ impl From<rolldyn_geometry::GeometryError> for SetupError {
 
 /// Command-line values checked against the plausibility bounds of [`rolldyn_model::bounds`]
 /// (a radial load must not be negative), SI; an error names the flag.
-#[derive(Default)]
-struct FlagValues {
-    speed: Option<f64>,
-    outer_speed: Option<f64>,
-    radial_load: Option<f64>,
-    oil_temperature: Option<f64>,
+#[derive(Debug, Clone, Copy, Default)]
+pub struct FlagValues {
+    pub speed: Option<f64>,
+    pub outer_speed: Option<f64>,
+    pub radial_load: Option<f64>,
+    pub oil_temperature: Option<f64>,
 }
 
 impl FlagValues {
-    fn check(&self, model: &rolldyn_model::Model) -> Result<(), SetupError> {
+    pub fn check(&self, model: &rolldyn_model::Model) -> Result<(), SetupError> {
         use rolldyn_model::bounds::{check_speed, check_temperature};
         for (flag, speed) in [("--speed", self.speed), ("--outer-speed", self.outer_speed)] {
             if let Some(w) = speed {

@@ -109,6 +109,36 @@ fn single<D: rolldyn_units::Dim>(range: &Option<QuantityRange<D>>) -> Option<f64
     values(range).and_then(|v| v.first().copied())
 }
 
+/// Every value of a swept flag within the plausibility bounds (the first one is checked with
+/// the operating point).
+fn check_every_flag_value(args: &Args, model: &Model) -> Result<(), Failure> {
+    let speeds = values(&args.speed)
+        .unwrap_or_default()
+        .into_iter()
+        .map(|w| rolldyn_setup::FlagValues {
+            speed: Some(w),
+            ..Default::default()
+        });
+    let outer = values(&args.outer_speed)
+        .unwrap_or_default()
+        .into_iter()
+        .map(|w| rolldyn_setup::FlagValues {
+            outer_speed: Some(w),
+            ..Default::default()
+        });
+    let loads = values(&args.radial_load)
+        .unwrap_or_default()
+        .into_iter()
+        .map(|f| rolldyn_setup::FlagValues {
+            radial_load: Some(f),
+            ..Default::default()
+        });
+    for flags in speeds.chain(outer).chain(loads) {
+        flags.check(model)?;
+    }
+    Ok(())
+}
+
 /// The operating point of the model file, overridden by the flags (first value of a sweep).
 fn conditions(args: &Args, model: &Model) -> Result<QuasiStaticConditions, Failure> {
     let overrides = QuasiStaticOverrides {
@@ -250,6 +280,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
             model.bearing.name()
         )));
     };
+    check_every_flag_value(&args, &model)?;
     let base = conditions(&args, &model)?;
     let options = QuasiStaticOptions::default();
     let land = cage_land_model(
