@@ -86,7 +86,11 @@ fn main() -> ExitCode {
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(failure) => {
-            eprintln!("rolldyn: {failure}");
+            // one readable line even when the failure quotes a huge bad value
+            eprintln!(
+                "rolldyn: {}",
+                rolldyn_model::shorten_long_words(&failure.to_string())
+            );
             ExitCode::from(failure.exit_code())
         }
     }

@@ -116,7 +116,7 @@ impl CylindricalRollerBearing {
                 ),
             ));
         }
-        Ok(())
+        self.validate_plausibility()
     }
 
     fn validate_fit(&self) -> Result<(), GeometryError> {

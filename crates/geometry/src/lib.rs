@@ -13,6 +13,7 @@ mod kinematics;
 mod mass;
 mod material;
 mod model;
+pub mod plausible;
 pub mod profile;
 mod ring;
 mod roller;

@@ -34,6 +34,7 @@ impl Materials {
                     "must lie in [0, 0.5)",
                 ));
             }
+            rolldyn_geometry::plausible::check_material(&format!("materials.{name}"), &material)?;
             if let Some(h) = material.meyer_hardness {
                 require_positive(&key("meyer_hardness"), h)?;
             }
@@ -69,6 +70,7 @@ fn mass_properties(
         return Ok(computed);
     };
     require_positive(&format!("{key}.mass"), mass)?;
+    rolldyn_geometry::plausible::check_mass(&format!("{key}.mass"), mass, computed.mass)?;
     let scaled = computed.scaled(mass / computed.mass);
     Ok(MassProperties {
         mass,
@@ -316,13 +318,18 @@ fn design_contact(file: &ModelFile, materials: &Materials) -> Result<DesignConta
             ));
         }
     };
-    let key = if inner {
-        "inner_ring.material"
-    } else {
-        "outer_ring.material"
-    };
-    let ring_material = materials.get(section.material.as_deref(), key)?;
+    let ring = if inner { "inner_ring" } else { "outer_ring" };
+    let ring_material = materials.get(section.material.as_deref(), &format!("{ring}.material"))?;
     let roller_material = materials.get(file.roller.material.as_deref(), "roller.material")?;
+    let raceway_key = format!("{ring}.raceway_diameter");
+    // each diameter checked on its own, so that the error blames the value that is wrong
+    require_positive("roller.diameter", file.roller.diameter.si())?;
+    require_positive(&raceway_key, section.raceway_diameter.si())?;
+    let conformity = if inner {
+        Conformity::ConvexConvex
+    } else {
+        Conformity::ConvexConcave
+    };
     Ok(DesignContact {
         reduced_modulus: rolldyn_contact::hertz::reduced_modulus(
             roller_material.youngs_modulus,
@@ -333,21 +340,9 @@ fn design_contact(file: &ModelFile, materials: &Materials) -> Result<DesignConta
         reduced_radius: rolldyn_contact::hertz::reduced_radius(
             0.5 * file.roller.diameter.si(),
             0.5 * section.raceway_diameter.si(),
-            if inner {
-                Conformity::ConvexConvex
-            } else {
-                Conformity::ConvexConcave
-            },
+            conformity,
         )
-        .map_err(|e| {
-            GeometryError::new(
-                format!(
-                    "{}.raceway_diameter",
-                    if inner { "inner_ring" } else { "outer_ring" }
-                ),
-                e.to_string(),
-            )
-        })?,
+        .map_err(|e| GeometryError::new(raceway_key, e.to_string()))?,
     })
 }
 

@@ -18,16 +18,43 @@ pub struct ModelError {
 
 impl fmt::Display for ModelError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}", self.file)?;
-        if let Some((line, column)) = self.position {
-            write!(f, ":{line}:{column}")?;
+        let mut line = self.file.clone();
+        if let Some((row, column)) = self.position {
+            line.push_str(&format!(":{row}:{column}"));
         }
         if self.key.is_empty() {
-            write!(f, ": {}", self.reason)
+            line.push_str(&format!(": {}", self.reason));
         } else {
-            write!(f, ": {} — {}", self.key, self.reason)
+            line.push_str(&format!(": {} — {}", self.key, self.reason));
         }
+        f.write_str(&shorten_long_words(&line))
     }
+}
+
+/// Longest word (run without whitespace) an error message quotes in full.
+pub const MAX_QUOTED_CHARS: usize = 80;
+
+/// `text` with every word longer than [`MAX_QUOTED_CHARS`] cut to its start and its length,
+/// so that an error quoting a huge bad value stays one readable line.
+pub fn shorten_long_words(text: &str) -> String {
+    let mut out = String::with_capacity(text.len().min(4 * MAX_QUOTED_CHARS));
+    let mut rest = text;
+    while let Some(start) = rest.find(|c: char| !c.is_whitespace()) {
+        out.push_str(&rest[..start]);
+        rest = &rest[start..];
+        let end = rest.find(char::is_whitespace).unwrap_or(rest.len());
+        let word = &rest[..end];
+        let chars = word.chars().count();
+        if chars > MAX_QUOTED_CHARS {
+            let head: String = word.chars().take(MAX_QUOTED_CHARS / 2).collect();
+            out.push_str(&format!("{head}… ({chars} characters)"));
+        } else {
+            out.push_str(word);
+        }
+        rest = &rest[end..];
+    }
+    out.push_str(rest);
+    out
 }
 
 impl std::error::Error for ModelError {}
@@ -102,6 +129,18 @@ pub(crate) fn line_column(text: &str, offset: usize) -> (usize, usize) {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn long_words_are_cut() {
+        let long = "9".repeat(1000);
+        let short = shorten_long_words(&format!("a '{long} mm' b"));
+        assert!(short.len() < 2 * MAX_QUOTED_CHARS, "{short}");
+        assert!(short.starts_with("a '999") && short.ends_with("(1001 characters) mm' b"));
+        assert_eq!(
+            shorten_long_words(" keep  these words "),
+            " keep  these words "
+        );
+    }
 
     #[test]
     fn keys_split_with_indices() {

@@ -6,6 +6,7 @@
 //! assert_eq!(model.bearing.name(), "2002834");
 //! ```
 
+pub mod bounds;
 mod convert;
 mod dynamics;
 mod error;
@@ -15,7 +16,7 @@ pub mod schema;
 
 pub use convert::DEFAULT_SLICES;
 pub use dynamics::{DynamicsInputs, EndFrictionLaw, EndPairInputs, PairInputs};
-pub use error::ModelError;
+pub use error::{MAX_QUOTED_CHARS, ModelError, shorten_long_words};
 pub use operation::{
     DEFAULT_STARTUP_REVOLUTIONS, FixedLoad, FrozenPoint, Lubrication, Operating, Schedules,
     Startup, Temperatures,
@@ -36,6 +37,25 @@ pub struct Model {
     pub startup: Option<Startup>,
     /// `[dynamics]`: contact parameters (SPEC Table 2.1) and cage drag; defaults where silent.
     pub dynamics: DynamicsInputs,
+    /// The file the model was read from, to name it in errors found after loading.
+    pub source: Source,
+}
+
+/// The name and text of a model file: errors found after loading (a missing oil property, an
+/// override out of bounds) name the file, line and key like load-time errors.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Source {
+    pub file: String,
+    text: String,
+}
+
+impl Source {
+    /// The error `reason` at dotted `key` of this file (at its line when the key is in it).
+    pub fn error(&self, key: &str, reason: impl Into<String>) -> ModelError {
+        let tree = DeTable::parse(&self.text).ok();
+        let span = tree.as_ref().and_then(|t| error::span_of(t, key));
+        located(&self.text, &self.file, key, span, reason.into())
+    }
 }
 
 use std::path::Path;
@@ -64,15 +84,43 @@ pub fn load(path: &Path) -> Result<Model, ModelError> {
 /// The text of the file at `path` and its name for errors.
 fn read(path: &Path) -> Result<(String, String), ModelError> {
     let file = path.display().to_string();
-    match std::fs::read_to_string(path) {
+    match read_input_file(path) {
         Ok(text) => Ok((text, file)),
-        Err(e) => Err(ModelError {
+        Err(reason) => Err(ModelError {
             file,
             position: None,
             key: String::new(),
-            reason: format!("cannot read the file: {e}"),
+            reason,
         }),
     }
+}
+
+/// Largest input file rolldyn reads (model, sweep, journal and oil files), bytes.
+pub const MAX_INPUT_FILE_BYTES: u64 = 8 << 20;
+
+/// The UTF-8 text of an input file of at most [`MAX_INPUT_FILE_BYTES`]; the error says why
+/// not (without the path, which the caller names).
+pub fn read_input_file(path: &Path) -> Result<String, String> {
+    use std::io::Read;
+    let cannot = |e: std::io::Error| format!("cannot read the file: {e}");
+    let mut bytes = Vec::new();
+    std::fs::File::open(path)
+        .map_err(cannot)?
+        .take(MAX_INPUT_FILE_BYTES + 1)
+        .read_to_end(&mut bytes)
+        .map_err(cannot)?;
+    if bytes.len() as u64 > MAX_INPUT_FILE_BYTES {
+        return Err(format!(
+            "the file is larger than {} MiB: not a rolldyn input file",
+            MAX_INPUT_FILE_BYTES >> 20
+        ));
+    }
+    String::from_utf8(bytes).map_err(|e| {
+        format!(
+            "not UTF-8 text (invalid byte at offset {})",
+            e.utf8_error().valid_up_to()
+        )
+    })
 }
 
 /// A TOML document deserialised into a schema `T`, kept with its spans so that later checks
@@ -153,14 +201,43 @@ pub fn parse(text: &str, file: &str) -> Result<Model, ModelError> {
             )));
         }
     }
+    let operating = operation::operating(schema.operating.as_ref()).map_err(locate)?;
+    check_speeds(&bearing, &operating, &schedules).map_err(locate)?;
     Ok(Model {
         bearing,
         lubrication: operation::lubrication(schema.lubricant.as_ref(), file).map_err(locate)?,
-        operating: operation::operating(schema.operating.as_ref()).map_err(locate)?,
+        operating,
         schedules,
         startup: operation::startup(schema.startup.as_ref()).map_err(locate)?,
         dynamics: dynamics::dynamics(schema.dynamics.as_ref()).map_err(locate)?,
+        source: Source {
+            file: file.to_string(),
+            text: text.to_string(),
+        },
     })
+}
+
+/// The speeds of `[operating]` and its speed schedule within [`bounds::check_speed`].
+fn check_speeds(
+    bearing: &BearingModel,
+    operating: &Operating,
+    schedules: &Schedules,
+) -> Result<(), rolldyn_geometry::GeometryError> {
+    let given = [
+        ("operating.inner_speed", operating.inner_speed),
+        ("operating.outer_speed", operating.outer_speed),
+    ];
+    let scheduled = schedules
+        .speed
+        .iter()
+        .flatten()
+        .map(|&(_, w)| ("operating.speed_schedule.speed", Some(w)));
+    for (key, speed) in given.into_iter().chain(scheduled) {
+        if let Some(w) = speed {
+            bounds::check_speed(bearing, key, w)?;
+        }
+    }
+    Ok(())
 }
 
 fn syntax_message(e: &toml::de::Error) -> String {

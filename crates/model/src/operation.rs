@@ -119,14 +119,8 @@ pub(crate) fn operating(section: Option<&OperatingSection>) -> Result<Operating,
     let kelvin = |q: Option<rolldyn_units::Quantity<rolldyn_units::Temperature>>, key: &str| {
         q.map(|q| q.si())
             .map(|k| {
-                if k > 0.0 {
-                    Ok(k)
-                } else {
-                    Err(GeometryError::new(
-                        format!("operating.temperatures.{key}"),
-                        "is below absolute zero",
-                    ))
-                }
+                crate::bounds::check_temperature(&format!("operating.temperatures.{key}"), k)
+                    .map(|()| k)
             })
             .transpose()
     };
@@ -291,11 +285,8 @@ pub(crate) fn schedules(section: Option<&OperatingSection>) -> Result<Schedules,
         .as_ref()
         .map(|p| {
             let values: Vec<f64> = p.oil.iter().map(|q| q.si()).collect();
-            if values.iter().any(|&k| k <= 0.0) {
-                return Err(GeometryError::new(
-                    "operating.oil_temperature_schedule.oil",
-                    "is below absolute zero",
-                ));
+            for &k in &values {
+                crate::bounds::check_temperature("operating.oil_temperature_schedule.oil", k)?;
             }
             schedule("operating.oil_temperature_schedule", "oil", &p.time, values)
         })
@@ -395,11 +386,8 @@ pub(crate) fn lubrication(
                 .parent()
                 .unwrap_or(Path::new("."))
                 .join(file);
-            let text = std::fs::read_to_string(&path).map_err(|e| {
-                GeometryError::new(
-                    "lubricant.file",
-                    format!("cannot read {}: {e}", path.display()),
-                )
+            let text = crate::read_input_file(&path).map_err(|e| {
+                GeometryError::new("lubricant.file", format!("{}: {e}", path.display()))
             })?;
             toml::from_str(&text).map_err(|e| {
                 GeometryError::new(

@@ -34,7 +34,8 @@ pub enum LandMomentArm {
 #[derive(Debug, Clone, PartialEq)]
 pub struct QuasiStaticOptions {
     /// Relative tolerance of the cage moment equation Φ(ε₀) = 0: |Φ| ≤ tol·(sum of the
-    /// magnitudes of all moments on the cage). Default 1e-6 (SPEC §5.6).
+    /// magnitudes of all moments on the cage). Default 1e-6 (SPEC §5.6). A point is returned
+    /// only if its final residual is within [`crate::BRACKETED_ROOT_SLACK`] × this.
     pub cage_tolerance: f64,
     /// Relative tolerance of each roller moment equation ΣT(ε_w) = 0, scaled by the moments of
     /// the raceway normal loads at the roller radius (R_w·(Q_i + Q_o + Q_bar)). Default 1e-10.

@@ -154,7 +154,8 @@ impl PowerBreakdown {
 /// Final residuals of the nested iterations.
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
 pub struct Residuals {
-    /// Cage moment Φ / (sum of the moment magnitudes).
+    /// Cage moment Φ / (sum of the moment magnitudes at the first iterate): the residual the
+    /// cage iteration tests against `cage_tolerance`.
     pub cage_moment_relative: f64,
     /// Largest roller moment residual / (R_w ΣQ).
     pub roller_moment_relative: f64,
@@ -229,8 +230,11 @@ pub struct SkidResult {
     pub solve_time_s: f64,
     /// Iteration counts.
     pub iterations: Iterations,
-    /// All iterations converged (a failure is returned as an error, so this is true for a
-    /// returned result).
+    /// Every residual test passed: the cage moment `|Φ|/scale ≤ 10 × cage_tolerance` (1e-5,
+    /// [`Residuals::cage_moment_relative`], [`crate::BRACKETED_ROOT_SLACK`]), each
+    /// roller moment to `roller_tolerance` and the load distribution to `load_tolerance`
+    /// ([`crate::QuasiStaticOptions`]). A point failing one is returned as an error, so this is
+    /// true for a returned result.
     pub converged: bool,
     /// Final residuals.
     pub residuals: Residuals,

@@ -19,6 +19,47 @@ use rolldyn_geometry::BearingModel;
 #[error("{0}")]
 pub struct SetupError(pub String);
 
+impl From<rolldyn_model::ModelError> for SetupError {
+    fn from(e: rolldyn_model::ModelError) -> Self {
+        Self(e.to_string())
+    }
+}
+
+impl From<rolldyn_geometry::GeometryError> for SetupError {
+    /// A flag out of its bounds: `--flag: reason`.
+    fn from(e: rolldyn_geometry::GeometryError) -> Self {
+        Self(e.to_string())
+    }
+}
+
+/// Command-line values checked against the plausibility bounds of [`rolldyn_model::bounds`]
+/// (a radial load must not be negative), SI; an error names the flag.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct FlagValues {
+    pub speed: Option<f64>,
+    pub outer_speed: Option<f64>,
+    pub radial_load: Option<f64>,
+    pub oil_temperature: Option<f64>,
+}
+
+impl FlagValues {
+    pub fn check(&self, model: &rolldyn_model::Model) -> Result<(), SetupError> {
+        use rolldyn_model::bounds::{check_speed, check_temperature};
+        for (flag, speed) in [("--speed", self.speed), ("--outer-speed", self.outer_speed)] {
+            if let Some(w) = speed {
+                check_speed(&model.bearing, flag, w)?;
+            }
+        }
+        if self.radial_load.is_some_and(|l| l.is_nan() || l < 0.0) {
+            return Err(SetupError("--radial-load: must be ≥ 0".into()));
+        }
+        if let Some(t) = self.oil_temperature {
+            check_temperature("--oil-temperature", t)?;
+        }
+        Ok(())
+    }
+}
+
 /// Direction of the main radial load.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum LoadDirection {
@@ -74,22 +115,29 @@ fn conditions_with_temperature_at(
     use rolldyn_dynamics::conditions::SpeedLaw;
     let op = &model.operating;
     let sched = &model.schedules;
+    FlagValues {
+        speed: args.speed,
+        outer_speed: args.outer_speed,
+        radial_load: args.radial_load,
+        oil_temperature: args.oil_temperature,
+    }
+    .check(model)?;
     let speed = match (args.speed.or(op.inner_speed), &sched.speed) {
         (Some(w), _) => SpeedLaw::Constant(w),
         (None, Some(points)) => SpeedLaw::Schedule(points.clone()),
         (None, None) => {
-            return Err(SetupError(
-                "no inner-ring speed: give --speed, operating.inner_speed or operating.speed_schedule"
-                    .into(),
-            ));
+            return Err(model.source.error(
+                "operating.inner_speed",
+                "no inner-ring speed: give --speed, operating.inner_speed or operating.speed_schedule",
+            ).into());
         }
     };
     let load = args.radial_load.or(op.radial_load);
     if load.is_none() && sched.loads.is_empty() && op.unbalance.is_none() {
-        return Err(SetupError(
-            "no radial load: give --radial-load, operating.radial_load, operating.unbalance or [[operating.loads]]"
-                .into(),
-        ));
+        return Err(model.source.error(
+            "operating.radial_load",
+            "no radial load: give --radial-load, operating.radial_load, operating.unbalance or [[operating.loads]]",
+        ).into());
     }
     let oil_t = match (
         args.oil_temperature,
@@ -101,18 +149,12 @@ fn conditions_with_temperature_at(
             rolldyn_dynamics::conditions::piecewise_linear(points, t_temperature)
         }
         (None, None, None) => {
-            return Err(SetupError(
-                "no oil temperature: give --oil-temperature, operating.temperatures.oil or operating.oil_temperature_schedule"
-                    .into(),
-            ));
+            return Err(model.source.error(
+                "operating.temperatures.oil",
+                "no oil temperature: give --oil-temperature, operating.temperatures.oil or operating.oil_temperature_schedule",
+            ).into());
         }
     };
-    let bad = |x: f64, smallest_ok: f64| x.is_nan() || x < smallest_ok;
-    if bad(load.unwrap_or(0.0), 0.0) || bad(oil_t, f64::MIN_POSITIVE) {
-        return Err(SetupError(
-            "--radial-load must be ≥ 0 and the temperature above 0 K".into(),
-        ));
-    }
     let mut c = OperatingConditions::new(0.0, 0.0);
     c.inner_speed = speed;
     let rotating = match args.load_direction {
@@ -299,17 +341,16 @@ fn bearing_and_oil(
     SetupError,
 > {
     let BearingModel::Cylindrical(bearing) = &model.bearing else {
-        return Err(SetupError(format!(
-            "{}: simulate needs a complete bearing (bearing.kind = \"cylindrical\")",
-            model.bearing.name()
-        )));
+        return Err(model
+            .source
+            .error(
+                "bearing.kind",
+                "simulate needs a complete bearing (bearing.kind = \"cylindrical\")",
+            )
+            .into());
     };
-    let lubrication = model.lubrication.as_ref().ok_or_else(|| {
-        SetupError(format!(
-            "{}: simulate needs a [lubricant] section",
-            model.bearing.name()
-        ))
-    })?;
+    let lubrication = quasi_static::lubrication(model, "simulate")?;
+    quasi_static::check_traction_oil(model, lubrication)?;
     Ok((bearing, lubrication))
 }
 

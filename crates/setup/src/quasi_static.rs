@@ -45,12 +45,21 @@ pub struct QuasiStaticOverrides {
 
 /// The `[lubricant]` section, or an error naming the command that needs it.
 pub fn lubrication<'m>(model: &'m Model, command: &str) -> Result<&'m Lubrication, SetupError> {
-    model.lubrication.as_ref().ok_or_else(|| {
-        SetupError(format!(
-            "{}: {command} needs a [lubricant] section",
-            model.bearing.name()
-        ))
-    })
+    Ok(model.lubrication.as_ref().ok_or_else(|| {
+        model.source.error(
+            "lubricant",
+            format!("{command} needs a [lubricant] section"),
+        )
+    })?)
+}
+
+/// Checks that the oil of `model` has every property the traction model (Muraki EHL) needs:
+/// a missing one is bad input named at `[lubricant]`, not a failure of the run.
+pub fn check_traction_oil(model: &Model, lubrication: &Lubrication) -> Result<(), SetupError> {
+    lubrication
+        .traction_model()
+        .map(|_| ())
+        .map_err(|e| model.source.error("lubricant", e.to_string()).into())
 }
 
 /// Muraki traction with the model's rheology, no mixed-friction blend, automatic film formula
@@ -75,18 +84,32 @@ pub fn quasi_static_conditions(
 ) -> Result<QuasiStaticConditions, SetupError> {
     let op = &model.operating;
     let lubrication = lubrication(model, "skid")?;
+    crate::FlagValues {
+        speed: overrides.speed,
+        outer_speed: overrides.outer_speed,
+        radial_load: overrides.radial_load,
+        ..Default::default()
+    }
+    .check(model)?;
     let inner = overrides.speed.or(op.inner_speed).ok_or_else(|| {
-        SetupError("no inner-ring speed: give --speed or operating.inner_speed".into())
+        model.source.error(
+            "operating.inner_speed",
+            "no inner-ring speed: give --speed or operating.inner_speed",
+        )
     })?;
     let outer = overrides.outer_speed.or(op.outer_speed).unwrap_or(0.0);
     let load = overrides.radial_load.or(op.radial_load).ok_or_else(|| {
-        SetupError("no radial load: give --radial-load or operating.radial_load".into())
+        model.source.error(
+            "operating.radial_load",
+            "no radial load: give --radial-load or operating.radial_load",
+        )
     })?;
     let given = &overrides.temperatures;
     let file = &op.temperatures;
     let oil = given.oil.or(file.oil).ok_or_else(|| {
-        SetupError(
-            "no oil temperature: give --temperatures oil=… or operating.temperatures.oil".into(),
+        model.source.error(
+            "operating.temperatures.oil",
+            "no oil temperature: give --temperatures oil=… or operating.temperatures.oil",
         )
     })?;
     let mut c = QuasiStaticConditions::new(inner, outer, load, lubrication.oil.clone(), oil);
@@ -101,7 +124,10 @@ pub fn quasi_static_conditions(
     let tilt = model.bearing.misalignment().inner_ring_tilt;
     c.misalignment_rad = (tilt != 0.0).then_some(tilt);
     c.friction = match overrides.friction {
-        RacewayFriction::Muraki => muraki_friction(lubrication),
+        RacewayFriction::Muraki => {
+            check_traction_oil(model, lubrication)?;
+            muraki_friction(lubrication)
+        }
         RacewayFriction::Seed001 => FrictionModel::Seed001(Default::default()),
     };
     Ok(c)

@@ -54,8 +54,8 @@ pub struct SweepFile {
 impl SweepFile {
     /// Reads and checks a sweep file (every variant must produce a valid model).
     pub fn load(path: &Path) -> Result<Self, SweepError> {
-        let text = std::fs::read_to_string(path)
-            .map_err(|e| SweepError::new(path, "", format!("cannot read the file: {e}")))?;
+        let text =
+            rolldyn_model::read_input_file(path).map_err(|e| SweepError::new(path, "", e))?;
         let mut table: Table = text.parse().map_err(|e: toml::de::Error| {
             SweepError::new(path, "", e.message().trim().replace('\n', " "))
         })?;
@@ -105,12 +105,8 @@ impl SweepFile {
             ));
         }
         let model_path = path.parent().unwrap_or(Path::new(".")).join(&model);
-        let model_text = std::fs::read_to_string(&model_path).map_err(|e| {
-            SweepError::new(
-                path,
-                "model",
-                format!("cannot read {}: {e}", model_path.display()),
-            )
+        let model_text = rolldyn_model::read_input_file(&model_path).map_err(|e| {
+            SweepError::new(path, "model", format!("{}: {e}", model_path.display()))
         })?;
         let mut parsed = Vec::new();
         for (i, item) in variants.into_iter().enumerate() {

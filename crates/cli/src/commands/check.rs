@@ -188,8 +188,14 @@ pub fn describe(s: &Summary) -> Vec<String> {
 }
 
 pub fn run(args: Args) -> Result<(), Failure> {
-    let model = load_model(args.model.as_deref())?.bearing;
-    let summary = summarise(&model, args.speed.si(), args.outer_speed.si());
+    let model = load_model(args.model.as_deref())?;
+    rolldyn_setup::FlagValues {
+        speed: Some(args.speed.si()),
+        outer_speed: Some(args.outer_speed.si()),
+        ..Default::default()
+    }
+    .check(&model)?;
+    let summary = summarise(&model.bearing, args.speed.si(), args.outer_speed.si());
     if args.json {
         print_json(&summary)
     } else {

@@ -25,8 +25,8 @@ impl OilArgs {
             return lubricant_by_name(&self.oil).map_err(|e| Failure::Input(e.to_string()));
         };
         let file = path.display().to_string();
-        let text = std::fs::read_to_string(path)
-            .map_err(|e| Failure::Input(format!("{file}: cannot read the file: {e}")))?;
+        let text = rolldyn_model::read_input_file(path)
+            .map_err(|e| Failure::Input(format!("{file}: {e}")))?;
         toml::from_str(&text).map_err(|e| {
             let line = e
                 .span()

@@ -75,9 +75,8 @@ fn parse_temperatures(text: &str) -> Result<Temperatures, String> {
         let t = Quantity::<Temperature>::parse(value)
             .map_err(|e| e.to_string())?
             .si();
-        if t <= 0.0 {
-            return Err(format!("'{item}' is below absolute zero"));
-        }
+        rolldyn_model::bounds::check_temperature(&format!("--temperatures {}", part.trim()), t)
+            .map_err(|e| e.to_string())?;
         let slot = match part.trim() {
             "oil" => &mut parts.oil,
             "inner" => &mut parts.inner_ring,
@@ -108,6 +107,36 @@ fn values<D: rolldyn_units::Dim>(range: &Option<QuantityRange<D>>) -> Option<Vec
 /// The first value of a flag (the operating point of a sweep), SI.
 fn single<D: rolldyn_units::Dim>(range: &Option<QuantityRange<D>>) -> Option<f64> {
     values(range).and_then(|v| v.first().copied())
+}
+
+/// Every value of a swept flag within the plausibility bounds (the first one is checked with
+/// the operating point).
+fn check_every_flag_value(args: &Args, model: &Model) -> Result<(), Failure> {
+    let speeds = values(&args.speed)
+        .unwrap_or_default()
+        .into_iter()
+        .map(|w| rolldyn_setup::FlagValues {
+            speed: Some(w),
+            ..Default::default()
+        });
+    let outer = values(&args.outer_speed)
+        .unwrap_or_default()
+        .into_iter()
+        .map(|w| rolldyn_setup::FlagValues {
+            outer_speed: Some(w),
+            ..Default::default()
+        });
+    let loads = values(&args.radial_load)
+        .unwrap_or_default()
+        .into_iter()
+        .map(|f| rolldyn_setup::FlagValues {
+            radial_load: Some(f),
+            ..Default::default()
+        });
+    for flags in speeds.chain(outer).chain(loads) {
+        flags.check(model)?;
+    }
+    Ok(())
 }
 
 /// The operating point of the model file, overridden by the flags (first value of a sweep).
@@ -226,6 +255,21 @@ impl SweepRow {
     }
 }
 
+/// A quasi-static failure: rejected input names the model file (exit 2), a failed iteration
+/// or contact solve is a failed run (exit 1).
+fn solve_failure(model: &Model, e: rolldyn_quasistatic::QsError) -> Failure {
+    use rolldyn_quasistatic::QsError::*;
+    match e {
+        InvalidInput(_) | Geometry(_) => {
+            Failure::Input(model.source.error("", e.to_string()).to_string())
+        }
+        Lubrication(_) => {
+            Failure::Input(model.source.error("lubricant", e.to_string()).to_string())
+        }
+        Contact(_) | NotConverged { .. } => Failure::Run(e.to_string()),
+    }
+}
+
 /// Solves the operating point, or the sweep, and prints it (text or JSON); a sweep also writes
 /// its table and plot to `--out`.
 pub fn run(args: Args) -> Result<(), Failure> {
@@ -236,6 +280,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
             model.bearing.name()
         )));
     };
+    check_every_flag_value(&args, &model)?;
     let base = conditions(&args, &model)?;
     let options = QuasiStaticOptions::default();
     let land = cage_land_model(
@@ -249,7 +294,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
     let Some(swept) = swept(&args)? else {
         let result =
             rolldyn_quasistatic::solve_with_land_model(bearing, &base, &options, land.as_ref())
-                .map_err(|e| Failure::Run(e.to_string()))?;
+                .map_err(|e| solve_failure(&model, e))?;
         if args.json {
             return print_json(&result);
         }
