@@ -66,17 +66,18 @@ fn absurd_models_exit_2_in_check_and_skid() {
 
 #[test]
 fn a_bad_oil_temperature_blames_its_flag() {
-    let (code, line) = run(&[
+    let out = rolldyn(&[
         "simulate",
         &common::example("2002834.toml"),
         "--oil-temperature=-300C",
         "--duration",
         "1ms",
     ]);
-    assert_eq!(code, 2, "{line}");
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
     assert!(
-        line.contains("--oil-temperature:") && !line.contains("--radial-load"),
-        "{line}"
+        stderr.contains("--oil-temperature") && !stderr.contains("--radial-load"),
+        "{stderr}"
     );
 }
 
