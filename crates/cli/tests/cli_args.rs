@@ -26,6 +26,18 @@ fn negative_load_reaches_the_validation_naming_the_flag() {
 }
 
 #[test]
+fn negative_durations_reach_the_validation_naming_the_flag() {
+    let model = example("2002834.toml");
+    for (flag, value) in [("--duration", "-5rev"), ("--output-step", "-1ms")] {
+        let out = rolldyn(&["simulate", &model, flag, value]);
+        refused(&out, &[flag]);
+        assert!(!String::from_utf8_lossy(&out.stderr).contains("tip:"));
+    }
+    let out = rolldyn(&["bench", "--duration", "-5rev"]);
+    refused(&out, &["--duration"]);
+}
+
+#[test]
 fn negative_tilt_is_a_value() {
     let v = json(&rolldyn(&[
         "contact",

@@ -16,7 +16,7 @@ pub struct Args {
     #[command(flatten)]
     pub operating: OperatingArgs,
     /// Simulated duration of each run: cage revolutions (`20rev`) or time (`0.2s`).
-    #[arg(long, default_value = "20rev")]
+    #[arg(long, default_value = "20rev", allow_hyphen_values = true)]
     pub duration: Duration,
     /// Number of runs (one after the other, each from a fresh simulation).
     #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u32).range(1..))]

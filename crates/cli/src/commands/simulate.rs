@@ -80,10 +80,10 @@ pub struct Args {
     #[command(flatten)]
     pub operating: OperatingArgs,
     /// Simulated duration: cage revolutions (`20rev`) or time (`0.2s`).
-    #[arg(long, default_value = "5rev")]
+    #[arg(long, default_value = "5rev", allow_hyphen_values = true)]
     pub duration: Duration,
     /// Interval of the time-series samples (at least the integrator's minimum step).
-    #[arg(long, default_value = "0.05ms")]
+    #[arg(long, default_value = "0.05ms", allow_hyphen_values = true)]
     pub output_step: Quantity<Time>,
     /// Largest estimated size of the `--out` tables: a run whose tables would be larger is
     /// refused before it starts (e.g. `20GB`).
@@ -100,7 +100,7 @@ pub struct Args {
     #[arg(long)]
     pub checkpoint: Option<PathBuf>,
     /// Interval of the checkpoints: cage revolutions (`2rev`) or time (`10ms`); default 1rev.
-    #[arg(long, requires = "checkpoint")]
+    #[arg(long, requires = "checkpoint", allow_hyphen_values = true)]
     pub checkpoint_interval: Option<Duration>,
     /// Continue a run from a checkpoint file (bit-for-bit) up to the new duration; with
     /// `--out`, the tables of that folder are continued.
