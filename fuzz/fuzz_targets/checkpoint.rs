@@ -1,21 +1,24 @@
 //! Checkpoints: restoring arbitrary bytes into a simulation of the default model must be
-//! rejected or accepted, never panic.
+//! rejected or accepted, never panic. One simulation is set up once and restored into again
+//! and again (setting it up per input would cost seconds).
 #![no_main]
 
 use rolldyn_dynamics::Simulation;
-use std::sync::OnceLock;
+use std::sync::{Mutex, OnceLock};
 
-fn simulation() -> Simulation {
-    static MODEL: OnceLock<rolldyn_model::Model> = OnceLock::new();
-    let model = MODEL.get_or_init(|| {
-        rolldyn_model::parse(rolldyn_model::DEFAULT_MODEL, "2002834.toml").expect("default model")
-    });
-    rolldyn_setup::prepare(model, &rolldyn_setup::Overrides::default(), 1e-4, None)
-        .expect("the default model sets up")
-        .0
+fn simulation() -> &'static Mutex<Simulation> {
+    static SIMULATION: OnceLock<Mutex<Simulation>> = OnceLock::new();
+    SIMULATION.get_or_init(|| {
+        let model = rolldyn_model::parse(rolldyn_model::DEFAULT_MODEL, "2002834.toml")
+            .expect("default model");
+        let (simulation, ..) =
+            rolldyn_setup::prepare(&model, &rolldyn_setup::Overrides::default(), 1e-4, None)
+                .expect("the default model sets up");
+        Mutex::new(simulation)
+    })
 }
 
 libfuzzer_sys::fuzz_target!(|bytes: &[u8]| {
-    let mut sim = simulation();
-    let _ = sim.restore(bytes);
+    let mut simulation = simulation().lock().unwrap_or_else(|e| e.into_inner());
+    let _ = simulation.restore(bytes);
 });
