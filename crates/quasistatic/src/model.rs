@@ -593,11 +593,6 @@ pub fn static_load_rating(bearing: &CylindricalRollerBearing) -> f64 {
     44.0 * (1.0 - dw / dpw) * bearing.roller_count as f64 * lwe * dw
 }
 
-/// A cage root bracketed to the x tolerance may keep a residual above `cage_tolerance` (Φ is
-/// not resolved below f64 resolution in the speed); it is accepted up to this many times the
-/// tolerance, a larger final residual is a convergence failure.
-pub const BRACKETED_ROOT_SLACK: f64 = 10.0;
-
 /// See [`crate::solve_with_land_model`].
 pub(crate) fn run(
     bearing: &CylindricalRollerBearing,
@@ -663,7 +658,7 @@ pub(crate) fn run(
     };
     // the residual the root finder tested: Φ over the moment sum of its first iterate
     let cage_residual = ws.balance.residual_n_m / ws.scale.unwrap_or(ws.balance.scale_n_m);
-    let accepted = opts.cage_tolerance * BRACKETED_ROOT_SLACK;
+    let accepted = opts.cage_tolerance * opts.cage_residual_slack;
     let passed = cage_residual.abs() <= accepted;
     if !passed && (wi != 0.0 || wo != 0.0) {
         // the bracket can close on a jump of Φ (or an end of the speed range) without a root

@@ -230,8 +230,8 @@ pub struct SkidResult {
     pub solve_time_s: f64,
     /// Iteration counts.
     pub iterations: Iterations,
-    /// Every residual test passed: the cage moment `|Φ|/scale ≤ 10 × cage_tolerance` (1e-5,
-    /// [`Residuals::cage_moment_relative`], [`crate::BRACKETED_ROOT_SLACK`]), each
+    /// Every residual test passed: the cage moment `|Φ|/scale ≤ cage_residual_slack ×
+    /// cage_tolerance` (1e-5 by default, [`Residuals::cage_moment_relative`]), each
     /// roller moment to `roller_tolerance` and the load distribution to `load_tolerance`
     /// ([`crate::QuasiStaticOptions`]). A point failing one is returned as an error, so this is
     /// true for a returned result.
