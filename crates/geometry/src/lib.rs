@@ -8,6 +8,7 @@
 
 mod bearing;
 mod cage;
+mod cage_guidance;
 mod error;
 mod kinematics;
 mod mass;
@@ -20,6 +21,7 @@ mod roller;
 
 pub use bearing::{Clearance, CylindricalRollerBearing, Misalignment};
 pub use cage::{Cage, CageGuidance};
+pub use cage_guidance::CageGuidanceCheck;
 pub use error::{GeometryError, require_positive};
 pub use kinematics::{cage_slip, epicyclic_cage_speed, epicyclic_roller_speed};
 pub use mass::MassProperties;

@@ -60,6 +60,14 @@ pub struct Summary {
     outer_ring: Option<Mass>,
     cage: Option<Mass>,
     cage_land_diameter_m: Option<f64>,
+    /// circumferential play of a centred roller on each side of its pocket
+    cage_pocket_play_per_side_m: Option<f64>,
+    /// smallest cage displacement that closes a pocket on its roller
+    cage_pocket_closing_displacement_m: Option<f64>,
+    /// half the floating clearance
+    cage_land_radial_gap_m: Option<f64>,
+    /// the land stops the cage before a pocket closes
+    cage_land_guided: Option<bool>,
     inner_speed_rad_s: Option<f64>,
     outer_speed_rad_s: Option<f64>,
     epicyclic_cage_speed_rad_s: Option<f64>,
@@ -100,6 +108,12 @@ pub fn summarise(model: &BearingModel, inner_speed: f64, outer_speed: f64) -> Su
             s.outer_ring = Some(b.outer_ring.mass_properties.into());
             s.cage = b.cage.as_ref().map(|c| c.mass_properties.into());
             s.cage_land_diameter_m = b.cage.as_ref().and_then(|c| c.land_diameter());
+            if let Some(g) = b.cage_guidance_check() {
+                s.cage_pocket_play_per_side_m = Some(g.pocket_play_per_side);
+                s.cage_pocket_closing_displacement_m = Some(g.pocket_closing_displacement);
+                s.cage_land_radial_gap_m = Some(g.land_radial_gap);
+                s.cage_land_guided = Some(g.land_guided());
+            }
             s.inner_speed_rad_s = Some(inner_speed);
             s.outer_speed_rad_s = Some(outer_speed);
             s.epicyclic_cage_speed_rad_s = Some(b.epicyclic_cage_speed(inner_speed, outer_speed));
@@ -170,6 +184,26 @@ pub fn describe(s: &Summary) -> Vec<String> {
     }
     if let Some(d) = s.cage_land_diameter_m {
         line("cage guiding land diameter", mm(d));
+    }
+    if let (Some(play), Some(closing), Some(gap), Some(guided)) = (
+        s.cage_pocket_play_per_side_m,
+        s.cage_pocket_closing_displacement_m,
+        s.cage_land_radial_gap_m,
+        s.cage_land_guided,
+    ) {
+        line("pocket play per side", mm(play));
+        line(
+            "cage travel: pockets close / land",
+            format!("{} / {}", mm(closing), mm(gap)),
+        );
+        line(
+            "what centres the cage",
+            if guided {
+                "the land (it stops the cage before a pocket closes)".into()
+            } else {
+                "the rollers: a pocket closes before the land gap (see docs/theory.md §1.6)".into()
+            },
+        );
     }
     if let (Some(wi), Some(wo), Some(wc), Some(wr)) = (
         s.inner_speed_rad_s,
