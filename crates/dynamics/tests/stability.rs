@@ -1,10 +1,10 @@
 #![allow(clippy::field_reassign_with_default, clippy::needless_range_loop)]
-//! 2002834 at 6371 rpm with the Ø190.2 mm bar contact (0.25 mm pocket play): a short run stays
-//! bounded. 5 slices, 500 N, PAO VG 320 Muraki traction, 25 ms (past the ≈ 18 ms at which the
-//! rollers' skew reaches the cage bars — where runs with ±1.5 mm pocket play diverged).
+//! 2002834 at 6371 rpm with the model's bar contact line (Ø192.5 mm, 1.48 mm pocket play per
+//! side, roller skew held by the ribs): a short run stays bounded. 5 slices, 500 N, PAO VG 320
+//! Muraki traction, 25 ms.
 //!
-//! Checked at every 1 ms mark: no divergence stop; roller tilt (skew + pitch) within the bar
-//! bound `p/h = 0.125/2.5 = 0.05 rad` plus the bar deflection (≤ 0.06 rad); roller radii within
+//! Checked at every 1 ms mark: no divergence stop; roller tilt (skew + pitch) below 0.06 rad (the
+//! ribs' bound is ≈ 0.0505/15 rad; the bars alone would allow far more); roller radii within
 //! the raceway annulus ± 0.1 mm; cage centre within its land clearance + 0.1 mm; run-summary
 //! forces finite and below 10 kN (static maximum ≈ 200 N at 500 N radial load).
 //! The ≥ 0.2 s run is recorded in docs/dynamics-integrator.md (release harness `examples/speed.rs`).

@@ -64,7 +64,7 @@ fn a_missing_oil_property_names_the_file_and_the_lubricant() {
 
 #[test]
 fn a_missing_operating_value_names_the_file_and_key() {
-    let text = rolldyn_model::DEFAULT_MODEL.replacen("inner_speed = \"6371 rpm\"", "", 1);
+    let text = rolldyn_model::DEFAULT_MODEL.replacen("inner_speed = \"8163 rpm\"", "", 1);
     let m = conditions(&Overrides::default(), &model(&text))
         .unwrap_err()
         .0;

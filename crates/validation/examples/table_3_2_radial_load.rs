@@ -74,12 +74,9 @@ fn max_inner_force(
 
 /// Radial load at which the largest inner-ring roller force is `target` (bisection on the
 /// monotonic load–force relation).
-fn radial_load_for(
-    bearing: &CylindricalRollerBearing,
-    target: f64,
-    centrifugal_n: f64,
-) -> f64 {
-    let model = LoadModel::new(bearing, QuasiStaticOptions::default().slice_law).expect("slice model");
+fn radial_load_for(bearing: &CylindricalRollerBearing, target: f64, centrifugal_n: f64) -> f64 {
+    let model =
+        LoadModel::new(bearing, QuasiStaticOptions::default().slice_law).expect("slice model");
     let (mut lo, mut hi) = (0.0, 20.0 * target);
     for _ in 0..60 {
         let mid = 0.5 * (lo + hi);
@@ -97,18 +94,22 @@ fn main() {
         .nth(1)
         .unwrap_or_else(|| "examples/2002834/table-3.1.toml".into());
     let sweep = rolldyn_sweep::SweepFile::load(std::path::Path::new(&path)).expect("sweep file");
-    println!("variant,rollers,clearance_mm,misalignment_arcmin,seed_inner_force_n,radial_load_bound_n");
+    println!(
+        "variant,rollers,clearance_mm,misalignment_arcmin,seed_inner_force_n,radial_load_bound_n"
+    );
     let mut bounds = Vec::new();
     for variant in &sweep.variants {
-        let Some(&(_, target)) = SEED_INNER_FORCE_N.iter().find(|(n, _)| *n == variant.name)
-        else {
+        let Some(&(_, target)) = SEED_INNER_FORCE_N.iter().find(|(n, _)| *n == variant.name) else {
             continue;
         };
         let model = sweep.model_of(variant).expect("variant model");
         let BearingModel::Cylindrical(bearing) = &model.bearing else {
             panic!("cylindrical bearing expected");
         };
-        let inner_speed = model.operating.inner_speed.expect("[operating] inner_speed");
+        let inner_speed = model
+            .operating
+            .inner_speed
+            .expect("[operating] inner_speed");
         let cage_speed = bearing.epicyclic_cage_speed(inner_speed, 0.0);
         // roller centrifugal force m ω_c² d_m/2, pressing the roller on the outer raceway
         let centrifugal = bearing.roller.mass_properties.mass
