@@ -14,31 +14,7 @@
 use rolldyn_geometry::{BearingModel, CylindricalRollerBearing};
 use rolldyn_quasistatic::load_distribution::{LoadCase, LoadModel};
 use rolldyn_quasistatic::options::QuasiStaticOptions;
-
-/// Seed 000 Table 3.2, "roller on inner ring" column, by variant name.
-const SEED_INNER_FORCE_N: [(&str, f64); 21] = [
-    ("6", 524.0),
-    ("11", 509.0),
-    ("12", 740.0),
-    ("14", 502.0),
-    ("15", 507.0),
-    ("19", 764.0),
-    ("21", 555.0),
-    ("32", 557.0),
-    ("35", 468.0),
-    ("36", 1435.0),
-    ("37", 443.0),
-    ("41", 583.0),
-    ("48", 587.0),
-    ("53", 412.0),
-    ("54", 412.0),
-    ("55", 343.0),
-    ("56", 367.0),
-    ("65", 391.0),
-    ("66", 532.0),
-    ("68", 460.0),
-    ("75", 539.0),
-];
+use rolldyn_validation::table_3_2::SEED_TABLE_3_2;
 
 /// Tilt from which the crown no longer covers the misalignment (seed 000 §3.1.1.1: at 12′ the
 /// roller force jumps to 1435 N, variant 36): the roller force then measures edge loading, not
@@ -99,7 +75,11 @@ fn main() {
     );
     let mut bounds = Vec::new();
     for variant in &sweep.variants {
-        let Some(&(_, target)) = SEED_INNER_FORCE_N.iter().find(|(n, _)| *n == variant.name) else {
+        let Some(target) = SEED_TABLE_3_2
+            .iter()
+            .find(|r| r.variant == variant.name)
+            .map(|r| r.roller_inner_ring_force_n)
+        else {
             continue;
         };
         let model = sweep.model_of(variant).expect("variant model");

@@ -6,3 +6,4 @@
 pub mod obrien_taylor;
 pub mod rib_shape;
 pub mod seed004;
+pub mod table_3_2;
