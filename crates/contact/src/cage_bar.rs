@@ -13,6 +13,7 @@
 use crate::damping::SliceDamping;
 use crate::hertz::{LineApproachModel, LineContact, reduced_modulus};
 use rolldyn_geometry::{CylindricalRollerBearing, ProfileShape};
+use rolldyn_lubrication::regime::film_parameter;
 use std::f64::consts::{PI, SQRT_2, TAU};
 
 /// Cross-section of a cage bar between two windows: a trapezoid whose tangential width at
@@ -391,16 +392,14 @@ impl BarLawInputs {
     /// The inputs of a bearing with a cage: bar section from the cage bore, outside diameter,
     /// window and pocket count; span = axial pocket size; load points at the roller's bar
     /// points ± the working half-length (the dynamics' `bar_x`); contact and film length =
-    /// the straight part of a crowned roller (else the working length); oil `viscosity` at the
-    /// cage temperature; `contact_film` from the surface roughness. `None` without a cage or
-    /// with windows wider than the bar pitch.
-    pub fn of_bearing(
-        bearing: &CylindricalRollerBearing,
-        viscosity: f64,
-        contact_film: f64,
-    ) -> Option<Self> {
+    /// the straight part of a crowned roller (else the working length); oil `viscosity` (Pa·s)
+    /// at the cage temperature; the asperities meet at the film of Λ = 1 (seed 000 (1.2)) for
+    /// the roller's and the cage's roughness. `None` without a cage or with windows wider than
+    /// the bar pitch.
+    pub fn of_bearing(bearing: &CylindricalRollerBearing, viscosity: f64) -> Option<Self> {
         let cage = bearing.cage.as_ref()?;
         let roller = &bearing.roller;
+        let contact_film = 1.0 / film_parameter(1.0, roller.roughness_ra, cage.roughness_ra);
         let section = BarSection::of_cage(
             0.5 * cage.inner_diameter,
             0.5 * cage.outer_diameter,
@@ -516,6 +515,18 @@ pub fn derive(inputs: &BarLawInputs, settings: &DerivationSettings) -> DerivedBa
     }
 }
 
+/// [`derive`] for a bearing with a cage and the oil `viscosity` (Pa·s) at the cage temperature
+/// ([`BarLawInputs::of_bearing`]); `None` without a cage.
+pub fn derive_for_bearing(
+    bearing: &CylindricalRollerBearing,
+    viscosity: f64,
+    settings: &DerivationSettings,
+) -> Option<(BarLawInputs, DerivedBarLaw)> {
+    let inputs = BarLawInputs::of_bearing(bearing, viscosity)?;
+    let law = derive(&inputs, settings);
+    Some((inputs, law))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -523,7 +534,7 @@ mod tests {
     const E: f64 = 211e9;
 
     fn rectangle_bar(span: f64, offset: f64) -> ClampedBar {
-        // 10 mm deep, 4 mm wide: b(r) constant needs Z → window: use a huge pocket count
+        // a rectangular bar 10 mm deep (radial), 4 mm wide (tangential)
         let section = BarSection {
             depth: 10e-3,
             width_inner: 4e-3,

@@ -7,13 +7,12 @@
 //! `cargo run --release -p rolldyn-validation --example bar_contact_law`
 
 use rolldyn_contact::cage_bar::{
-    BarLawInputs, DerivationSettings, Impact, ImpactSettings, PowerLaw, derive, film_impact,
+    DerivationSettings, Impact, ImpactSettings, PowerLaw, derive_for_bearing, film_impact,
     step_law_impact,
 };
 use rolldyn_contact::damping::SliceDamping;
 use rolldyn_contact::hertz::LineApproachModel;
 use rolldyn_geometry::{BearingModel, CylindricalRollerBearing};
-use rolldyn_lubrication::regime::film_parameter;
 use std::path::Path;
 
 /// Impact speeds of the restitution table (m/s).
@@ -52,16 +51,10 @@ fn adams_scaled(mass: f64) -> (PowerLaw, SliceDamping) {
     )
 }
 
-fn print_case(
-    title: &str,
-    b: &CylindricalRollerBearing,
-    viscosity: f64,
-    contact_film: f64,
-) -> Result<(), String> {
-    let inputs = BarLawInputs::of_bearing(b, viscosity, contact_film)
-        .ok_or("no cage, or windows wider than the bar pitch")?;
+fn print_case(title: &str, b: &CylindricalRollerBearing, viscosity: f64) -> Result<(), String> {
     let settings = DerivationSettings::default();
-    let law = derive(&inputs, &settings);
+    let (inputs, law) = derive_for_bearing(b, viscosity, &settings)
+        .ok_or("no cage, or windows wider than the bar pitch")?;
     let c = &inputs.compliance;
     let s = c.bar.section;
     let m = inputs.roller_mass;
@@ -83,7 +76,7 @@ fn print_case(
         c.contact.reduced_modulus * 1e-9,
         m * 1e3,
         viscosity * 1e3,
-        contact_film * 1e6
+        inputs.contact_film * 1e6
     );
     println!("| F (N) | bending (m/N) | shear (m/N) | contact δ/F (m/N) | total δ (µm) |");
     println!("|---|---|---|---|---|");
@@ -183,36 +176,30 @@ fn run() -> Result<(), String> {
         // the lead's pocket (issue 23): the seed's FE model puts the bar contact at Ø192.5 mm
         cage.bar_contact_diameter = 192.5e-3;
     }
-    let oil = &model
-        .lubrication
-        .as_ref()
-        .ok_or("2002834: no [lubricant]")?
-        .oil;
-    let ra_cage = b2002834.cage.as_ref().map_or(0.0, |c| c.roughness_ra);
-    let h_touch = 1.0 / film_parameter(1.0, b2002834.roller.roughness_ra, ra_cage);
     for celsius in [100.0, 50.0] {
-        let eta = oil
-            .dynamic_viscosity(oil.clamp_temperature(celsius + 273.15))
-            .map_err(|e| e.to_string())?;
         print_case(
             &format!("2002834, VNII NP 50-1-4u at {celsius} °C"),
             &b2002834,
-            eta,
-            h_touch,
+            viscosity(&model, celsius)?,
         )?;
     }
     let (bot, model) = bearing("examples/obrien-taylor.toml")?;
+    print_case(
+        "O'Brien–Taylor, NVI 65 at 54.5 °C",
+        &bot,
+        viscosity(&model, 54.5)?,
+    )
+}
+
+/// Dynamic viscosity (Pa·s) of the model's oil at `celsius`.
+fn viscosity(model: &rolldyn_model::Model, celsius: f64) -> Result<f64, String> {
     let oil = &model
         .lubrication
         .as_ref()
-        .ok_or("O'Brien–Taylor: no [lubricant]")?
+        .ok_or("the model has no [lubricant]")?
         .oil;
-    let ra_cage = bot.cage.as_ref().map_or(0.0, |c| c.roughness_ra);
-    let h_touch = 1.0 / film_parameter(1.0, bot.roller.roughness_ra, ra_cage);
-    let eta = oil
-        .dynamic_viscosity(oil.clamp_temperature(54.5 + 273.15))
-        .map_err(|e| e.to_string())?;
-    print_case("O'Brien–Taylor, NVI 65 at 54.5 °C", &bot, eta, h_touch)
+    oil.dynamic_viscosity(oil.clamp_temperature(celsius + 273.15))
+        .map_err(|e| e.to_string())
 }
 
 fn main() {
