@@ -7,12 +7,14 @@
 //! `cargo run --release -p rolldyn-validation --example bar_contact_law`
 
 use rolldyn_contact::cage_bar::{
-    DerivationSettings, Impact, ImpactSettings, PowerLaw, derive_for_bearing, film_impact,
-    step_law_impact,
+    BarLawInputs, DerivationSettings, Impact, ImpactSettings, PowerLaw, critical_damping,
+    derive_for_bearing, film_impact, matching_damping, step_law_impact,
 };
 use rolldyn_contact::damping::SliceDamping;
 use rolldyn_contact::hertz::LineApproachModel;
 use rolldyn_geometry::{BearingModel, CylindricalRollerBearing};
+use rolldyn_reynolds::line_contact::analytic;
+use rolldyn_reynolds::line_contact::transient::{RigidIsoviscous, TransientOptions, simulate};
 use std::path::Path;
 
 /// Impact speeds of the restitution table (m/s).
@@ -51,7 +53,12 @@ fn adams_scaled(mass: f64) -> (PowerLaw, SliceDamping) {
     )
 }
 
-fn print_case(title: &str, b: &CylindricalRollerBearing, viscosity: f64) -> Result<(), String> {
+fn print_case(
+    title: &str,
+    b: &CylindricalRollerBearing,
+    viscosity: f64,
+    inner_rpm: f64,
+) -> Result<(), String> {
     let settings = DerivationSettings::default();
     let (inputs, law) = derive_for_bearing(b, viscosity, &settings)
         .ok_or("no cage, or windows wider than the bar pitch")?;
@@ -130,6 +137,37 @@ fn print_case(title: &str, b: &CylindricalRollerBearing, viscosity: f64) -> Resu
             film.restitution, film.peak_force, step.restitution, step.peak_force
         );
     }
+    let spin = b.epicyclic_roller_speed(inner_rpm * std::f64::consts::PI / 30.0, 0.0);
+    let sum_speed = spin.abs() * inputs.film.radius;
+    println!(
+        "\nwith the hydrodynamic lift (roller spin {:.0} rad/s at {inner_rpm} rpm, sliding on the bar at {sum_speed:.1} m/s), film only, reynolds::line_contact::transient:\n",
+        spin.abs()
+    );
+    println!("| impact speed (m/s) | e | thinnest film (µm) | peak film force (N) |");
+    println!("|---|---|---|---|");
+    for v in SPEEDS {
+        let (e, h_min, peak) = lift_impact(&inputs, sum_speed, v)?;
+        if h_min < law.d {
+            println!("| {v} | — | below d: the asperities meet (tables above) | — |");
+        } else {
+            println!("| {v} | {e:.3} | {:.2} | {peak:.1} |", h_min * 1e6);
+        }
+    }
+    let v_ref = settings.reference_speed;
+    let (e_lift, h_min, _) = lift_impact(&inputs, sum_speed, v_ref)?;
+    if h_min >= law.d {
+        let c_h = matching_damping(m, v_ref, law.elastic, law.d, e_lift, imp)
+            .min(critical_damping(m, v_ref, law.elastic, law.d));
+        println!(
+            "\nwith the lift the film alone turns the roller at {v_ref} m/s (e = {e_lift:.3}): C_h = {c_h:.0} N·s/m at d = {:.2} µm restitutes alike",
+            law.d * 1e6
+        );
+    } else {
+        println!(
+            "\nwith the lift the asperities still meet at {v_ref} m/s: C_h = {:.0} N·s/m (squeeze film and contact) stands",
+            law.c_h
+        );
+    }
     let old = (
         PowerLaw {
             k_p: 2e9,
@@ -170,6 +208,49 @@ fn print_case(title: &str, b: &CylindricalRollerBearing, viscosity: f64) -> Resu
     Ok(())
 }
 
+/// Cross-check with the project's Reynolds crate: the film alone, squeeze *and* the
+/// hydrodynamic lift of the roller spinning against the bar (seed 002 (5.7), rigid isoviscous
+/// (3.17)–(3.20) with the exact W₀′, W₁′), no external force, from a 50 µm gap at −v back to it.
+/// Returns the restitution, the thinnest film (m) and the largest film force (N).
+fn lift_impact(
+    inputs: &BarLawInputs,
+    sum_speed: f64,
+    speed: f64,
+) -> Result<(f64, f64, f64), String> {
+    let (w0c, w1c) = analytic::load_coefficients().map_err(|e| e.to_string())?;
+    let film = RigidIsoviscous {
+        mu: inputs.film.viscosity,
+        v: sum_speed,
+        r: inputs.film.radius,
+        length: inputs.film.length,
+        w0c,
+        w1c,
+    };
+    let h0 = 50e-6;
+    let samples = simulate(
+        &film,
+        inputs.roller_mass,
+        &|_| 0.0,
+        h0,
+        -speed,
+        20.0 * h0 / speed,
+        &TransientOptions::default(),
+    )
+    .map_err(|e| e.to_string())?;
+    let h_min = samples.iter().map(|s| s.h).fold(f64::INFINITY, f64::min);
+    let peak = samples.iter().map(|s| s.reaction).fold(0.0, f64::max);
+    // the first outward crossing of h0, ḣ interpolated linearly in h between the samples
+    let back = samples
+        .windows(2)
+        .find(|w| w[1].hdot > 0.0 && w[0].h < h0 && w[1].h >= h0)
+        .map(|w| {
+            let t = (h0 - w[0].h) / (w[1].h - w[0].h);
+            w[0].hdot + t * (w[1].hdot - w[0].hdot)
+        })
+        .ok_or("the roller did not leave the film within the time span")?;
+    Ok((back / speed, h_min, peak))
+}
+
 fn run() -> Result<(), String> {
     let (mut b2002834, model) = bearing("examples/2002834.toml")?;
     if let Some(cage) = b2002834.cage.as_mut() {
@@ -181,6 +262,7 @@ fn run() -> Result<(), String> {
             &format!("2002834, VNII NP 50-1-4u at {celsius} °C"),
             &b2002834,
             viscosity(&model, celsius)?,
+            8163.0,
         )?;
     }
     let (bot, model) = bearing("examples/obrien-taylor.toml")?;
@@ -188,6 +270,7 @@ fn run() -> Result<(), String> {
         "O'Brien–Taylor, NVI 65 at 54.5 °C",
         &bot,
         viscosity(&model, 54.5)?,
+        4000.0,
     )
 }
 
