@@ -7,11 +7,12 @@
 //! `cargo run --release -p rolldyn-validation --example bar_contact_law`
 
 use rolldyn_contact::cage_bar::{
-    BarLawInputs, DerivationSettings, Impact, ImpactSettings, PowerLaw, critical_damping,
-    derive_for_bearing, film_impact, matching_damping, step_law_impact,
+    BarLawInputs, DerivationSettings, DerivedBarLaw, Impact, ImpactSettings, PowerLaw,
+    critical_damping, derive_for_bearing, film_impact, matching_damping, step_law_impact,
 };
 use rolldyn_contact::damping::SliceDamping;
 use rolldyn_contact::hertz::LineApproachModel;
+use rolldyn_dynamics::PairParameters;
 use rolldyn_geometry::{BearingModel, CylindricalRollerBearing};
 use rolldyn_reynolds::line_contact::analytic;
 use rolldyn_reynolds::line_contact::transient::{RigidIsoviscous, TransientOptions, simulate};
@@ -62,10 +63,27 @@ fn print_case(
     let settings = DerivationSettings::default();
     let (inputs, law) = derive_for_bearing(b, viscosity, &settings)
         .ok_or("no cage, or windows wider than the bar pitch")?;
+    println!("\n## {title}\n");
+    print_derivation(&inputs, &law, &settings);
+    print_film_table(&inputs, &law);
+    let spin = b.epicyclic_roller_speed(inner_rpm * std::f64::consts::PI / 30.0, 0.0);
+    println!(
+        "\nwith the hydrodynamic lift (roller spin {:.0} rad/s at {inner_rpm} rpm), film only, reynolds::line_contact::transient:\n",
+        spin.abs()
+    );
+    let c_h = lift_damping(&inputs, &law, spin.abs() * inputs.film.radius, &settings)?;
+    print_reference_rows(
+        inputs.roller_mass,
+        law.elastic,
+        SliceDamping::new(c_h, law.d),
+    );
+    Ok(())
+}
+
+/// Section, compliances, fit and the damping of the squeeze film without the lift.
+fn print_derivation(inputs: &BarLawInputs, law: &DerivedBarLaw, settings: &DerivationSettings) {
     let c = &inputs.compliance;
     let s = c.bar.section;
-    let m = inputs.roller_mass;
-    println!("\n## {title}\n");
     println!(
         "bar section: depth {:.2} mm, width {:.2}…{:.2} mm, A = {:.1} mm², I = {:.0} mm⁴; span {:.2} mm, loads F/2 at {:.3} mm from each clamp",
         s.depth * 1e3,
@@ -81,8 +99,8 @@ fn print_case(
         c.contact.reduced_radius * 1e3,
         c.contact.length * 1e3,
         c.contact.reduced_modulus * 1e-9,
-        m * 1e3,
-        viscosity * 1e3,
+        inputs.roller_mass * 1e3,
+        inputs.film.viscosity * 1e3,
         inputs.contact_film * 1e6
     );
     println!("| F (N) | bending (m/N) | shear (m/N) | contact δ/F (m/N) | total δ (µm) |");
@@ -117,13 +135,18 @@ fn print_case(
         "the STEP law restitutes like the film"
     };
     println!(
-        "chosen damping: C_h = {:.4} N·s/m at d = {:.2} µm (film restitution {:.3} at {} m/s; {rule})\n",
+        "squeeze film without the lift: C_h = {:.4} N·s/m at d = {:.2} µm (film restitution {:.3} at {} m/s; {rule})\n",
         law.c_h,
         law.d * 1e6,
         law.restitution,
         settings.reference_speed
     );
+}
+
+/// Restitution and peak force through the squeeze film and with the STEP law, per speed.
+fn print_film_table(inputs: &BarLawInputs, law: &DerivedBarLaw) {
     let imp = ImpactSettings::default();
+    let m = inputs.roller_mass;
     let derived = SliceDamping::new(law.c_h, law.d);
     println!(
         "| impact speed (m/s) | film: e | film: peak F (N) | STEP law: e | STEP law: peak F (N) |"
@@ -137,44 +160,48 @@ fn print_case(
             film.restitution, film.peak_force, step.restitution, step.peak_force
         );
     }
-    let spin = b.epicyclic_roller_speed(inner_rpm * std::f64::consts::PI / 30.0, 0.0);
-    let sum_speed = spin.abs() * inputs.film.radius;
-    println!(
-        "\nwith the hydrodynamic lift (roller spin {:.0} rad/s at {inner_rpm} rpm, sliding on the bar at {sum_speed:.1} m/s), film only, reynolds::line_contact::transient:\n",
-        spin.abs()
-    );
+}
+
+/// The film with the lift per speed; returns the chosen C_h: matched to the film with the lift
+/// where it turns the roller above d at the reference speed, else the squeeze-film value.
+fn lift_damping(
+    inputs: &BarLawInputs,
+    law: &DerivedBarLaw,
+    sum_speed: f64,
+    settings: &DerivationSettings,
+) -> Result<f64, String> {
     println!("| impact speed (m/s) | e | thinnest film (µm) | peak film force (N) |");
     println!("|---|---|---|---|");
     for v in SPEEDS {
-        let (e, h_min, peak) = lift_impact(&inputs, sum_speed, v)?;
+        let (e, h_min, peak) = lift_impact(inputs, sum_speed, v)?;
         if h_min < law.d {
             println!("| {v} | — | below d: the asperities meet (tables above) | — |");
         } else {
             println!("| {v} | {e:.3} | {:.2} | {peak:.1} |", h_min * 1e6);
         }
     }
-    let v_ref = settings.reference_speed;
-    let (e_lift, h_min, _) = lift_impact(&inputs, sum_speed, v_ref)?;
-    if h_min >= law.d {
-        let c_h = matching_damping(m, v_ref, law.elastic, law.d, e_lift, imp)
-            .min(critical_damping(m, v_ref, law.elastic, law.d));
+    let (m, v_ref) = (inputs.roller_mass, settings.reference_speed);
+    let (e_lift, h_min, _) = lift_impact(inputs, sum_speed, v_ref)?;
+    if h_min < law.d {
         println!(
-            "\nwith the lift the film alone turns the roller at {v_ref} m/s (e = {e_lift:.3}): C_h = {c_h:.0} N·s/m at d = {:.2} µm restitutes alike",
+            "\nchosen: the asperities meet at {v_ref} m/s even with the lift: C_h = {:.0} N·s/m (squeeze film and contact) at d = {:.2} µm",
+            law.c_h,
             law.d * 1e6
         );
-    } else {
-        println!(
-            "\nwith the lift the asperities still meet at {v_ref} m/s: C_h = {:.0} N·s/m (squeeze film and contact) stands",
-            law.c_h
-        );
+        return Ok(law.c_h);
     }
-    let old = (
-        PowerLaw {
-            k_p: 2e9,
-            exponent: 1.1,
-        },
-        SliceDamping::new(500.0, 1e-6),
+    let c_h = matching_damping(m, v_ref, law.elastic, law.d, e_lift, settings.impact)
+        .min(critical_damping(m, v_ref, law.elastic, law.d));
+    println!(
+        "\nchosen: with the lift the film alone turns the roller at {v_ref} m/s (e = {e_lift:.3}): C_h = {c_h:.0} N·s/m at d = {:.2} µm restitutes alike",
+        law.d * 1e6
     );
+    Ok(c_h)
+}
+
+/// Restitution and peak force at 0.1 m/s of the old default, the chosen law and Adams' rows.
+fn print_reference_rows(mass: f64, elastic: PowerLaw, chosen: SliceDamping) {
+    let old = PairParameters::roller_cage_default();
     let adams = (
         PowerLaw {
             k_p: ADAMS_K_N_PER_MM * 1e3_f64.powf(ADAMS_EXPONENT),
@@ -183,10 +210,19 @@ fn print_case(
         SliceDamping::new(ADAMS_DAMPING, ADAMS_DEPTH),
     );
     let rows: [(&str, (PowerLaw, SliceDamping)); 4] = [
-        ("old rolldyn default", old),
-        ("derived law", (law.elastic, derived)),
+        (
+            "old rolldyn default",
+            (
+                PowerLaw {
+                    k_p: old.k_p,
+                    exponent: old.exponent,
+                },
+                SliceDamping::new(old.c_h, old.d),
+            ),
+        ),
+        ("derived law (chosen C_h)", (elastic, chosen)),
         ("Adams IMPACT default (1 kg part)", adams),
-        ("Adams scaled to the roller mass", adams_scaled(m)),
+        ("Adams scaled to the roller mass", adams_scaled(mass)),
     ];
     println!(
         "\n| law | K_p (N/m^n) | n | C_h (N·s/m) | d (µm) | e at 0.1 m/s | peak F at 0.1 m/s (N) |"
@@ -196,16 +232,15 @@ fn print_case(
         let Impact {
             restitution,
             peak_force,
-        } = step_law_impact(m, 0.1, elastic, damping, imp);
+        } = step_law_impact(mass, 0.1, elastic, damping, ImpactSettings::default());
         println!(
-            "| {name} | {:.3e} | {:.2} | {:.4} | {:.2} | {restitution:.3} | {peak_force:.1} |",
+            "| {name} | {:.3e} | {:.2} | {:.1} | {:.2} | {restitution:.3} | {peak_force:.1} |",
             elastic.k_p,
             elastic.exponent,
             damping.c_max,
             damping.delta_star * 1e6
         );
     }
-    Ok(())
 }
 
 /// Cross-check with the project's Reynolds crate: the film alone, squeeze *and* the
