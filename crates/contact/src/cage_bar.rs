@@ -8,6 +8,10 @@
 //!   `C_h` is chosen so that the STEP-damped law gives the same restitution at a reference
 //!   impact speed, with `d` = the film thickness at which the asperities meet.
 //!
+//! The hydrodynamic lift of the roller spinning against the bar is left out here (it makes the
+//! restitution higher, so [`derive`] gives its lower bound); the example program
+//! `bar_contact_law` adds it through the Reynolds crate, which itself depends on this crate.
+//!
 //! SI units throughout (m, N, Pa, Pa·s, kg).
 
 use crate::damping::SliceDamping;
