@@ -5,10 +5,13 @@
 //! * [`damping`] — contact damping with the cubic STEP ramp (SPEC §2.2, §3.4).
 //! * [`boussinesq`] — non-Hertzian pressure solver (modified Hartnett, seed 004 / SPEC §2.5),
 //!   FFT-accelerated constrained conjugate gradient with a dense reference.
+//! * [`cage_bar`] — the roller ↔ cage bar law (pair 34) derived from the bar's bending and
+//!   shear, the line contact and the oil squeeze film (docs/theory.md §2.3.1).
 //! * [`roller_raceway`] — a roller of a bearing model on its raceway, solved by any of the
 //!   three methods and reported alike.
 
 pub mod boussinesq;
+pub mod cage_bar;
 pub mod damping;
 pub mod hertz;
 pub mod roller_raceway;
