@@ -146,6 +146,13 @@ pub struct RevolutionSummary {
     /// the mean cage speed changed by less than the steady-state tolerance since the previous
     /// revolution
     pub steady: bool,
+    /// largest rolling-direction and axial components of the inner-raceway sliding velocity
+    /// over the loaded rollers, and of the most loaded roller, m/s ([`RunSummary`] has the same
+    /// four figures over the run)
+    pub max_inner_sliding_rolling_direction_m_s: f64,
+    pub max_inner_sliding_axial_m_s: f64,
+    pub max_inner_sliding_rolling_direction_most_loaded_m_s: f64,
+    pub max_inner_sliding_axial_most_loaded_m_s: f64,
 }
 
 /// Final summary of a run (the `rolldyn simulate --json` fields).

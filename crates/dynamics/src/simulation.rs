@@ -520,6 +520,10 @@ impl Simulation {
             max_roller_end_rib_force_n: w.max_rib,
             max_roller_end_cage_force_n: w.max_pocket,
             steady,
+            max_inner_sliding_rolling_direction_m_s: w.sliding.rolling,
+            max_inner_sliding_axial_m_s: w.sliding.axial,
+            max_inner_sliding_rolling_direction_most_loaded_m_s: w.sliding.rolling_most_loaded,
+            max_inner_sliding_axial_most_loaded_m_s: w.sliding.axial_most_loaded,
         };
         self.tr.prev_rev_speed = speed;
         if self.tr.run_started {
