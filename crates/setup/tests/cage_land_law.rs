@@ -23,7 +23,7 @@ fn model(law: &str) -> rolldyn_model::Model {
     rolldyn_model::parse(&text, "m.toml").expect("a valid model")
 }
 
-/// A 2 ms run of each law: the contact law presses the cage on the land (a land force, from
+/// A 1 ms run of each law: the contact law presses the cage on the land (a land force, from
 /// the contact alone) and starts from the contact land's quasi-static solution; the two laws
 /// give different runs.
 #[test]
@@ -34,7 +34,7 @@ fn the_contact_law_reaches_the_run_and_its_start() {
         let qs = p.quasi_static.expect("the quasi-static start solves");
         let summary = p
             .simulation
-            .run_until(2e-3, &mut NullSink, &mut |_| {})
+            .run_until(1e-3, &mut NullSink, &mut |_| {})
             .expect("the run completes");
         (qs, summary)
     };
