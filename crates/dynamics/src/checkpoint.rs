@@ -7,8 +7,9 @@ use crate::error::DynError;
 
 /// Tag that opens every checkpoint, followed by the two-digit format version.
 const TAG: &[u8; 6] = b"RDYNCK";
-/// Format version (06: checksum, output step, the caller's note).
-const VERSION: &[u8; 2] = b"06";
+/// Format version (07: the sliding-split maxima of the summary windows; 06: checksum, output
+/// step, the caller's note).
+const VERSION: &[u8; 2] = b"07";
 /// Bytes of the checksum that closes a checkpoint.
 const CHECKSUM_BYTES: usize = 8;
 

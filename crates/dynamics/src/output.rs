@@ -146,6 +146,13 @@ pub struct RevolutionSummary {
     /// the mean cage speed changed by less than the steady-state tolerance since the previous
     /// revolution
     pub steady: bool,
+    /// largest rolling-direction and axial components of the inner-raceway sliding velocity
+    /// over the loaded rollers, and of the most loaded roller, m/s ([`RunSummary`] has the same
+    /// four figures over the run)
+    pub max_inner_sliding_rolling_direction_m_s: f64,
+    pub max_inner_sliding_axial_m_s: f64,
+    pub max_inner_sliding_rolling_direction_most_loaded_m_s: f64,
+    pub max_inner_sliding_axial_most_loaded_m_s: f64,
 }
 
 /// Final summary of a run (the `rolldyn simulate --json` fields).
@@ -165,7 +172,8 @@ pub struct RunSummary {
     pub max_roller_cage_force_n: f64,
     /// N
     pub max_cage_land_force_n: f64,
-    /// m/s
+    /// largest inner-raceway sliding speed of a loaded roller (load-weighted mean of |v| over
+    /// its slices), m/s
     pub max_inner_sliding_speed_m_s: f64,
     /// largest v/u on the inner raceway
     pub max_relative_slip: f64,
@@ -191,6 +199,16 @@ pub struct RunSummary {
     pub max_roller_end_rib_force_n: f64,
     /// largest roller-end ↔ cage pocket-face force, N (seed 000 Table 3.2)
     pub max_roller_end_cage_force_n: f64,
+    /// largest rolling-direction (circumferential) component of the inner-raceway sliding
+    /// velocity at a loaded roller's centre of pressure, m/s (docs/outputs.md)
+    pub max_inner_sliding_rolling_direction_m_s: f64,
+    /// largest axial component (from skew) of that sliding velocity, m/s
+    pub max_inner_sliding_axial_m_s: f64,
+    /// largest rolling-direction component of the roller carrying the largest inner-raceway
+    /// normal force at the time, m/s
+    pub max_inner_sliding_rolling_direction_most_loaded_m_s: f64,
+    /// largest axial component of the most loaded roller, m/s
+    pub max_inner_sliding_axial_most_loaded_m_s: f64,
 }
 
 /// Receiver of the streaming outputs.

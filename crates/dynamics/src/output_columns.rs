@@ -234,7 +234,7 @@ pub const ROLLER_COLUMNS: [RollerColumn; 27] = [
 ];
 
 /// Columns of the `revolutions` table (flags as 0 or 1).
-pub const REVOLUTION_COLUMNS: [RevolutionColumn; 19] = [
+pub const REVOLUTION_COLUMNS: [RevolutionColumn; 23] = [
     Column {
         name: "revolution",
         description: "revolution number (1 = first completed)",
@@ -294,6 +294,26 @@ pub const REVOLUTION_COLUMNS: [RevolutionColumn; 19] = [
         name: "max_inner_sliding_speed_m_s",
         description: "largest inner-raceway sliding speed, m/s",
         value: |v| v.max_inner_sliding_speed_m_s,
+    },
+    Column {
+        name: "max_inner_sliding_rolling_direction_m_s",
+        description: "largest rolling-direction component of the inner-raceway sliding, m/s",
+        value: |v| v.max_inner_sliding_rolling_direction_m_s,
+    },
+    Column {
+        name: "max_inner_sliding_axial_m_s",
+        description: "largest axial component of the inner-raceway sliding, m/s",
+        value: |v| v.max_inner_sliding_axial_m_s,
+    },
+    Column {
+        name: "max_inner_sliding_rolling_direction_most_loaded_m_s",
+        description: "largest rolling-direction sliding component of the most loaded roller, m/s",
+        value: |v| v.max_inner_sliding_rolling_direction_most_loaded_m_s,
+    },
+    Column {
+        name: "max_inner_sliding_axial_most_loaded_m_s",
+        description: "largest axial sliding component of the most loaded roller, m/s",
+        value: |v| v.max_inner_sliding_axial_most_loaded_m_s,
     },
     Column {
         name: "max_relative_slip",

@@ -19,12 +19,75 @@ pub(crate) struct StepValues {
     pub max_srr: f64,
     pub max_rib: f64,
     pub max_pocket: f64,
+    /// inner-raceway sliding split along the roller, magnitudes: the largest over the loaded
+    /// rollers and those of the most loaded roller, m/s
+    pub sliding: SlidingMaxima,
     /// z-component of r × v of the cage centre (r in the radial plane), m²/s
     pub orbit_moment: f64,
     /// |r|² of the cage centre in the radial plane, m²
     pub orbit_r2: f64,
     /// inner contact state with the largest slip among loaded rollers
     pub worst: Option<ContactState>,
+}
+
+/// Largest magnitudes of the rolling-direction and axial components of the inner-raceway
+/// sliding velocity ([`crate::kinematics::split_sliding`]): over all loaded rollers, and of the
+/// roller carrying the largest inner-raceway normal force, m/s.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub(crate) struct SlidingMaxima {
+    pub rolling: f64,
+    pub axial: f64,
+    pub rolling_most_loaded: f64,
+    pub axial_most_loaded: f64,
+}
+
+impl SlidingMaxima {
+    /// Of one evaluation's raceway `table`: over the rollers loaded above `threshold` N (the
+    /// rollers of the sliding-speed maximum) and of the most loaded roller.
+    pub fn of(table: &crate::rhs::ContactTable, threshold: f64) -> Self {
+        let mut m = Self::default();
+        let mut most = 0.0;
+        for (j, &q) in table.force.iter().enumerate() {
+            let (rolling, axial) = (table.sliding_rolling[j].abs(), table.sliding_axial[j].abs());
+            if q > threshold && q > 0.0 {
+                m.rolling = m.rolling.max(rolling);
+                m.axial = m.axial.max(axial);
+            }
+            if q > most {
+                most = q;
+                (m.rolling_most_loaded, m.axial_most_loaded) = (rolling, axial);
+            }
+        }
+        m
+    }
+
+    /// The larger of each component.
+    pub fn max(self, o: Self) -> Self {
+        Self {
+            rolling: self.rolling.max(o.rolling),
+            axial: self.axial.max(o.axial),
+            rolling_most_loaded: self.rolling_most_loaded.max(o.rolling_most_loaded),
+            axial_most_loaded: self.axial_most_loaded.max(o.axial_most_loaded),
+        }
+    }
+
+    fn to_array(self) -> [f64; 4] {
+        [
+            self.rolling,
+            self.axial,
+            self.rolling_most_loaded,
+            self.axial_most_loaded,
+        ]
+    }
+
+    fn from_array(v: [f64; 4]) -> Self {
+        Self {
+            rolling: v[0],
+            axial: v[1],
+            rolling_most_loaded: v[2],
+            axial_most_loaded: v[3],
+        }
+    }
 }
 
 /// Packs a line-contact state into 9 numbers (checkpoints).
@@ -91,6 +154,7 @@ pub(crate) struct Window {
     pub max_pocket: f64,
     pub orbit_moment_int: f64,
     pub orbit_r2_int: f64,
+    pub sliding: SlidingMaxima,
 }
 
 impl Window {
@@ -115,6 +179,7 @@ impl Window {
             max_pocket: 0.0,
             orbit_moment_int: 0.0,
             orbit_r2_int: 0.0,
+            sliding: SlidingMaxima::default(),
         }
     }
 
@@ -132,6 +197,7 @@ impl Window {
         self.max_vs = self.max_vs.max(v.max_vs);
         self.max_rib = self.max_rib.max(v.max_rib);
         self.max_pocket = self.max_pocket.max(v.max_pocket);
+        self.sliding = self.sliding.max(v.sliding);
         if v.max_srr > self.max_srr {
             self.max_srr = v.max_srr;
         }
@@ -219,6 +285,9 @@ impl Window {
         for x in pack(&self.worst) {
             w.f64(x);
         }
+        for x in self.sliding.to_array() {
+            w.f64(x);
+        }
     }
 
     pub fn load(r: &mut Reader) -> Result<Self, DynError> {
@@ -228,6 +297,10 @@ impl Window {
         }
         let mut p = [0.0; 10];
         for x in p.iter_mut() {
+            *x = r.f64()?;
+        }
+        let mut sliding = [0.0; 4];
+        for x in sliding.iter_mut() {
             *x = r.f64()?;
         }
         Ok(Self {
@@ -250,6 +323,7 @@ impl Window {
             orbit_moment_int: v[16],
             orbit_r2_int: v[17],
             worst: unpack(&p),
+            sliding: SlidingMaxima::from_array(sliding),
         })
     }
 }

@@ -27,7 +27,7 @@ impl SummaryValue {
 
 impl RunSummary {
     /// Every figure of the summary with its column name and kind.
-    pub fn fields(&self) -> [(&'static str, SummaryValue); 20] {
+    pub fn fields(&self) -> [(&'static str, SummaryValue); 24] {
         use SummaryValue::{Count, Flag, Real};
         [
             ("cage_slip_mean", Real(self.cage_slip_mean)),
@@ -61,6 +61,22 @@ impl RunSummary {
                 "max_inner_sliding_speed_m_s",
                 Real(self.max_inner_sliding_speed_m_s),
             ),
+            (
+                "max_inner_sliding_rolling_direction_m_s",
+                Real(self.max_inner_sliding_rolling_direction_m_s),
+            ),
+            (
+                "max_inner_sliding_axial_m_s",
+                Real(self.max_inner_sliding_axial_m_s),
+            ),
+            (
+                "max_inner_sliding_rolling_direction_most_loaded_m_s",
+                Real(self.max_inner_sliding_rolling_direction_most_loaded_m_s),
+            ),
+            (
+                "max_inner_sliding_axial_most_loaded_m_s",
+                Real(self.max_inner_sliding_axial_most_loaded_m_s),
+            ),
             ("max_relative_slip", Real(self.max_relative_slip)),
             ("min_scuffing_margin", Real(self.min_scuffing_margin)),
             ("whirl_ratio", Real(self.whirl_ratio)),
@@ -76,7 +92,7 @@ impl RunSummary {
 
     /// Every figure of the summary as a number with its column name (SI; `precession` as 0 or
     /// 1, the step counts as numbers).
-    pub fn columns(&self) -> [(&'static str, f64); 20] {
+    pub fn columns(&self) -> [(&'static str, f64); 24] {
         self.fields().map(|(name, value)| (name, value.as_f64()))
     }
 }

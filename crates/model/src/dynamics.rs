@@ -4,8 +4,8 @@
 //! (`rolldyn_dynamics::ContactParameters::for_bearing`).
 
 use crate::schema::{
-    DynamicsSection, EndFrictionName, EndPairSection, FrictionSection, PairSection,
-    RacewayPairSection,
+    CageLandLawName, DynamicsSection, EndFrictionName, EndPairSection, FrictionSection,
+    PairSection, RacewayPairSection,
 };
 use rolldyn_geometry::GeometryError;
 
@@ -51,11 +51,25 @@ pub struct EndPairInputs {
     pub friction_law: Option<EndFrictionLaw>,
 }
 
+/// Force law of the cage on its guiding land (`[dynamics] cage_land_law`, docs/theory.md §3).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum CageLandLaw {
+    /// the film of a finite journal bearing (Reynolds crate) with the pair-14 contact beyond
+    /// the floating clearance
+    #[default]
+    Hydrodynamic,
+    /// the seed's plain pair-14 contact `K_p δⁿ + STEP(δ,0,0,d,C_h)·δ̇` with friction μ(v) F
+    /// (seed 000 Table 2.1, SPEC §3.3): no film
+    Contact,
+}
+
 /// The `[dynamics]` section in SI.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct DynamicsInputs {
     /// cage viscous drag coefficient c of `M = −c ω_cage`, N·m·s/rad (SPEC §3.6)
     pub cage_drag_n_m_s: Option<f64>,
+    /// force law of the cage on its guiding land
+    pub cage_land_law: CageLandLaw,
     /// raceway damping C_max of the whole roller–raceway contact, N·s/m (pairs 13, 23)
     pub raceway_damping: Option<f64>,
     /// raceway damping ramp δ*, m
@@ -174,6 +188,10 @@ pub(crate) fn dynamics(section: Option<&DynamicsSection>) -> Result<DynamicsInpu
     let (raceway_damping, raceway_damping_ramp) = raceways(s.raceways.as_ref())?;
     Ok(DynamicsInputs {
         cage_drag_n_m_s: non_negative("dynamics.cage_drag".into(), s.cage_drag.map(|q| q.si()))?,
+        cage_land_law: match s.cage_land_law {
+            None | Some(CageLandLawName::Hydrodynamic) => CageLandLaw::Hydrodynamic,
+            Some(CageLandLawName::Contact) => CageLandLaw::Contact,
+        },
         raceway_damping,
         raceway_damping_ramp,
         roller_cage: pair("dynamics.roller_cage", s.roller_cage.as_ref())?,

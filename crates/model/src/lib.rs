@@ -15,7 +15,7 @@ mod operation;
 pub mod schema;
 
 pub use convert::DEFAULT_SLICES;
-pub use dynamics::{DynamicsInputs, EndFrictionLaw, EndPairInputs, PairInputs};
+pub use dynamics::{CageLandLaw, DynamicsInputs, EndFrictionLaw, EndPairInputs, PairInputs};
 pub use error::{MAX_QUOTED_CHARS, ModelError, shorten_long_words};
 pub use operation::{
     DEFAULT_STARTUP_REVOLUTIONS, FixedLoad, FrozenPoint, Lubrication, Operating, Schedules,

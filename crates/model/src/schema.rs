@@ -363,6 +363,8 @@ pub struct TemperatureSection {
 pub struct DynamicsSection {
     /// c of `M = −c ω_cage`, e.g. "662 Nmm/(rad/ms)" or "6.62e-4 Nms"
     pub cage_drag: Option<Quantity<RotationalDamping>>,
+    /// force law of the cage on its guiding land: "hydrodynamic" or "contact"
+    pub cage_land_law: Option<CageLandLawName>,
     /// pairs 13, 23
     pub raceways: Option<RacewayPairSection>,
     /// pair 34
@@ -373,6 +375,14 @@ pub struct DynamicsSection {
     pub roller_end_rib: Option<EndPairSection>,
     /// pair 54
     pub roller_end_cage: Option<EndPairSection>,
+}
+
+/// Force law names of the cage ↔ guiding land.
+#[derive(Debug, Deserialize, Clone, Copy, PartialEq, Eq)]
+#[serde(rename_all = "kebab-case")]
+pub enum CageLandLawName {
+    Hydrodynamic,
+    Contact,
 }
 
 /// Roller slices ↔ raceways (the slice law is built from the geometry).

@@ -1,7 +1,7 @@
 //! `[dynamics]`: cage drag and the SPEC Table 2.1 contact parameters, converted to SI; bad
 //! values name their key.
 
-use rolldyn_model::{EndFrictionLaw, parse};
+use rolldyn_model::{CageLandLaw, EndFrictionLaw, parse};
 
 const GOOD: &str = rolldyn_model::DEFAULT_MODEL;
 
@@ -87,4 +87,26 @@ fn bad_values_name_their_key() {
         assert!(e.contains(key), "{text}: {e}");
         assert!(e.starts_with("m.toml:"), "{e}");
     }
+}
+
+/// `[dynamics] cage_land_law`: hydrodynamic by default, "contact" for the plain pair-14 law; any
+/// other value is a one-line error at its key and line.
+#[test]
+fn cage_land_law_parses_and_names_a_bad_value() {
+    let default = parse(GOOD, "m.toml").unwrap();
+    assert_eq!(default.dynamics.cage_land_law, CageLandLaw::Hydrodynamic);
+    let contact = GOOD.replace("[dynamics]\n", "[dynamics]\ncage_land_law = \"contact\"\n");
+    assert_ne!(contact, GOOD, "the example has a [dynamics] table");
+    let m = parse(&contact, "m.toml").unwrap();
+    assert_eq!(m.dynamics.cage_land_law, CageLandLaw::Contact);
+    let bad = GOOD.replace("[dynamics]\n", "[dynamics]\ncage_land_law = \"film\"\n");
+    let e = parse(&bad, "m.toml").unwrap_err().to_string();
+    let line = bad
+        .lines()
+        .position(|l| l.starts_with("cage_land_law"))
+        .unwrap()
+        + 1;
+    assert!(e.starts_with(&format!("m.toml:{line}:")), "{e}");
+    assert!(e.contains("dynamics.cage_land_law"), "{e}");
+    assert!(e.contains("contact") && !e.contains('\n'), "{e}");
 }

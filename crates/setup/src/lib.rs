@@ -1,7 +1,7 @@
 //! From a model file to a dynamics run (SPEC §3.7–3.8): the operating conditions of the
 //! `[operating]` section with its schedules, loads and frozen points, the contact parameters of
 //! `[dynamics]` (SPEC Table 2.1), and a [`Simulation`] started at the quasi-static cage speed
-//! with the hydrodynamic cage land. Shared by `rolldyn simulate`, `sweep`, `startup` and `demo`;
+//! with the cage-land law of `[dynamics] cage_land_law` (hydrodynamic land or plain contact). Shared by `rolldyn simulate`, `sweep`, `startup` and `demo`;
 //! [`speed`] times such runs for `rolldyn bench`.
 
 pub mod quasi_static;
@@ -12,6 +12,7 @@ use rolldyn_dynamics::parameters::ContactParameters;
 use rolldyn_dynamics::settings::DynamicsSettings;
 use rolldyn_dynamics::{RacewayTraction, Simulation};
 use rolldyn_geometry::BearingModel;
+use rolldyn_model::CageLandLaw;
 
 /// The model cannot be turned into a simulation (missing section, bad override, invalid
 /// parameters). One line naming what is wrong.
@@ -403,42 +404,18 @@ pub fn prepare_with(
         &conditions,
         lubrication,
         clearance_is_operating,
+        quasi_static::matching_land_model(bearing, inputs).as_ref(),
         &mut initial,
     );
     let mut sim = Simulation::with_initial_state(
         bearing, conditions, parameters, settings, traction, &initial,
     )
     .map_err(|e| SetupError(e.to_string()))?;
-    // Hydrodynamic cage land (Reynolds crate) wherever a land guides the cage (issue 7 item 3).
-    if let Some(cage) = bearing
-        .cage
-        .as_ref()
-        .filter(|c| c.guidance != rolldyn_geometry::CageGuidance::Rollers)
+    // The simulation's own land law is the plain pair-14 contact (`TwoLevelLand`); the
+    // hydrodynamic land replaces it where the model asks for it (theory §3.3).
+    if inputs.cage_land_law == CageLandLaw::Hydrodynamic
+        && let Some(land) = hydrodynamic_land(bearing, lubrication, cage_temperature, land_contact)?
     {
-        let inner = cage.guidance == rolldyn_geometry::CageGuidance::InnerLand;
-        let ring = if inner {
-            &bearing.inner_ring
-        } else {
-            &bearing.outer_ring
-        };
-        let width = ring
-            .guiding_land
-            .map_or(cage.width, |l| l.width)
-            .min(cage.width);
-        let viscosity = lubrication
-            .oil
-            .dynamic_viscosity(lubrication.oil.clamp_temperature(cage_temperature))
-            .map_err(|e| SetupError(format!("[lubricant]: {e}")))?;
-        let land = rolldyn_dynamics::HydrodynamicLand::new(
-            0.5 * cage.land_diameter().unwrap_or(0.0),
-            width,
-            2,
-            0.5 * cage.floating_clearance,
-            inner,
-            viscosity,
-            land_contact,
-        )
-        .map_err(|e| SetupError(e.to_string()))?;
         sim.set_cage_land_model(Box::new(land));
     }
     Ok(Prepared {
@@ -448,10 +425,52 @@ pub fn prepare_with(
     })
 }
 
+/// The hydrodynamic cage land (Reynolds crate, issue 7 item 3) on the land that guides the
+/// cage, with `contact` beyond the film; `None` for a roller-guided cage.
+fn hydrodynamic_land(
+    bearing: &rolldyn_geometry::CylindricalRollerBearing,
+    lubrication: &rolldyn_model::Lubrication,
+    cage_temperature_k: f64,
+    contact: rolldyn_dynamics::TwoLevelLand,
+) -> Result<Option<rolldyn_dynamics::HydrodynamicLand>, SetupError> {
+    let Some(cage) = bearing
+        .cage
+        .as_ref()
+        .filter(|c| c.guidance != rolldyn_geometry::CageGuidance::Rollers)
+    else {
+        return Ok(None);
+    };
+    let inner = cage.guidance == rolldyn_geometry::CageGuidance::InnerLand;
+    let ring = if inner {
+        &bearing.inner_ring
+    } else {
+        &bearing.outer_ring
+    };
+    let width = ring
+        .guiding_land
+        .map_or(cage.width, |l| l.width)
+        .min(cage.width);
+    let viscosity = lubrication
+        .oil
+        .dynamic_viscosity(lubrication.oil.clamp_temperature(cage_temperature_k))
+        .map_err(|e| SetupError(format!("[lubricant]: {e}")))?;
+    rolldyn_dynamics::HydrodynamicLand::new(
+        0.5 * cage.land_diameter().unwrap_or(0.0),
+        width,
+        2,
+        0.5 * cage.floating_clearance,
+        inner,
+        viscosity,
+        contact,
+    )
+    .map(Some)
+    .map_err(|e| SetupError(e.to_string()))
+}
+
 /// Issue 6 "start from the quasi-static solution": the rollers keep the static load
 /// distribution of the default start, but cage and roller orbit speeds take the quasi-static
-/// cage speed (Muraki friction, the finite journal-bearing land of the dynamics'
-/// [`rolldyn_dynamics::HydrodynamicLand`]), spins pure rolling on the outer raceway at
+/// cage speed (Muraki friction, `land` the quasi-static land matching the dynamics' land law,
+/// [`quasi_static::matching_land_model`]), spins pure rolling on the outer raceway at
 /// that speed. When the quasi-static model cannot solve the point the epicyclic start is kept.
 /// The quasi-static radial load is the r.m.s. over a shaft revolution of the vector sum of the
 /// fixed and rotating loads, √(|F_fixed|² + |F_rot|²) (their cross term averages out); it equals
@@ -461,6 +480,7 @@ fn start_at_quasi_static_speeds(
     conditions: &OperatingConditions,
     lubrication: &rolldyn_model::Lubrication,
     clearance_is_operating: bool,
+    land: &dyn rolldyn_quasistatic::QuasiStaticLandModel,
     initial: &mut rolldyn_dynamics::InitialState,
 ) -> Result<rolldyn_quasistatic::SkidResult, String> {
     let (wi, wo) = (
@@ -502,8 +522,7 @@ fn start_at_quasi_static_speeds(
     } else {
         bearing
     };
-    let land = quasi_static::cage_land_model(bearing, quasi_static::LandChoice::Finite);
-    let result = rolldyn_quasistatic::solve_with_land_model(bearing, &qs, &options, land.as_ref())
+    let result = rolldyn_quasistatic::solve_with_land_model(bearing, &qs, &options, land)
         .map_err(|e| e.to_string())?;
     let wc = result.cage_speed_rad_s;
     initial.cage_speed_rad_s = wc;

@@ -708,7 +708,14 @@ pub fn print_summary(model: &str, s: &RunSummary, limits: &[StepLimit]) {
     );
     line(
         "max inner sliding speed",
-        format!("{:.3} m/s", s.max_inner_sliding_speed_m_s),
+        format!(
+            "{:.3} m/s (rolling direction {:.3}, axial {:.3}; most loaded roller {:.3}, {:.3})",
+            s.max_inner_sliding_speed_m_s,
+            s.max_inner_sliding_rolling_direction_m_s,
+            s.max_inner_sliding_axial_m_s,
+            s.max_inner_sliding_rolling_direction_most_loaded_m_s,
+            s.max_inner_sliding_axial_most_loaded_m_s
+        ),
     );
     line("max relative slip", format!("{:.4}", s.max_relative_slip));
     line(

@@ -74,11 +74,11 @@ fn skid(model: rolldyn_model::Model) -> Result<BTreeMap<String, f64>, String> {
         return Err("skid needs a cylindrical bearing".into());
     };
     use rolldyn_setup::quasi_static::{
-        LandChoice, QuasiStaticOverrides, cage_land_model, quasi_static_conditions,
+        QuasiStaticOverrides, matching_land_model, quasi_static_conditions,
     };
     let c = quasi_static_conditions(&model, &QuasiStaticOverrides::default())
         .map_err(|e| e.to_string())?;
-    let land = cage_land_model(bearing, LandChoice::Finite);
+    let land = matching_land_model(bearing, &model.dynamics);
     let result = rolldyn_quasistatic::solve_with_land_model(
         bearing,
         &c,

@@ -11,6 +11,11 @@ use rolldyn_lubrication::ContactState;
 pub(crate) struct ContactTable {
     pub force: Vec<f64>,
     pub sliding: Vec<f64>,
+    /// the load-weighted mean sliding velocity split along the roller
+    /// ([`crate::kinematics::split_sliding`]): the sliding velocity at the contact's centre of
+    /// pressure (it is linear along the roller), signed, m/s
+    pub sliding_rolling: Vec<f64>,
+    pub sliding_axial: Vec<f64>,
     pub rolling: Vec<f64>,
     pub film: Vec<f64>,
     pub lambda: Vec<f64>,
@@ -26,6 +31,8 @@ impl ContactTable {
         Self {
             force: vec![0.0; z],
             sliding: vec![0.0; z],
+            sliding_rolling: vec![0.0; z],
+            sliding_axial: vec![0.0; z],
             rolling: vec![0.0; z],
             film: vec![0.0; z],
             lambda: vec![0.0; z],
@@ -44,6 +51,8 @@ impl ContactTable {
             return;
         }
         self.sliding[j] = 0.0;
+        self.sliding_rolling[j] = 0.0;
+        self.sliding_axial[j] = 0.0;
         self.rolling[j] = 0.0;
         self.film[j] = 0.0;
         self.lambda[j] = 0.0;
@@ -60,6 +69,8 @@ impl ContactTable {
         if q > 0.0 {
             let w = 1.0 / q;
             self.sliding[j] *= w;
+            self.sliding_rolling[j] *= w;
+            self.sliding_axial[j] *= w;
             self.rolling[j] *= w;
             self.film[j] *= w;
             self.lambda[j] *= w;

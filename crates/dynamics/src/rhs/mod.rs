@@ -220,6 +220,7 @@ fn raceway_forces(
         (&mut diag.inner, &mut diag.outer),
         &mut sc.wrench,
         f_inner,
+        &sc.rollers.axis,
         tables,
     );
     if tables == Tables::Fill {

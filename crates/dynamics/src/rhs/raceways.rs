@@ -6,10 +6,10 @@
 use super::Wrench;
 use super::bodies::{Bodies, RingKin};
 use super::diagnostics::{ContactTable, Tables, Violation};
-use crate::kinematics::RollerKinematics;
+use crate::kinematics::{RollerKinematics, split_sliding};
 use crate::model::{Model, RacewaySlices};
 use crate::slice_kernel::{self, LANES, LoadedRun, RingKinematics, RollerLanes, SliceOutputs};
-use crate::vec3::{V3, add, axpy, cross, dot, sub};
+use crate::vec3::{V3, add, axpy, cross, dot, scale, sub};
 use rolldyn_lubrication::{BatchContact, ContactGeometry, ContactState, SliceBatch};
 
 /// Scratch of the raceway contacts of one evaluation: per raceway the slot loop's inputs and
@@ -395,13 +395,15 @@ fn cut(column: &[f64], first: usize, n: usize) -> &[f64] {
 /// Pass 2 of the raceway contacts: evaluates the traction of every loaded slice (one batch per
 /// raceway, [`SliceBatch::evaluate`]) and adds the normal and friction force of each loaded
 /// slice and their moment to its roller's `wrench`, their reaction to the inner ring
-/// (`f_inner`) and, with [`Tables::Fill`], fills the per-roller contact tables.
+/// (`f_inner`) and, with [`Tables::Fill`], fills the per-roller contact tables (`axis`: the
+/// rollers' unit axes, for the sliding split).
 pub(super) fn apply_traction(
     model: &Model,
     sc: &mut RacewayScratch,
     (inner, outer): (&mut ContactTable, &mut ContactTable),
     wrench: &mut [Wrench],
     f_inner: &mut V3,
+    axis: &[Vec<f64>; 3],
     tables: Tables,
 ) {
     for (pass, table, tmodel, is_inner) in [
@@ -420,6 +422,7 @@ pub(super) fn apply_traction(
         }
         if tables == Tables::Fill {
             fill_table(&pass.loaded, table);
+            fill_sliding_split(&pass.loaded, &pass.out, axis, table);
         }
     }
 }
@@ -469,6 +472,35 @@ fn fill_table(loaded: &LoadedContacts, table: &mut ContactTable) {
             if q > table.worst_q[j] {
                 table.worst_q[j] = q;
                 table.worst[j] = Some(batch.state(i));
+            }
+        }
+    }
+}
+
+/// The load-weighted sums of the sliding velocity split along the roller
+/// ([`split_sliding`]) of every loaded slice into `table` (rolling-direction and axial
+/// components; [`ContactTable::finish`] turns them into means).
+fn fill_sliding_split(
+    loaded: &LoadedContacts,
+    out: &SliceOutputs,
+    axis: &[Vec<f64>; 3],
+    table: &mut ContactTable,
+) {
+    for block in &loaded.blocks {
+        let j = block.roller;
+        let a = [axis[0][j], axis[1][j], axis[2][j]];
+        for run in &loaded.runs[block.runs.clone()] {
+            for s in run.slot..run.slot + run.batch.len() {
+                let q = out.q[s];
+                let n = scale([out.force[0][s], out.force[1][s], out.force[2][s]], 1.0 / q);
+                let dir = [
+                    out.slide_dir[0][s],
+                    out.slide_dir[1][s],
+                    out.slide_dir[2][s],
+                ];
+                let split = split_sliding(n, a, scale(dir, out.vs[s]));
+                table.sliding_rolling[j] += q * split.rolling;
+                table.sliding_axial[j] += q * split.axial;
             }
         }
     }
