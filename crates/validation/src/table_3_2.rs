@@ -130,6 +130,26 @@ pub const COMPARED_COLUMNS: [ComparedColumn; 8] = [
     },
 ];
 
+/// The numeric columns of a CSV table by name (a cell that is not a number is NaN).
+pub fn read_columns(path: &Path) -> Result<HashMap<String, Vec<f64>>, String> {
+    let mut reader =
+        csv::Reader::from_path(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    let headers: Vec<String> = reader
+        .headers()
+        .map_err(|e| e.to_string())?
+        .iter()
+        .map(str::to_string)
+        .collect();
+    let mut columns: Vec<Vec<f64>> = vec![Vec::new(); headers.len()];
+    for record in reader.records() {
+        let record = record.map_err(|e| format!("{}: {e}", path.display()))?;
+        for (column, v) in columns.iter_mut().zip(record.iter()) {
+            column.push(v.parse().unwrap_or(f64::NAN));
+        }
+    }
+    Ok(headers.into_iter().zip(columns).collect())
+}
+
 /// A sweep's `summary.csv`: variant name → column name → value (an empty cell is NaN).
 pub fn read_summary(path: &Path) -> Result<HashMap<String, HashMap<String, f64>>, String> {
     let mut reader =
