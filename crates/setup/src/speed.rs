@@ -1,7 +1,7 @@
 //! The speed benchmark of the dynamics (`rolldyn bench`): simulated time over wall time of a
 //! model's run on one thread, repeated, because a shared machine's speed drifts from run to run
 //! (BENCHMARKS.md, "Dynamics"). The goal of the project is ≥ 0.1 for the embedded 2002834 model
-//! at 6371 rpm over 20 cage revolutions.
+//! over 20 cage revolutions.
 
 use crate::{Overrides, SetupError, prepare};
 use rolldyn_dynamics::output::{NullSink, RunSummary};
