@@ -15,6 +15,11 @@ pub struct Clearance {
     pub roller_rib_axial: Option<f64>,
     /// Whether a negative radial clearance (preload) is intended.
     pub allow_preload: bool,
+    /// `radial` is the operating clearance (seed 000 Table 3.1 gives operating clearances): the
+    /// quasi-static model adds no fit, thermal or centrifugal change to it. Otherwise it is the
+    /// mounted internal clearance and the quasi-static model derives the operating one (SPEC
+    /// §5.2). The dynamics always runs on `radial`.
+    pub radial_is_operating: bool,
 }
 
 /// Ring misalignment (SPEC §3.7).

@@ -431,6 +431,7 @@ pub(crate) fn build(file: &ModelFile) -> Result<BearingModel> {
                         .map_or(geometric, |r| r.si()),
                     roller_rib_axial: clearance.and_then(|c| c.roller_rib_axial).map(|r| r.si()),
                     allow_preload: clearance.is_some_and(|c| c.preload),
+                    radial_is_operating: clearance.is_some_and(|c| c.operating),
                 },
                 misalignment,
             }))

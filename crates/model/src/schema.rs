@@ -213,6 +213,8 @@ pub struct ClearanceSection {
     pub roller_rib_axial: Option<Quantity<Length>>,
     #[serde(default)]
     pub preload: bool,
+    #[serde(default)]
+    pub operating: bool,
 }
 
 #[derive(Debug, Deserialize)]

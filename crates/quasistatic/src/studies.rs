@@ -347,6 +347,7 @@ pub fn intershaft_bearing() -> CylindricalRollerBearing {
             radial: 0.043e-3,
             roller_rib_axial: None,
             allow_preload: false,
+            radial_is_operating: false,
         },
         misalignment: Misalignment::default(),
     }
