@@ -88,6 +88,7 @@ fn checked_inputs(
     let wi = finite("inner_speed_rad_s", cond.inner_speed_rad_s)?;
     let wo = finite("outer_speed_rad_s", cond.outer_speed_rad_s)?;
     let fr = finite("radial_load_n", cond.radial_load_n)?;
+    finite("load_speed_rad_s", cond.load_speed_rad_s)?;
     if fr < 0.0 {
         return Err(QsError::InvalidInput(format!(
             "radial_load_n must be ≥ 0 (its direction is the reference), got {fr}"
@@ -513,6 +514,7 @@ impl<'a> Setup<'a> {
             &on_cage,
             cage_speed,
             self.land_speed,
+            self.cond.load_speed_rad_s,
             land_model,
         );
         ws.balance = bal;
