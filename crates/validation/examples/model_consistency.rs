@@ -4,7 +4,8 @@
 //! (bar contact at Ø192.5 mm, seed 000 §3.1.1.5). Prints one line per row and writes the CSV.
 //!
 //! `cargo run --release -p rolldyn-validation --example model_consistency -- [cases]
-//! [revolutions] [skipped] [csv]` (defaults: `ot,2002834`, 10, 4,
+//! [revolutions] [skipped] [csv]` (cases `ot`, `ot-tight-pocket`, `2002834`, each optionally `@<load N>`, e.g.
+//! `2002834@7000`; defaults: `ot,2002834`, 10, 4,
 //! `docs/validation/model-consistency.csv`). Rows run in parallel (rayon); each is
 //! deterministic.
 
@@ -22,7 +23,18 @@ fn load_model(path: &str) -> rolldyn_model::Model {
     rolldyn_model::parse(&text, path).unwrap_or_else(|e| panic!("{path}: {e}"))
 }
 
-fn case(name: &str) -> Case {
+/// `ot`, `ot-tight-pocket`, `2002834`, or one of them with `@<load in N>` (e.g. `2002834@7000`).
+fn case(spec: &str) -> Case {
+    let (name, load) = spec.split_once('@').unwrap_or((spec, ""));
+    let mut case = named_case(name);
+    if let Ok(load) = load.parse::<f64>() {
+        case.radial_load_n = load;
+        case.name = format!("{name} at {load} N");
+    }
+    case
+}
+
+fn named_case(name: &str) -> Case {
     match name {
         "ot" => Case {
             name: "obrien-taylor 4000 rpm 201 N fixed".into(),
@@ -32,6 +44,18 @@ fn case(name: &str) -> Case {
             load_direction: LoadDirection::Fixed,
             oil_temperature_k: None,
         },
+        "ot-tight-pocket" => {
+            // pocket play 0.05 mm instead of the model's 0.3 mm: how much of the dynamic slip
+            // is the rollers running ahead of the cage through their play in the load zone
+            let mut case = named_case("ot");
+            if let BearingModel::Cylindrical(b) = &mut case.model.bearing
+                && let Some(cage) = b.cage.as_mut()
+            {
+                cage.pocket_circumferential = 15.05e-3;
+            }
+            case.name = "obrien-taylor pocket 15.05 mm".into();
+            case
+        }
         "2002834" => {
             let mut model = load_model("examples/2002834.toml");
             if let BearingModel::Cylindrical(b) = &mut model.bearing
@@ -49,7 +73,7 @@ fn case(name: &str) -> Case {
                 oil_temperature_k: None,
             }
         }
-        other => panic!("unknown case {other} (ot, 2002834)"),
+        other => panic!("unknown case {other} (ot, ot-tight-pocket, 2002834)"),
     }
 }
 

@@ -131,6 +131,14 @@ pub fn rows() -> Vec<Row> {
             },
         },
         Row {
+            label: "both: no drag and no land film (no cage torque)",
+            switches: Switches {
+                cage_drag: false,
+                land_film: false,
+                ..t
+            },
+        },
+        Row {
             label: "both: frictionless cage bars",
             switches: Switches {
                 bar_friction: false,
@@ -201,8 +209,10 @@ pub struct RollerTraction {
     /// Slide-to-roll ratio on the outer raceway of the rollers without inner contact force.
     pub outer_srr_unloaded: f64,
     /// Slide-to-roll ratio on the inner raceway of the rollers with inner contact force
-    /// (weighted by that force, as the next two).
+    /// (weighted by that force, as the next three).
     pub inner_srr_loaded: f64,
+    /// Slide-to-roll ratio on the outer raceway of those rollers.
+    pub outer_srr_loaded: f64,
     /// Traction coefficient on the inner raceway of those rollers.
     pub inner_mu_loaded: f64,
     /// Film parameter Λ on the inner raceway of those rollers.
@@ -214,7 +224,7 @@ pub struct RollerTraction {
 #[derive(Debug, Clone, Default)]
 struct TractionSums {
     unloaded: (f64, usize),
-    loaded: [f64; 3],
+    loaded: [f64; 4],
     loaded_weight: f64,
 }
 
@@ -226,9 +236,10 @@ impl TractionSums {
         }
     }
 
-    fn add_loaded(&mut self, force: f64, srr: f64, mu: f64, lambda: f64) {
-        if srr.is_finite() && mu.is_finite() && lambda.is_finite() {
-            for (sum, v) in self.loaded.iter_mut().zip([srr, mu, lambda]) {
+    fn add_loaded(&mut self, force: f64, srr: f64, outer_srr: f64, mu: f64, lambda: f64) {
+        let values = [srr, outer_srr, mu, lambda];
+        if values.iter().all(|v| v.is_finite()) {
+            for (sum, v) in self.loaded.iter_mut().zip(values) {
                 *sum += force * v;
             }
             self.loaded_weight += force;
@@ -244,8 +255,9 @@ impl TractionSums {
         RollerTraction {
             outer_srr_unloaded: self.unloaded.0 / self.unloaded.1.max(1) as f64,
             inner_srr_loaded: self.loaded[0] / n,
-            inner_mu_loaded: self.loaded[1] / n,
-            inner_lambda_loaded: self.loaded[2] / n,
+            outer_srr_loaded: self.loaded[1] / n,
+            inner_mu_loaded: self.loaded[2] / n,
+            inner_lambda_loaded: self.loaded[3] / n,
         }
     }
 }
@@ -356,6 +368,7 @@ pub fn quasi_static(case: &Case, switches: &Switches) -> Result<QuasiStaticResul
             Zone::Loaded => traction.add_loaded(
                 roller.inner.normal_force_n,
                 roller.inner.slide_roll_ratio,
+                roller.outer.slide_roll_ratio,
                 roller.inner.friction_coefficient,
                 roller.inner.lambda.unwrap_or(f64::NAN),
             ),
@@ -413,6 +426,7 @@ impl OutputSink for Recorder {
                 self.traction.add_loaded(
                     force,
                     r.inner.slide_to_roll[j],
+                    r.outer.slide_to_roll[j],
                     r.inner.traction_coefficient[j],
                     r.inner.lambda[j],
                 );
@@ -526,7 +540,7 @@ pub fn table(case: &Case, rows: &[Row], length: &RunLength) -> Vec<RowResult> {
 }
 
 /// CSV header of [`csv_line`].
-pub const CSV_HEADER: &str = "case,row,qs_slip,qs_slip_dynamic_reference,dyn_slip,dyn_slip_scatter,dyn_revolutions,ratio_dyn_qs,qs_land_force_n,qs_land_eccentricity,dyn_land_force_n,dyn_cage_offset_um,qs_raceways_w,dyn_raceways_w,qs_bars_w,dyn_bars_w,qs_ends_w,dyn_ends_w,qs_land_w,dyn_land_w,qs_drag_w,dyn_drag_w,qs_rolling_resistance_w,qs_outer_srr_unloaded,dyn_outer_srr_unloaded,qs_inner_srr_loaded,dyn_inner_srr_loaded,qs_inner_mu_loaded,dyn_inner_mu_loaded,qs_inner_lambda_loaded,dyn_inner_lambda_loaded,dyn_wall_s,error";
+pub const CSV_HEADER: &str = "case,row,qs_slip,qs_slip_dynamic_reference,dyn_slip,dyn_slip_scatter,dyn_revolutions,ratio_dyn_qs,qs_land_force_n,qs_land_eccentricity,dyn_land_force_n,dyn_cage_offset_um,qs_raceways_w,dyn_raceways_w,qs_bars_w,dyn_bars_w,qs_ends_w,dyn_ends_w,qs_land_w,dyn_land_w,qs_drag_w,dyn_drag_w,qs_rolling_resistance_w,qs_outer_srr_unloaded,dyn_outer_srr_unloaded,qs_inner_srr_loaded,dyn_inner_srr_loaded,qs_outer_srr_loaded,dyn_outer_srr_loaded,qs_inner_mu_loaded,dyn_inner_mu_loaded,qs_inner_lambda_loaded,dyn_inner_lambda_loaded,dyn_wall_s,error";
 
 /// One CSV line of a row (NaN where a model failed; the reason in the last column).
 pub fn csv_line(case: &str, r: &RowResult) -> String {
@@ -567,6 +581,8 @@ pub fn csv_line(case: &str, r: &RowResult) -> String {
         df(&|d| d.traction.outer_srr_unloaded),
         qf(&|q| q.traction.inner_srr_loaded),
         df(&|d| d.traction.inner_srr_loaded),
+        qf(&|q| q.traction.outer_srr_loaded),
+        df(&|d| d.traction.outer_srr_loaded),
         qf(&|q| q.traction.inner_mu_loaded),
         df(&|d| d.traction.inner_mu_loaded),
         qf(&|q| q.traction.inner_lambda_loaded),
