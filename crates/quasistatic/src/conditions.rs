@@ -340,6 +340,11 @@ pub struct CageLandInputs {
     pub rails: u32,
     /// Switch the land friction off. Default true (on).
     pub enabled: bool,
+    /// Press the cage on its land with the centrifugal force of its own displacement,
+    /// F_cs = m_c e ω₀² (SPEC §5.5 proposal: the displaced centre orbits with the cage, a
+    /// synchronous whirl). Default true. Off: the centre stays where the roller forces put it
+    /// (no whirl; issue 23 compares it with the dynamics).
+    pub centrifugal_pressing: bool,
 }
 
 impl Default for CageLandInputs {
@@ -348,6 +353,7 @@ impl Default for CageLandInputs {
             rail_width_m: None,
             rails: 2,
             enabled: true,
+            centrifugal_pressing: true,
         }
     }
 }

@@ -240,7 +240,11 @@ fn land_setup(
                     radial_clearance_m: 0.5 * cc.operating_m,
                     viscosity_pa_s: viscosity(cond, t_land)?,
                     outer_ring,
-                    cage_mass_kg: cage_mass,
+                    cage_mass_kg: if cond.cage_land.centrifugal_pressing {
+                        cage_mass
+                    } else {
+                        0.0
+                    },
                 }),
                 if outer_ring { wo } else { wi },
             )

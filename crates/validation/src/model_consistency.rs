@@ -55,6 +55,9 @@ pub struct Switches {
     /// Quasi-static only: the land film sees the load turning with a rotating load (the roller
     /// pushes follow the load zone); off: the load resultant is taken as fixed in space.
     pub rotating_load_on_land: bool,
+    /// Quasi-static only: the cage is pressed on its land by the centrifugal force of its own
+    /// displacement m_c e ω₀² (a synchronous whirl); off: by the roller forces alone.
+    pub land_centrifugal: bool,
     /// Both: friction at the roller ↔ cage-bar contacts (off: frictionless bars in both).
     pub bar_friction: bool,
     /// Dynamics only: the roller-end contacts with the ribs and pocket faces (off: not
@@ -71,6 +74,7 @@ impl Switches {
             cage_drag: true,
             land_film: true,
             rotating_load_on_land: true,
+            land_centrifugal: true,
             bar_friction: true,
             end_contacts: true,
         }
@@ -113,6 +117,13 @@ pub fn rows() -> Vec<Row> {
             label: "QS: land load fixed in space",
             switches: Switches {
                 rotating_load_on_land: false,
+                ..t
+            },
+        },
+        Row {
+            label: "QS: no centrifugal pressing of the displaced cage",
+            switches: Switches {
+                land_centrifugal: false,
                 ..t
             },
         },
@@ -349,6 +360,7 @@ pub fn quasi_static(case: &Case, switches: &Switches) -> Result<QuasiStaticResul
     if !switches.rotating_load_on_land {
         qs.load_speed_rad_s = 0.0;
     }
+    qs.cage_land.centrifugal_pressing = switches.land_centrifugal;
     if !switches.bar_friction {
         qs.bar_friction = rolldyn_quasistatic::BarFriction::Constant(0.0);
     }
@@ -465,7 +477,7 @@ pub fn dynamic(
         .map_err(|e| e.to_string())?;
     let epicyclic = bearing.epicyclic_cage_speed(case.speed_rad_s, 0.0).abs();
     let revolution_s = std::f64::consts::TAU / epicyclic;
-    let mut inputs = case.model.dynamics.clone();
+    let mut inputs = case.model.dynamics;
     if !switches.bar_friction {
         inputs.roller_cage.mu_static = Some(0.0);
         inputs.roller_cage.mu_dynamic = Some(0.0);
