@@ -76,8 +76,8 @@ pub fn muraki_friction(lubrication: &Lubrication) -> FrictionModel {
     }
 }
 
-/// The quasi-static operating point of `model`, overridden by `overrides`: speeds, radial load,
-/// part temperatures (oil temperature for the parts neither given), the bearing's ring tilt and
+/// The quasi-static operating point of `model`, overridden by `overrides`: speeds, radial load
+/// (turning with the inner ring when the model's load rotates), part temperatures (oil temperature for the parts neither given), the bearing's ring tilt and
 /// the raceway friction law.
 pub fn quasi_static_conditions(
     model: &Model,
@@ -114,6 +114,10 @@ pub fn quasi_static_conditions(
         )
     })?;
     let mut c = QuasiStaticConditions::new(inner, outer, load, lubrication.oil.clone(), oil);
+    if op.load_rotates {
+        // the land film sees the load zone turn with the inner ring (theory §6.5)
+        c.load_speed_rad_s = inner;
+    }
     let part = |given: Option<f64>, file: Option<f64>| given.or(file).unwrap_or(oil);
     let t = &mut c.temperatures;
     t.inner_ring = part(given.inner_ring, file.inner_ring);
@@ -207,6 +211,21 @@ pub fn dynamics_start_conditions(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A load rotating with the inner ring (2002834) turns the land film's load with it; a
+    /// fixed one (O'Brien–Taylor) does not.
+    #[test]
+    fn rotating_load_turns_with_the_inner_ring() {
+        for (text, rotates) in [
+            (include_str!("../../../examples/2002834.toml"), true),
+            (include_str!("../../../examples/obrien-taylor.toml"), false),
+        ] {
+            let model = rolldyn_model::parse(text, "m.toml").unwrap();
+            let c = quasi_static_conditions(&model, &QuasiStaticOverrides::default()).unwrap();
+            let expected = if rotates { c.inner_speed_rad_s } else { 0.0 };
+            assert_eq!(c.load_speed_rad_s, expected);
+        }
+    }
 
     /// Flags win over the file; parts not given take the file's value, then the oil's.
     #[test]
