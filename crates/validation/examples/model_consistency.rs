@@ -4,7 +4,7 @@
 //! (bar contact at Ø192.5 mm, seed 000 §3.1.1.5). Prints one line per row and writes the CSV.
 //!
 //! `cargo run --release -p rolldyn-validation --example model_consistency -- [cases]
-//! [revolutions] [skipped] [csv]` (cases `ot`, `ot-tight-pocket`, `2002834`, each optionally `@<load N>`, e.g.
+//! [revolutions] [skipped] [csv]` (cases `ot`, `ot-tight-pocket`, `ot-preload`, `2002834`, each optionally `@<load N>`, e.g.
 //! `2002834@7000`; defaults: `ot,2002834`, 10, 4,
 //! `docs/validation/model-consistency.csv`). Rows run in parallel (rayon); each is
 //! deterministic.
@@ -23,7 +23,7 @@ fn load_model(path: &str) -> rolldyn_model::Model {
     rolldyn_model::parse(&text, path).unwrap_or_else(|e| panic!("{path}: {e}"))
 }
 
-/// `ot`, `ot-tight-pocket`, `2002834`, or one of them with `@<load in N>` (e.g. `2002834@7000`).
+/// `ot`, `ot-tight-pocket`, `ot-preload`, `2002834`, or one of them with `@<load in N>` (e.g. `2002834@7000`).
 fn case(spec: &str) -> Case {
     let (name, load) = spec.split_once('@').unwrap_or((spec, ""));
     let mut case = named_case(name);
@@ -56,6 +56,16 @@ fn named_case(name: &str) -> Case {
             case.name = "obrien-taylor pocket 15.05 mm".into();
             case
         }
+        "ot-preload" => {
+            // 20 µm radial preload: every roller loaded, no unloaded zone to re-enter
+            let mut case = named_case("ot");
+            if let BearingModel::Cylindrical(b) = &mut case.model.bearing {
+                b.clearance.radial = -20e-6;
+                b.clearance.allow_preload = true;
+            }
+            case.name = "obrien-taylor preload 20 um".into();
+            case
+        }
         "2002834" => {
             let mut model = load_model("examples/2002834.toml");
             if let BearingModel::Cylindrical(b) = &mut model.bearing
@@ -73,7 +83,7 @@ fn named_case(name: &str) -> Case {
                 oil_temperature_k: None,
             }
         }
-        other => panic!("unknown case {other} (ot, ot-tight-pocket, 2002834)"),
+        other => panic!("unknown case {other} (ot, ot-tight-pocket, ot-preload, 2002834)"),
     }
 }
 
