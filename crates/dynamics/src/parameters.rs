@@ -27,7 +27,9 @@ pub struct PairParameters {
 }
 
 impl PairParameters {
-    /// Roller slice ↔ cage bar (pair 34). Defaults:
+    /// Roller slice ↔ cage bar (pair 34). A law derived from the bearing's own bar, its line
+    /// contact and the oil squeeze film is `rolldyn_contact::cage_bar::derive_for_bearing`
+    /// (docs/theory.md §2.3.1; the example models carry theirs). Generic defaults:
     /// * `K_p = 2·10⁹ N/m^1.1`, `n = 1.1`: a steel line contact over the bar length (exponent of
     ///   the slice laws (2.3)/(2.4), ≈ 1.1) in series with bar bending (a 4 × 10 × 11 mm steel bar
     ///   clamped at both ends: ≈ 1.6·10⁹ N/m); gives 500 N at 1 µm, stiffness 5.5·10⁸ N/m.

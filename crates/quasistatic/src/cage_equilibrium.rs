@@ -102,12 +102,14 @@ pub struct CageBalance {
     pub drag: CageDrag,
 }
 
-/// Cage balance at cage speed `cage_speed` with land ring speed `land_speed`.
+/// Cage balance at cage speed `cage_speed` with land ring speed `land_speed` and the roller
+/// force resultant turning at `load_speed` (the speed of the radial-load direction).
 pub fn cage_balance(
     setup: &CageSetup,
     rollers: &[RollerOnCage],
     cage_speed: f64,
     land_speed: f64,
+    load_speed: f64,
     land_model: &dyn QuasiStaticLandModel,
 ) -> CageBalance {
     let (mut fx, mut fy, mut t_s, mut scale) = (0.0, 0.0, 0.0, 0.0);
@@ -132,7 +134,7 @@ pub fn cage_balance(
             viscosity_pa_s: l.viscosity_pa_s,
             cage_speed_rad_s: cage_speed,
             land_speed_rad_s: land_speed,
-            load_speed_rad_s: 0.0,
+            load_speed_rad_s: load_speed,
             roller_force_n: resultant,
             cage_mass_kg: l.cage_mass_kg,
         }),

@@ -340,6 +340,11 @@ pub struct CageLandInputs {
     pub rails: u32,
     /// Switch the land friction off. Default true (on).
     pub enabled: bool,
+    /// Press the cage on its land with the centrifugal force of its own displacement,
+    /// F_cs = m_c e ω₀² (SPEC §5.5 proposal: the displaced centre orbits with the cage, a
+    /// synchronous whirl). Default true. Off: the centre stays where the roller forces put it
+    /// (no whirl; issue 23 compares it with the dynamics).
+    pub centrifugal_pressing: bool,
 }
 
 impl Default for CageLandInputs {
@@ -348,6 +353,7 @@ impl Default for CageLandInputs {
             rail_width_m: None,
             rails: 2,
             enabled: true,
+            centrifugal_pressing: true,
         }
     }
 }
@@ -362,6 +368,11 @@ pub struct QuasiStaticConditions {
     /// Radial load F_r on the inner ring, N (≥ 0); its direction is the reference of the roller
     /// angles.
     pub radial_load_n: f64,
+    /// Angular speed of the radial-load direction, rad/s: 0 for a load fixed in space (default),
+    /// the inner-ring speed for a load rotating with the inner ring (unbalance, seed 000
+    /// §3.1.1.5). The roller pushes on the cage follow the load zone, so the cage–land film sees
+    /// a load of this speed (theory §6.5).
+    pub load_speed_rad_s: f64,
     /// Tilt of the inner ring relative to the outer ring, rad; `None` → the bearing model's.
     pub misalignment_rad: Option<f64>,
     /// Azimuth of the tilt plane measured from the load direction, rad. Default 0 (tilt in the
@@ -408,6 +419,7 @@ impl QuasiStaticConditions {
             inner_speed_rad_s,
             outer_speed_rad_s,
             radial_load_n,
+            load_speed_rad_s: 0.0,
             misalignment_rad: None,
             misalignment_azimuth_rad: 0.0,
             temperatures: PartTemperatures::uniform(temperature_k),

@@ -88,6 +88,7 @@ fn checked_inputs(
     let wi = finite("inner_speed_rad_s", cond.inner_speed_rad_s)?;
     let wo = finite("outer_speed_rad_s", cond.outer_speed_rad_s)?;
     let fr = finite("radial_load_n", cond.radial_load_n)?;
+    finite("load_speed_rad_s", cond.load_speed_rad_s)?;
     if fr < 0.0 {
         return Err(QsError::InvalidInput(format!(
             "radial_load_n must be ≥ 0 (its direction is the reference), got {fr}"
@@ -239,7 +240,11 @@ fn land_setup(
                     radial_clearance_m: 0.5 * cc.operating_m,
                     viscosity_pa_s: viscosity(cond, t_land)?,
                     outer_ring,
-                    cage_mass_kg: cage_mass,
+                    cage_mass_kg: if cond.cage_land.centrifugal_pressing {
+                        cage_mass
+                    } else {
+                        0.0
+                    },
                 }),
                 if outer_ring { wo } else { wi },
             )
@@ -513,6 +518,7 @@ impl<'a> Setup<'a> {
             &on_cage,
             cage_speed,
             self.land_speed,
+            self.cond.load_speed_rad_s,
             land_model,
         );
         ws.balance = bal;

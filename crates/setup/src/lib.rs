@@ -472,9 +472,7 @@ fn hydrodynamic_land(
 /// cage speed (Muraki friction, `land` the quasi-static land matching the dynamics' land law,
 /// [`quasi_static::matching_land_model`]), spins pure rolling on the outer raceway at
 /// that speed. When the quasi-static model cannot solve the point the epicyclic start is kept.
-/// The quasi-static radial load is the r.m.s. over a shaft revolution of the vector sum of the
-/// fixed and rotating loads, √(|F_fixed|² + |F_rot|²) (their cross term averages out); it equals
-/// the load itself when only one kind is present.
+/// The quasi-static point is [`quasi_static::dynamics_start_conditions`].
 fn start_at_quasi_static_speeds(
     bearing: &rolldyn_geometry::CylindricalRollerBearing,
     conditions: &OperatingConditions,
@@ -483,45 +481,15 @@ fn start_at_quasi_static_speeds(
     land: &dyn rolldyn_quasistatic::QuasiStaticLandModel,
     initial: &mut rolldyn_dynamics::InitialState,
 ) -> Result<rolldyn_quasistatic::SkidResult, String> {
-    let (wi, wo) = (
-        conditions.inner_speed.speed(0.0),
-        conditions.outer_speed.speed(0.0),
+    let (qs, compensated) = quasi_static::dynamics_start_conditions(
+        bearing,
+        conditions,
+        lubrication,
+        clearance_is_operating,
     );
-    let fixed = conditions.fixed_force(0.0);
-    let load = fixed[0]
-        .hypot(fixed[1])
-        .hypot(conditions.rotating_force_magnitude(0.0));
-    let t = conditions.temperatures;
-    let mut qs = rolldyn_quasistatic::QuasiStaticConditions::new(
-        wi,
-        wo,
-        load,
-        lubrication.oil.clone(),
-        t.inner_raceway_k,
-    );
-    qs.temperatures.outer_ring = t.outer_raceway_k;
-    qs.temperatures.cage = t.cage_k;
-    // the dynamics' drag law, so that the start is the dynamics' own steady state
-    qs.drag.viscous_coefficient_n_m_s = Some(conditions.cage_drag_n_m_s);
-    qs.friction = quasi_static::muraki_friction(lubrication);
+    let bearing = compensated.as_ref().unwrap_or(bearing);
+    let wo = qs.outer_speed_rad_s;
     let options = rolldyn_quasistatic::QuasiStaticOptions::default();
-    let compensated;
-    let bearing = if clearance_is_operating {
-        // the operating clearance is the mounting clearance plus contributions that do not
-        // depend on it (SPEC §5.2), so shifting the mounting clearance by the difference makes
-        // the quasi-static operating clearance equal the given one
-        let epicyclic = bearing.epicyclic_cage_speed(wi, wo);
-        let operating = rolldyn_quasistatic::operating_geometry(bearing, &qs, epicyclic)
-            .clearance
-            .operating_m;
-        let mut b = bearing.clone();
-        b.clearance.radial += bearing.clearance.radial - operating;
-        b.clearance.allow_preload = true;
-        compensated = b;
-        &compensated
-    } else {
-        bearing
-    };
     let result = rolldyn_quasistatic::solve_with_land_model(bearing, &qs, &options, land)
         .map_err(|e| e.to_string())?;
     let wc = result.cage_speed_rad_s;

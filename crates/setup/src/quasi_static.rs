@@ -4,6 +4,7 @@
 //! dynamics run.
 
 use crate::SetupError;
+use rolldyn_dynamics::conditions::OperatingConditions;
 use rolldyn_geometry::{CageGuidance, CylindricalRollerBearing};
 use rolldyn_lubrication::{FilmFormula, MurakiSettings};
 use rolldyn_model::CageLandLaw;
@@ -77,8 +78,8 @@ pub fn muraki_friction(lubrication: &Lubrication) -> FrictionModel {
     }
 }
 
-/// The quasi-static operating point of `model`, overridden by `overrides`: speeds, radial load,
-/// part temperatures (oil temperature for the parts neither given), the bearing's ring tilt and
+/// The quasi-static operating point of `model`, overridden by `overrides`: speeds, radial load
+/// (turning with the inner ring when the model's load rotates), part temperatures (oil temperature for the parts neither given), the bearing's ring tilt and
 /// the raceway friction law.
 pub fn quasi_static_conditions(
     model: &Model,
@@ -115,6 +116,10 @@ pub fn quasi_static_conditions(
         )
     })?;
     let mut c = QuasiStaticConditions::new(inner, outer, load, lubrication.oil.clone(), oil);
+    if op.load_rotates {
+        // the land film sees the load zone turn with the inner ring (theory §6.5)
+        c.load_speed_rad_s = inner;
+    }
     let part = |given: Option<f64>, file: Option<f64>| given.or(file).unwrap_or(oil);
     let t = &mut c.temperatures;
     t.inner_ring = part(given.inner_ring, file.inner_ring);
@@ -200,9 +205,77 @@ impl QuasiStaticLandModel for ContactLand {
     }
 }
 
+/// The quasi-static point of a dynamics start (issue 6): the dynamics' speeds, oil and part
+/// temperatures at t = 0, its linear cage drag, Muraki friction with the model's rheology. The
+/// radial load is the r.m.s. over a shaft revolution of the vector sum of the fixed and rotating
+/// loads, √(|F_fixed|² + |F_rot|²) (their cross term averages out); its direction turns with the
+/// inner ring when the rotating part is the larger (the land film then sees a rotating load).
+/// With `clearance_is_operating` the bearing's radial clearance is the operating clearance and the
+/// returned bearing (`Some`) has its mounting clearance shifted so that the quasi-static
+/// operating clearance equals it.
+pub fn dynamics_start_conditions(
+    bearing: &CylindricalRollerBearing,
+    conditions: &OperatingConditions,
+    lubrication: &Lubrication,
+    clearance_is_operating: bool,
+) -> (QuasiStaticConditions, Option<CylindricalRollerBearing>) {
+    let (wi, wo) = (
+        conditions.inner_speed.speed(0.0),
+        conditions.outer_speed.speed(0.0),
+    );
+    let fixed_xyz = conditions.fixed_force(0.0);
+    let fixed = fixed_xyz[0].hypot(fixed_xyz[1]);
+    let rotating = conditions.rotating_force_magnitude(0.0);
+    let t = conditions.temperatures;
+    let mut qs = QuasiStaticConditions::new(
+        wi,
+        wo,
+        fixed.hypot(rotating),
+        lubrication.oil.clone(),
+        t.inner_raceway_k,
+    );
+    if rotating > fixed {
+        qs.load_speed_rad_s = wi;
+    }
+    qs.temperatures.outer_ring = t.outer_raceway_k;
+    qs.temperatures.cage = t.cage_k;
+    // the dynamics' drag law, so that the start is the dynamics' own steady state
+    qs.drag.viscous_coefficient_n_m_s = Some(conditions.cage_drag_n_m_s);
+    qs.friction = muraki_friction(lubrication);
+    let compensated = clearance_is_operating.then(|| {
+        // the operating clearance is the mounting clearance plus contributions that do not
+        // depend on it (theory §6.1), so shifting the mounting clearance by the difference
+        // makes the quasi-static operating clearance equal the given one
+        let epicyclic = bearing.epicyclic_cage_speed(wi, wo);
+        let operating = rolldyn_quasistatic::operating_geometry(bearing, &qs, epicyclic)
+            .clearance
+            .operating_m;
+        let mut b = bearing.clone();
+        b.clearance.radial += bearing.clearance.radial - operating;
+        b.clearance.allow_preload = true;
+        b
+    });
+    (qs, compensated)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A load rotating with the inner ring (2002834) turns the land film's load with it; a
+    /// fixed one (O'Brien–Taylor) does not.
+    #[test]
+    fn rotating_load_turns_with_the_inner_ring() {
+        for (text, rotates) in [
+            (include_str!("../../../examples/2002834.toml"), true),
+            (include_str!("../../../examples/obrien-taylor.toml"), false),
+        ] {
+            let model = rolldyn_model::parse(text, "m.toml").unwrap();
+            let c = quasi_static_conditions(&model, &QuasiStaticOverrides::default()).unwrap();
+            let expected = if rotates { c.inner_speed_rad_s } else { 0.0 };
+            assert_eq!(c.load_speed_rad_s, expected);
+        }
+    }
 
     /// Flags win over the file; parts not given take the file's value, then the oil's.
     #[test]
