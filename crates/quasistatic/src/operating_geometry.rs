@@ -28,7 +28,8 @@ use serde::Serialize;
 /// clearance). `operating_m` is their sum.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct ClearanceContributions {
-    /// Mounting (assembly) radial clearance G_r (diametral) of the bearing model.
+    /// Mounting (assembly) radial clearance G_r (diametral): the bearing model's, or, when the
+    /// model gives the operating clearance (`Clearance::radial_is_operating`), the one it implies.
     pub mounting_m: f64,
     /// Inner-ring raceway expansion by the shaft fit (−Δd_i).
     pub inner_fit_m: f64,
@@ -231,7 +232,17 @@ pub fn operating_geometry(
     let inner_fit = inner_ring_fit(bearing, cond, &mut warnings);
     let outer_fit = outer_ring_fit(bearing, cond, &mut warnings);
 
-    let g0 = bearing.clearance.radial;
+    let change = -inner_fit.raceway_change_m + outer_fit.raceway_change_m - th_i + th_o
+        - 2.0 * th_w
+        - cf_i
+        + cf_o;
+    // a clearance given as the operating one fixes the sum; the mounting clearance it implies
+    // is what the contributions leave
+    let g0 = if bearing.clearance.radial_is_operating {
+        bearing.clearance.radial - change
+    } else {
+        bearing.clearance.radial
+    };
     let contributions = ClearanceContributions {
         mounting_m: g0,
         inner_fit_m: -inner_fit.raceway_change_m,
@@ -241,10 +252,7 @@ pub fn operating_geometry(
         roller_thermal_m: -2.0 * th_w,
         inner_ring_centrifugal_m: -cf_i,
         outer_ring_centrifugal_m: cf_o,
-        operating_m: g0 - inner_fit.raceway_change_m + outer_fit.raceway_change_m - th_i + th_o
-            - 2.0 * th_w
-            - cf_i
-            + cf_o,
+        operating_m: g0 + change,
     };
     let d_i_op = d_i + th_i + cf_i + inner_fit.raceway_change_m;
     let d_o_op = d_o + th_o + cf_o + outer_fit.raceway_change_m;
