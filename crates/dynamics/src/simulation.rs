@@ -144,6 +144,14 @@ impl Simulation {
         self.ig.invalidate();
     }
 
+    /// Sets [`crate::DynamicsSettings::discard_revolutions`], the cage revolutions left out of the
+    /// run summary (the approach to steady state). Call it before running.
+    pub fn set_discard_revolutions(&mut self, revolutions: u32) {
+        self.settings.discard_revolutions = revolutions;
+        self.tr.run_started = revolutions == 0;
+        self.fingerprint = fingerprint(&self.model, &self.settings);
+    }
+
     /// Switches the integration method ([`crate::IntegratorSettings::method`], e.g. the CLI's
     /// `--integrator`) at the current state: the new stepper starts from the current `(t, y)`
     /// with the initial step size and keeps the step statistics. Call it before running (and

@@ -48,6 +48,9 @@ pub struct SweepFile {
     pub analysis: Analysis,
     /// Simulated duration for `simulate` (`"20rev"` or a time), as written.
     pub duration: Option<String>,
+    /// Cage revolutions of a `simulate` run left out of its summary (`"5rev"`), as written; the
+    /// dynamics' default (one) when absent.
+    pub discard: Option<String>,
     pub variants: Vec<Variant>,
 }
 
@@ -80,6 +83,7 @@ impl SweepFile {
             }
         };
         let duration = take_str(&mut table, "duration")?;
+        let discard = take_str(&mut table, "discard")?;
         let variants = match table.remove("variant") {
             Some(Value::Array(items)) => items,
             None => {
@@ -101,7 +105,7 @@ impl SweepFile {
             return Err(SweepError::new(
                 path,
                 key.clone(),
-                "unknown key (expected model, analysis, duration, variant)",
+                "unknown key (expected model, analysis, duration, discard, variant)",
             ));
         }
         let model_path = path.parent().unwrap_or(Path::new(".")).join(&model);
@@ -152,6 +156,7 @@ impl SweepFile {
             model_text,
             analysis,
             duration,
+            discard,
             variants: parsed,
         })
     }

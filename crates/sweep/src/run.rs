@@ -87,10 +87,11 @@ pub fn fingerprint(sweep: &SweepFile, variant: &Variant, settings: &str) -> Stri
         Err(e) => e.to_string(),
     };
     let inputs = format!(
-        "rolldyn {}\n{:?}\n{:?}\n{settings}\n{model}",
+        "rolldyn {}\n{:?}\n{:?}\n{:?}\n{settings}\n{model}",
         env!("CARGO_PKG_VERSION"),
         sweep.analysis,
-        sweep.duration
+        sweep.duration,
+        sweep.discard
     );
     format!("{:016x}", fnv1a(inputs.as_bytes()))
 }

@@ -1,7 +1,7 @@
 //! Issue 23 "one answer from both models": the one-at-a-time switch table of the quasi-static
 //! model and the dynamics ([`rolldyn_validation::model_consistency`]) for O'Brien–Taylor at
-//! 4000 rpm / 201 N (fixed load) and 2002834 at 8163 rpm / 1750 N rotating with the inner ring
-//! (bar contact at Ø192.5 mm, seed 000 §3.1.1.5). Prints one line per row and writes the CSV.
+//! 4000 rpm / 201 N (fixed load) and 2002834 at the operating point of its example (8163 rpm,
+//! 1860 N rotating with the inner ring). Prints one line per row and writes the CSV.
 //!
 //! `cargo run --release -p rolldyn-validation --example model_consistency -- [cases]
 //! [revolutions] [skipped] [csv]` (cases `ot`, `ot-tight-pocket`, `ot-preload`, `2002834`, each optionally `@<load N>`, e.g.
@@ -67,18 +67,14 @@ fn named_case(name: &str) -> Case {
             case
         }
         "2002834" => {
-            let mut model = load_model("examples/2002834.toml");
-            if let BearingModel::Cylindrical(b) = &mut model.bearing
-                && let Some(cage) = b.cage.as_mut()
-            {
-                // the bar contact line of the seed's FE model (seed 000 §3.1.1.5)
-                cage.bar_contact_diameter = 0.1925;
-            }
+            // the example's operating point (8163 rpm, its radial load, rotating)
+            let model = load_model("examples/2002834.toml");
+            let radial_load_n = model.operating.radial_load.expect("[operating] radial_load");
             Case {
-                name: "2002834 8163 rpm 1750 N rotating".into(),
+                name: format!("2002834 8163 rpm {radial_load_n:.0} N rotating"),
                 model,
                 speed_rad_s: 8163.0 * RPM,
-                radial_load_n: 1750.0,
+                radial_load_n,
                 load_direction: LoadDirection::Rotating,
                 oil_temperature_k: None,
             }

@@ -53,10 +53,14 @@ fn numbers(value: &serde_json::Value) -> BTreeMap<String, f64> {
 
 fn simulate(
     duration: Duration,
+    discard: Option<u32>,
     model: rolldyn_model::Model,
 ) -> Result<BTreeMap<String, f64>, String> {
     let (mut sim, revolution) =
         prepare(&model, &Overrides::default(), 0.0, None).map_err(|e| e.to_string())?;
+    if let Some(n) = discard {
+        sim.set_discard_revolutions(n);
+    }
     let summary = sim
         .run_until(duration.end_time(revolution)?, &mut NullSink, &mut |_| {})
         .map_err(|e| format!("the simulation stopped: {e}"))?;
@@ -91,6 +95,14 @@ fn skid(model: rolldyn_model::Model) -> Result<BTreeMap<String, f64>, String> {
     ))
 }
 
+/// The revolution count of a sweep file's `discard` (`"5rev"`).
+fn discarded_revolutions(text: &str) -> Result<u32, String> {
+    text.trim()
+        .strip_suffix("rev")
+        .and_then(|n| n.trim().parse().ok())
+        .ok_or_else(|| format!("'{text}' is not a whole number of cage revolutions such as \"5rev\""))
+}
+
 /// The settings of the analysis beyond the sweep file (solver defaults and tolerances) for the
 /// variants' fingerprints.
 fn settings(analysis: Analysis, duration: Duration) -> String {
@@ -111,6 +123,12 @@ pub fn run(args: Args) -> Result<(), Failure> {
         .unwrap_or("5rev")
         .parse()
         .map_err(|e: String| Failure::Input(format!("{}: duration — {e}", args.sweep.display())))?;
+    let discard = sweep
+        .discard
+        .as_deref()
+        .map(discarded_revolutions)
+        .transpose()
+        .map_err(|e| Failure::Input(format!("{}: discard — {e}", args.sweep.display())))?;
     let stem = args
         .sweep
         .file_stem()
@@ -121,7 +139,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
         .unwrap_or_else(|| PathBuf::from("out").join(stem));
     let analysis = sweep.analysis;
     let analyse = move |_: &Variant, model: rolldyn_model::Model| match analysis {
-        Analysis::Simulate => simulate(duration, model),
+        Analysis::Simulate => simulate(duration, discard, model),
         Analysis::Skid => skid(model),
     };
     let done = AtomicUsize::new(0);
