@@ -8,6 +8,7 @@
 //! model = "../2002834.toml"
 //! analysis = "simulate"          # or "skid"
 //! duration = "5rev"              # simulate only
+//! discard = "1rev"               # simulate only: revolutions left out of the summary (default 1)
 //!
 //! [[variant]]
 //! name = "11"
