@@ -154,13 +154,25 @@ fn discard_leaves_the_first_revolutions_out_of_the_summary() {
         sweep(&file, &dir.join(out), &[]);
         summary_without_wall_time(&dir.join(out))
     };
-    let kept = run("analysis = \"simulate\"\nduration = \"1.5rev\"\ndiscard = \"0rev\"", "keep");
-    let dropped = run("analysis = \"simulate\"\nduration = \"1.5rev\"\ndiscard = \"1rev\"", "drop");
-    assert_ne!(kept[1], dropped[1], "discarding the first revolution changes the maxima");
+    let kept = run(
+        "analysis = \"simulate\"\nduration = \"1.5rev\"\ndiscard = \"0rev\"",
+        "keep",
+    );
+    let dropped = run(
+        "analysis = \"simulate\"\nduration = \"1.5rev\"\ndiscard = \"1rev\"",
+        "drop",
+    );
+    assert_ne!(
+        kept[1], dropped[1],
+        "discarding the first revolution changes the maxima"
+    );
     let file = dir.join("bad.toml");
     write_sweep(&file, "analysis = \"simulate\"\ndiscard = \"2 s\"", &loads);
     let output = rolldyn(&["sweep", file.to_str().unwrap(), "--quiet"]);
     assert_eq!(output.status.code(), Some(2));
     let stderr = String::from_utf8_lossy(&output.stderr);
-    assert!(stderr.contains("discard") && stderr.lines().count() == 1, "{stderr}");
+    assert!(
+        stderr.contains("discard") && stderr.lines().count() == 1,
+        "{stderr}"
+    );
 }

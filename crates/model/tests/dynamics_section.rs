@@ -5,8 +5,12 @@ use rolldyn_model::{CageLandLaw, EndFrictionLaw, parse};
 
 const GOOD: &str = rolldyn_model::DEFAULT_MODEL;
 
+/// The default model with `extra` in place of its own `[dynamics.roller_cage]` (its last section).
 fn with_dynamics(extra: &str) -> Result<rolldyn_model::Model, String> {
-    parse(&format!("{GOOD}\n{extra}"), "m.toml").map_err(|e| e.to_string())
+    let base = &GOOD[..GOOD
+        .find("[dynamics.roller_cage]")
+        .expect("the example's bar law")];
+    parse(&format!("{base}\n{extra}"), "m.toml").map_err(|e| e.to_string())
 }
 
 #[test]
@@ -15,7 +19,9 @@ fn the_example_gives_the_seed_cage_drag() {
     // seed 000 §3.6: 662 N·mm/(rad/ms) = 6.62e-4 N·m·s/rad (SPEC F-22)
     let c = m.dynamics.cage_drag_n_m_s.unwrap();
     assert!((c - 6.62e-4).abs() < 1e-15, "{c}");
-    assert_eq!(m.dynamics.roller_cage.k_p, None);
+    // the pair-34 law derived from the bar, its line contact and the squeeze film
+    assert_eq!(m.dynamics.roller_cage.k_p, Some(7.285e8));
+    assert_eq!(m.dynamics.roller_cage.exponent, Some(1.1108));
 }
 
 #[test]

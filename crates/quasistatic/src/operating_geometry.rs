@@ -232,10 +232,9 @@ pub fn operating_geometry(
     let inner_fit = inner_ring_fit(bearing, cond, &mut warnings);
     let outer_fit = outer_ring_fit(bearing, cond, &mut warnings);
 
-    let change = -inner_fit.raceway_change_m + outer_fit.raceway_change_m - th_i + th_o
-        - 2.0 * th_w
-        - cf_i
-        + cf_o;
+    let change =
+        -inner_fit.raceway_change_m + outer_fit.raceway_change_m - th_i + th_o - 2.0 * th_w - cf_i
+            + cf_o;
     // a clearance given as the operating one fixes the sum; the mounting clearance it implies
     // is what the contributions leave
     let g0 = if bearing.clearance.radial_is_operating {

@@ -164,7 +164,8 @@ fn seed000_table_3_1_sweep_has_21_valid_variants() {
         panic!()
     };
     assert!((b.clearance.radial - 0.044e-3).abs() < 1e-12);
-    assert_eq!(sweep.duration.as_deref(), Some("10rev"));
+    assert_eq!(sweep.duration.as_deref(), Some("20rev"));
+    assert_eq!(sweep.discard.as_deref(), Some("10rev"));
 }
 
 /// The stand-in analysis of these tests: the radial clearance of the variant's model.

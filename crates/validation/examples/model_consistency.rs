@@ -69,7 +69,10 @@ fn named_case(name: &str) -> Case {
         "2002834" => {
             // the example's operating point (8163 rpm, its radial load, rotating)
             let model = load_model("examples/2002834.toml");
-            let radial_load_n = model.operating.radial_load.expect("[operating] radial_load");
+            let radial_load_n = model
+                .operating
+                .radial_load
+                .expect("[operating] radial_load");
             Case {
                 name: format!("2002834 8163 rpm {radial_load_n:.0} N rotating"),
                 model,

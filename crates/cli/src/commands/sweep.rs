@@ -100,7 +100,9 @@ fn discarded_revolutions(text: &str) -> Result<u32, String> {
     text.trim()
         .strip_suffix("rev")
         .and_then(|n| n.trim().parse().ok())
-        .ok_or_else(|| format!("'{text}' is not a whole number of cage revolutions such as \"5rev\""))
+        .ok_or_else(|| {
+            format!("'{text}' is not a whole number of cage revolutions such as \"5rev\"")
+        })
 }
 
 /// The settings of the analysis beyond the sweep file (solver defaults and tolerances) for the
