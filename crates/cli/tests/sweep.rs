@@ -166,13 +166,18 @@ fn discard_leaves_the_first_revolutions_out_of_the_summary() {
         kept[1], dropped[1],
         "discarding the first revolution changes the maxima"
     );
-    let file = dir.join("bad.toml");
-    write_sweep(&file, "analysis = \"simulate\"\ndiscard = \"2 s\"", &loads);
-    let output = rolldyn(&["sweep", file.to_str().unwrap(), "--quiet"]);
-    assert_eq!(output.status.code(), Some(2));
-    let stderr = String::from_utf8_lossy(&output.stderr);
-    assert!(
-        stderr.contains("discard") && stderr.lines().count() == 1,
-        "{stderr}"
-    );
+    for bad in [
+        "discard = \"2 s\"",
+        "duration = \"2rev\"\ndiscard = \"2rev\"",
+    ] {
+        let file = dir.join("bad.toml");
+        write_sweep(&file, &format!("analysis = \"simulate\"\n{bad}"), &loads);
+        let output = rolldyn(&["sweep", file.to_str().unwrap(), "--quiet"]);
+        assert_eq!(output.status.code(), Some(2), "{bad}");
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        assert!(
+            stderr.contains("discard") && stderr.lines().count() == 1,
+            "{stderr}"
+        );
+    }
 }

@@ -4,6 +4,7 @@
 //! The model sits behind the small trait [`QuasiStaticLandModel`] so that a finite journal-bearing
 //! solver (the Reynolds crate, SPEC §8.6) can replace the default [`ShortBearing`] later.
 
+use rolldyn_contact::damping::TwoLevelFriction;
 use rolldyn_reynolds::cage_land::couette_land_torque;
 use std::f64::consts::PI;
 
@@ -205,6 +206,39 @@ fn land_output(
     }
 }
 
+/// The dynamics' plain pair-14 contact in the quasi-static cage balance (theory §3.3): no
+/// film, so the cage rests on the land with its clearance taken up (e = c) under the pressing
+/// force F_RS = m_c c ω₀² + √(F_SB² + F_SГ²) (SPEC §5.5), and drags on it with the two-level
+/// friction μ(v) F_RS of the sliding speed v = R (ω₀ − ω_land) (SPEC §3.4): moment −μ(v) F_RS R.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ContactLand {
+    /// the pair-14 two-level friction law of the dynamics
+    pub friction: TwoLevelFriction,
+}
+
+impl QuasiStaticLandModel for ContactLand {
+    fn name(&self) -> &'static str {
+        "plain contact, two-level friction (pair 14)"
+    }
+
+    fn evaluate(&self, i: &CageLandInput) -> CageLandOutput {
+        let (r, c, w0) = (i.land_radius_m, i.radial_clearance_m, i.cage_speed_rad_s);
+        let slip = w0 - i.land_speed_rad_s;
+        let pressing = i.cage_mass_kg * c * w0 * w0 + i.roller_force_n;
+        let mu = self.friction.coefficient(r * slip);
+        let torque = -mu * pressing * r;
+        CageLandOutput {
+            torque_on_cage_n_m: torque,
+            pressing_force_n: pressing,
+            eccentricity_ratio: 1.0,
+            min_film_m: 0.0,
+            friction_coefficient: mu.abs(),
+            power_w: (torque * slip).abs(),
+            saturated: false,
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -262,6 +296,41 @@ mod tests {
                 assert!((w - out.pressing_force_n).abs() < 1e-9 * load);
             }
         }
+    }
+
+    /// The contact land drags the cage back towards the land speed with μ_d F_RS R once the
+    /// sliding speed exceeds v_d, and carries no moment without slip.
+    #[test]
+    fn contact_land_is_two_level_friction_of_the_pressing_force() {
+        let friction = TwoLevelFriction {
+            mu_static: 0.02,
+            mu_dynamic: 0.01,
+            v_static: 1e-2,
+            v_dynamic: 1e-1,
+        };
+        let land = ContactLand { friction };
+        let input = CageLandInput {
+            land_radius_m: 0.1,
+            rail_width_m: 0.01,
+            rails: 2,
+            radial_clearance_m: 2.5e-4,
+            viscosity_pa_s: 0.01,
+            cage_speed_rad_s: 400.0,
+            land_speed_rad_s: 850.0,
+            load_speed_rad_s: 850.0,
+            roller_force_n: 50.0,
+            cage_mass_kg: 0.5,
+        };
+        let out = land.evaluate(&input);
+        let pressing = 0.5 * 2.5e-4 * 400.0 * 400.0 + 50.0;
+        assert!((out.pressing_force_n - pressing).abs() < 1e-12);
+        let expected = friction.mu_dynamic * pressing * 0.1;
+        assert!((out.torque_on_cage_n_m - expected).abs() < 1e-12 * expected);
+        let still = CageLandInput {
+            cage_speed_rad_s: 850.0,
+            ..input
+        };
+        assert_eq!(land.evaluate(&still).torque_on_cage_n_m, 0.0);
     }
 }
 

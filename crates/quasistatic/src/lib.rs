@@ -52,7 +52,7 @@ pub mod studies;
 pub mod sweep;
 
 pub use cage_land::{
-    CageLandInput, CageLandOutput, FiniteLand, QuasiStaticLandModel, ShortBearing,
+    CageLandInput, CageLandOutput, ContactLand, FiniteLand, QuasiStaticLandModel, ShortBearing,
 };
 pub use conditions::{
     BarFriction, CageLandInputs, DragCoefficient, DragInputs, EndFriction, FrictionModel,

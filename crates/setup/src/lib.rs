@@ -285,7 +285,6 @@ pub fn prepare(
         lubrication,
         &model.dynamics,
         conditions,
-        false,
         output_step_s,
         tolerance,
     )?;
@@ -310,12 +309,13 @@ pub fn prepare_frozen(
         bearing.clearance.radial = g;
         bearing.clearance.allow_preload = g < 0.0;
     }
+    // a frozen point's clearance (scheduled or given) is the operating one of that instant
+    bearing.clearance.radial_is_operating = true;
     prepare_with(
         &bearing,
         lubrication,
         &model.dynamics,
         conditions,
-        true,
         output_step_s,
         tolerance,
     )
@@ -356,16 +356,14 @@ fn bearing_and_oil(
 }
 
 /// Builds the simulation of `bearing` under `conditions`, started at the quasi-static cage
-/// speed. With `clearance_is_operating` the bearing's radial clearance is the operating
-/// clearance (a start-up clearance schedule, seed 000 Fig. 3.71, already includes the thermal
-/// and centrifugal changes), and the quasi-static model is made to use it as such instead of
-/// adding its own fit, thermal and centrifugal contributions.
+/// speed. A clearance the bearing marks as operating (`Clearance::radial_is_operating`, e.g. a
+/// start-up clearance schedule, seed 000 Fig. 3.71) is used by the quasi-static start as such,
+/// without its own fit, thermal and centrifugal contributions.
 pub fn prepare_with(
     bearing: &rolldyn_geometry::CylindricalRollerBearing,
     lubrication: &rolldyn_model::Lubrication,
     inputs: &rolldyn_model::DynamicsInputs,
     conditions: OperatingConditions,
-    clearance_is_operating: bool,
     output_step_s: f64,
     tolerance: Option<f64>,
 ) -> Result<Prepared, SetupError> {
@@ -403,7 +401,6 @@ pub fn prepare_with(
         bearing,
         &conditions,
         lubrication,
-        clearance_is_operating,
         quasi_static::matching_land_model(bearing, inputs).as_ref(),
         &mut initial,
     );
@@ -477,17 +474,10 @@ fn start_at_quasi_static_speeds(
     bearing: &rolldyn_geometry::CylindricalRollerBearing,
     conditions: &OperatingConditions,
     lubrication: &rolldyn_model::Lubrication,
-    clearance_is_operating: bool,
     land: &dyn rolldyn_quasistatic::QuasiStaticLandModel,
     initial: &mut rolldyn_dynamics::InitialState,
 ) -> Result<rolldyn_quasistatic::SkidResult, String> {
-    let (qs, compensated) = quasi_static::dynamics_start_conditions(
-        bearing,
-        conditions,
-        lubrication,
-        clearance_is_operating,
-    );
-    let bearing = compensated.as_ref().unwrap_or(bearing);
+    let qs = quasi_static::dynamics_start_conditions(conditions, lubrication);
     let wo = qs.outer_speed_rad_s;
     let options = rolldyn_quasistatic::QuasiStaticOptions::default();
     let result = rolldyn_quasistatic::solve_with_land_model(bearing, &qs, &options, land)

@@ -10,8 +10,8 @@ use rolldyn_lubrication::{FilmFormula, MurakiSettings};
 use rolldyn_model::CageLandLaw;
 use rolldyn_model::{Lubrication, Model, Temperatures};
 use rolldyn_quasistatic::{
-    CageLandInput, CageLandOutput, FiniteLand, FrictionModel, QuasiStaticConditions,
-    QuasiStaticLandModel, ShortBearing,
+    ContactLand, FiniteLand, FrictionModel, QuasiStaticConditions, QuasiStaticLandModel,
+    ShortBearing,
 };
 
 /// Raceway friction law of a quasi-static point.
@@ -167,41 +167,10 @@ pub fn matching_land_model(
     match inputs.cage_land_law {
         CageLandLaw::Hydrodynamic => cage_land_model(bearing, LandChoice::Finite),
         CageLandLaw::Contact => Box::new(ContactLand {
-            parameters: crate::contact_parameters(bearing, inputs).cage_land,
+            friction: crate::contact_parameters(bearing, inputs)
+                .cage_land
+                .friction,
         }),
-    }
-}
-
-/// The dynamics' plain pair-14 contact in the quasi-static cage balance (theory §3.3): no
-/// film, so the cage rests on the land with its clearance taken up (e = c) under the pressing
-/// force F_RS = m_c c ω₀² + √(F_SB² + F_SГ²) (SPEC §5.5), and drags on it with the two-level
-/// friction μ(v) F_RS of the sliding speed v = R (ω₀ − ω_land) (SPEC §3.4): moment −μ(v) F_RS R.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct ContactLand {
-    /// the pair-14 parameters of the dynamics (only the friction law enters the balance)
-    pub parameters: rolldyn_dynamics::PairParameters,
-}
-
-impl QuasiStaticLandModel for ContactLand {
-    fn name(&self) -> &'static str {
-        "plain contact, two-level friction (pair 14)"
-    }
-
-    fn evaluate(&self, i: &CageLandInput) -> CageLandOutput {
-        let (r, c, w0) = (i.land_radius_m, i.radial_clearance_m, i.cage_speed_rad_s);
-        let slip = w0 - i.land_speed_rad_s;
-        let pressing = i.cage_mass_kg * c * w0 * w0 + i.roller_force_n;
-        let mu = self.parameters.friction.coefficient(r * slip);
-        let torque = -mu * pressing * r;
-        CageLandOutput {
-            torque_on_cage_n_m: torque,
-            pressing_force_n: pressing,
-            eccentricity_ratio: 1.0,
-            min_film_m: 0.0,
-            friction_coefficient: mu.abs(),
-            power_w: (torque * slip).abs(),
-            saturated: false,
-        }
     }
 }
 
@@ -210,15 +179,12 @@ impl QuasiStaticLandModel for ContactLand {
 /// radial load is the r.m.s. over a shaft revolution of the vector sum of the fixed and rotating
 /// loads, √(|F_fixed|² + |F_rot|²) (their cross term averages out); its direction turns with the
 /// inner ring when the rotating part is the larger (the land film then sees a rotating load).
-/// With `clearance_is_operating` the bearing's radial clearance is the operating clearance and the
-/// returned bearing (`Some`) has its mounting clearance shifted so that the quasi-static
-/// operating clearance equals it.
+/// A clearance the bearing marks as operating (`Clearance::radial_is_operating`) is taken as
+/// such by the quasi-static model itself.
 pub fn dynamics_start_conditions(
-    bearing: &CylindricalRollerBearing,
     conditions: &OperatingConditions,
     lubrication: &Lubrication,
-    clearance_is_operating: bool,
-) -> (QuasiStaticConditions, Option<CylindricalRollerBearing>) {
+) -> QuasiStaticConditions {
     let (wi, wo) = (
         conditions.inner_speed.speed(0.0),
         conditions.outer_speed.speed(0.0),
@@ -242,20 +208,7 @@ pub fn dynamics_start_conditions(
     // the dynamics' drag law, so that the start is the dynamics' own steady state
     qs.drag.viscous_coefficient_n_m_s = Some(conditions.cage_drag_n_m_s);
     qs.friction = muraki_friction(lubrication);
-    let compensated = clearance_is_operating.then(|| {
-        // the operating clearance is the mounting clearance plus contributions that do not
-        // depend on it (theory §6.1), so shifting the mounting clearance by the difference
-        // makes the quasi-static operating clearance equal the given one
-        let epicyclic = bearing.epicyclic_cage_speed(wi, wo);
-        let operating = rolldyn_quasistatic::operating_geometry(bearing, &qs, epicyclic)
-            .clearance
-            .operating_m;
-        let mut b = bearing.clone();
-        b.clearance.radial += bearing.clearance.radial - operating;
-        b.clearance.allow_preload = true;
-        b
-    });
-    (qs, compensated)
+    qs
 }
 
 #[cfg(test)]
@@ -296,35 +249,5 @@ mod tests {
         assert_eq!(c.temperatures.cage, 340.0);
         let file_or_oil = model.operating.temperatures.housing.unwrap_or(330.0);
         assert_eq!(c.temperatures.housing, file_or_oil);
-    }
-
-    /// The contact land drags the cage back towards the land speed with μ_d F_RS R once the
-    /// sliding speed exceeds v_d, and carries no moment without slip.
-    #[test]
-    fn contact_land_is_two_level_friction_of_the_pressing_force() {
-        let parameters = rolldyn_dynamics::PairParameters::cage_land_default();
-        let land = ContactLand { parameters };
-        let input = CageLandInput {
-            land_radius_m: 0.1,
-            rail_width_m: 0.01,
-            rails: 2,
-            radial_clearance_m: 2.5e-4,
-            viscosity_pa_s: 0.01,
-            cage_speed_rad_s: 400.0,
-            land_speed_rad_s: 850.0,
-            load_speed_rad_s: 850.0,
-            roller_force_n: 50.0,
-            cage_mass_kg: 0.5,
-        };
-        let out = land.evaluate(&input);
-        let pressing = 0.5 * 2.5e-4 * 400.0 * 400.0 + 50.0;
-        assert!((out.pressing_force_n - pressing).abs() < 1e-12);
-        let expected = parameters.friction.mu_dynamic * pressing * 0.1;
-        assert!((out.torque_on_cage_n_m - expected).abs() < 1e-12 * expected);
-        let still = CageLandInput {
-            cage_speed_rad_s: 850.0,
-            ..input
-        };
-        assert_eq!(land.evaluate(&still).torque_on_cage_n_m, 0.0);
     }
 }

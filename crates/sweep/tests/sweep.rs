@@ -168,6 +168,17 @@ fn seed000_table_3_1_sweep_has_21_valid_variants() {
     assert_eq!(sweep.discard.as_deref(), Some("10rev"));
 }
 
+/// Options of a single-job run into `out`, without solver settings.
+fn one_job(out: &std::path::Path, resume: bool) -> RunOptions {
+    RunOptions {
+        out_dir: out.to_path_buf(),
+        jobs: 1,
+        shard: None,
+        resume,
+        settings: String::new(),
+    }
+}
+
 /// The stand-in analysis of these tests: the radial clearance of the variant's model.
 fn clearance(model: rolldyn_model::Model) -> Result<BTreeMap<String, f64>, String> {
     let rolldyn_model::BearingModel::Cylindrical(b) = model.bearing else {
@@ -242,13 +253,7 @@ fn resume_recomputes_variants_whose_inputs_changed() {
 fn collect_blanks_results_of_changed_inputs() {
     let dir = scratch("stale");
     let out = dir.join("out");
-    let options = RunOptions {
-        out_dir: out.clone(),
-        jobs: 1,
-        shard: None,
-        resume: false,
-        settings: String::new(),
-    };
+    let options = one_job(&out, false);
     let analysis = |_: &Variant, model: rolldyn_model::Model| clearance(model);
     let sweep = SweepFile::load(&write_sweep(&dir, &clearance_variants(&[0, 5]))).unwrap();
     run(&sweep, &options, &analysis, &|_| {}).unwrap();
@@ -267,13 +272,7 @@ fn collect_blanks_results_of_changed_inputs() {
 fn an_unreadable_result_keeps_its_row_with_the_reason() {
     let dir = scratch("unreadable");
     let out = dir.join("out");
-    let options = RunOptions {
-        out_dir: out.clone(),
-        jobs: 1,
-        shard: None,
-        resume: true,
-        settings: String::new(),
-    };
+    let options = one_job(&out, true);
     let analysis = |_: &Variant, model: rolldyn_model::Model| clearance(model);
     let sweep = SweepFile::load(&write_sweep(&dir, &clearance_variants(&[0, 5]))).unwrap();
     run(&sweep, &options, &analysis, &|_| {}).unwrap();
@@ -296,13 +295,7 @@ fn summary_parquet_has_the_variant_and_error_columns_of_the_csv() {
     use parquet::record::RowAccessor;
     let dir = scratch("parquet");
     let out = dir.join("out");
-    let options = RunOptions {
-        out_dir: out.clone(),
-        jobs: 1,
-        shard: None,
-        resume: false,
-        settings: String::new(),
-    };
+    let options = one_job(&out, false);
     let analysis = |v: &Variant, model: rolldyn_model::Model| {
         if v.name == "v1" {
             return Err("no solution".to_string());

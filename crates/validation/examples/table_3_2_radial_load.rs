@@ -12,6 +12,7 @@
 //! (optionally a sweep file as the first argument).
 
 use rolldyn_geometry::{BearingModel, CylindricalRollerBearing};
+use rolldyn_numerics::brent::{BrentOptions, brent_root};
 use rolldyn_quasistatic::load_distribution::{LoadCase, LoadModel};
 use rolldyn_quasistatic::options::QuasiStaticOptions;
 use rolldyn_validation::table_3_2::SEED_TABLE_3_2;
@@ -48,21 +49,26 @@ fn max_inner_force(
         .fold(0.0, f64::max)
 }
 
-/// Radial load at which the largest inner-ring roller force is `target` (bisection on the
-/// monotonic load–force relation).
+/// Radial load at which the largest inner-ring roller force is `target` (Brent's root finder on
+/// the monotonic load–force relation, bracket 0 … 20 × target).
 fn radial_load_for(bearing: &CylindricalRollerBearing, target: f64, centrifugal_n: f64) -> f64 {
     let model =
         LoadModel::new(bearing, QuasiStaticOptions::default().slice_law).expect("slice model");
-    let (mut lo, mut hi) = (0.0, 20.0 * target);
-    for _ in 0..60 {
-        let mid = 0.5 * (lo + hi);
-        if max_inner_force(bearing, &model, mid, centrifugal_n) < target {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
-    0.5 * (lo + hi)
+    let excess = |fr: f64| max_inner_force(bearing, &model, fr, centrifugal_n) - target;
+    let options = BrentOptions {
+        x_tol: 1e-3,
+        f_tol: 1e-6,
+        max_iterations: 100,
+    };
+    let hi = 20.0 * target;
+    brent_root(
+        |fr| Ok::<_, std::convert::Infallible>(excess(fr)),
+        (0.0, excess(0.0)),
+        (hi, excess(hi)),
+        &options,
+    )
+    .expect("the largest roller force grows with the radial load")
+    .x
 }
 
 fn main() {

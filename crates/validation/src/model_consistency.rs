@@ -350,7 +350,7 @@ pub fn quasi_static(case: &Case, switches: &Switches) -> Result<QuasiStaticResul
     let conditions = operating_conditions(case, switches)?;
     let lubrication = rolldyn_setup::quasi_static::lubrication(&case.model, "simulate")
         .map_err(|e| e.to_string())?;
-    let (mut qs, _) = dynamics_start_conditions(bearing, &conditions, lubrication, false);
+    let mut qs = dynamics_start_conditions(&conditions, lubrication);
     if !switches.rolling_resistance {
         qs.rolling_friction_m = 0.0;
     }
@@ -491,7 +491,6 @@ pub fn dynamic(
         lubrication,
         &inputs,
         conditions,
-        false,
         revolution_s / length.samples_per_revolution.max(1) as f64,
         None,
     )

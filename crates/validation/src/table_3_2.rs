@@ -130,46 +130,60 @@ pub const COMPARED_COLUMNS: [ComparedColumn; 8] = [
     },
 ];
 
-/// The numeric columns of a CSV table by name (a cell that is not a number is NaN).
-pub fn read_columns(path: &Path) -> Result<HashMap<String, Vec<f64>>, String> {
-    let mut reader =
-        csv::Reader::from_path(path).map_err(|e| format!("{}: {e}", path.display()))?;
-    let headers: Vec<String> = reader
+/// The header and the rows of the CSV table at `path`, as text.
+fn read_text_table(path: &Path) -> Result<(Vec<String>, Vec<Vec<String>>), String> {
+    let at = |e: csv::Error| format!("{}: {e}", path.display());
+    let mut reader = csv::Reader::from_path(path).map_err(at)?;
+    let header = reader
         .headers()
-        .map_err(|e| e.to_string())?
+        .map_err(at)?
         .iter()
         .map(str::to_string)
         .collect();
-    let mut columns: Vec<Vec<f64>> = vec![Vec::new(); headers.len()];
-    for record in reader.records() {
-        let record = record.map_err(|e| format!("{}: {e}", path.display()))?;
-        for (column, v) in columns.iter_mut().zip(record.iter()) {
-            column.push(v.parse().unwrap_or(f64::NAN));
-        }
-    }
-    Ok(headers.into_iter().zip(columns).collect())
+    let rows = reader
+        .records()
+        .map(|r| {
+            r.map(|r| r.iter().map(str::to_string).collect())
+                .map_err(at)
+        })
+        .collect::<Result<_, _>>()?;
+    Ok((header, rows))
 }
 
-/// A sweep's `summary.csv`: variant name → column name → value (an empty cell is NaN).
+/// A table cell as a number (a cell that is not a number, e.g. empty, is NaN).
+fn number(cell: &str) -> f64 {
+    cell.parse().unwrap_or(f64::NAN)
+}
+
+/// The numeric columns of a CSV table by name.
+pub fn read_columns(path: &Path) -> Result<HashMap<String, Vec<f64>>, String> {
+    let (header, rows) = read_text_table(path)?;
+    Ok(header
+        .into_iter()
+        .enumerate()
+        .map(|(i, name)| (name, rows.iter().map(|r| number(&r[i])).collect()))
+        .collect())
+}
+
+/// A sweep's `summary.csv`: variant name → column name → value.
 pub fn read_summary(path: &Path) -> Result<HashMap<String, HashMap<String, f64>>, String> {
-    let mut reader =
-        csv::Reader::from_path(path).map_err(|e| format!("{}: {e}", path.display()))?;
-    let headers = reader.headers().map_err(|e| e.to_string())?.clone();
-    let mut rows = HashMap::new();
-    for record in reader.records() {
-        let record = record.map_err(|e| format!("{}: {e}", path.display()))?;
-        let mut values = HashMap::new();
-        let mut name = String::new();
-        for (h, v) in headers.iter().zip(record.iter()) {
-            if h == "variant" {
-                name = v.to_string();
-            } else {
-                values.insert(h.to_string(), v.parse().unwrap_or(f64::NAN));
-            }
-        }
-        rows.insert(name, values);
-    }
-    Ok(rows)
+    let (header, rows) = read_text_table(path)?;
+    let variant = header
+        .iter()
+        .position(|h| h == "variant")
+        .ok_or_else(|| format!("{}: no variant column", path.display()))?;
+    Ok(rows
+        .iter()
+        .map(|row| {
+            let values = header
+                .iter()
+                .zip(row)
+                .filter(|(h, _)| *h != "variant")
+                .map(|(h, v)| (h.clone(), number(v)))
+                .collect();
+            (row[variant].clone(), values)
+        })
+        .collect())
 }
 
 #[cfg(test)]

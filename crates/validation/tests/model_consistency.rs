@@ -46,7 +46,6 @@ fn quasi_static_row_is_the_dynamics_start() {
         lubrication,
         &case.model.dynamics,
         conditions,
-        false,
         1e-3,
         None,
     )

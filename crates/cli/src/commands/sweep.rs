@@ -131,6 +131,14 @@ pub fn run(args: Args) -> Result<(), Failure> {
         .map(discarded_revolutions)
         .transpose()
         .map_err(|e| Failure::Input(format!("{}: discard — {e}", args.sweep.display())))?;
+    if let (Some(n), Duration::CageRevolutions(total)) = (discard, duration)
+        && f64::from(n) >= total
+    {
+        return Err(Failure::Input(format!(
+            "{}: discard — {n} revolutions leave nothing of the {total} simulated",
+            args.sweep.display()
+        )));
+    }
     let stem = args
         .sweep
         .file_stem()
