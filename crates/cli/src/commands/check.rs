@@ -7,16 +7,21 @@ use rolldyn_units::{AngularSpeed, Quantity};
 use serde::Serialize;
 use std::path::PathBuf;
 
+/// Inner-ring speed when neither `--speed` nor the model gives one, rad/s (1000 rpm).
+const FALLBACK_SPEED: f64 = 1000.0 * std::f64::consts::PI / 30.0;
+
 #[derive(clap::Args)]
 pub struct Args {
     /// Model file (TOML); the embedded default model (2002834) when omitted.
     pub model: Option<PathBuf>,
-    /// Inner-ring speed for the epicyclic speeds, e.g. `6371rpm`.
-    #[arg(long, allow_hyphen_values = true, default_value = "1000rpm")]
-    pub speed: Quantity<AngularSpeed>,
-    /// Outer-ring speed (intershaft bearings), e.g. `13067rpm`.
-    #[arg(long, allow_hyphen_values = true, default_value = "0rpm")]
-    pub outer_speed: Quantity<AngularSpeed>,
+    /// Inner-ring speed for the epicyclic speeds, e.g. `6371rpm` (default: the model's
+    /// `operating.inner_speed`, else 1000 rpm).
+    #[arg(long, allow_hyphen_values = true)]
+    pub speed: Option<Quantity<AngularSpeed>>,
+    /// Outer-ring speed (intershaft bearings), e.g. `13067rpm` (default: the model's
+    /// `operating.outer_speed`, else 0).
+    #[arg(long, allow_hyphen_values = true)]
+    pub outer_speed: Option<Quantity<AngularSpeed>>,
     /// Print JSON instead of text.
     #[arg(long)]
     pub json: bool,
@@ -223,13 +228,21 @@ pub fn describe(s: &Summary) -> Vec<String> {
 
 pub fn run(args: Args) -> Result<(), Failure> {
     let model = load_model(args.model.as_deref())?;
-    rolldyn_setup::FlagValues {
-        speed: Some(args.speed.si()),
-        outer_speed: Some(args.outer_speed.si()),
+    let flags = rolldyn_setup::FlagValues {
+        speed: args.speed.map(|q| q.si()),
+        outer_speed: args.outer_speed.map(|q| q.si()),
         ..Default::default()
-    }
-    .check(&model)?;
-    let summary = summarise(&model.bearing, args.speed.si(), args.outer_speed.si());
+    };
+    flags.check(&model)?;
+    let inner = flags
+        .speed
+        .or(model.operating.inner_speed)
+        .unwrap_or(FALLBACK_SPEED);
+    let outer = flags
+        .outer_speed
+        .or(model.operating.outer_speed)
+        .unwrap_or(0.0);
+    let summary = summarise(&model.bearing, inner, outer);
     if args.json {
         print_json(&summary)
     } else {
