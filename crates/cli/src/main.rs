@@ -43,6 +43,8 @@ enum Command {
     Bench(commands::bench::Args),
     /// Engine start-up: dynamics at the frozen time points of the model's schedules.
     Startup(commands::startup::Args),
+    /// Wear of raceways, rollers, cage bars, roller ends and ribs over the bearing's life.
+    Wear(commands::wear::Args),
     /// Re-run a seed's validation study and write its tables and plots.
     Study(commands::study::Args),
     /// Finite journal bearing by the Reynolds equation: load, attitude, friction, K and C.
@@ -75,6 +77,7 @@ fn main() -> ExitCode {
         Command::Sweep(args) => commands::sweep::run(args),
         Command::Bench(args) => commands::bench::run(args),
         Command::Startup(args) => commands::startup::run(args),
+        Command::Wear(args) => commands::wear::run(args),
         Command::Simulate(args) => commands::simulate::run(args),
         Command::Skid(args) => commands::skid::run(args),
         Command::Oils(args) => commands::oils::run(args),

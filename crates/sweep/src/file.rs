@@ -29,6 +29,9 @@ pub enum Analysis {
     Simulate,
     /// Quasi-static skidding (`rolldyn skid`).
     Skid,
+    /// Wear over the bearing's life (`rolldyn wear`): `duration` is the life, `period` the
+    /// recalculation period.
+    Wear,
 }
 
 /// One variant: a name and the model keys it overrides (dotted paths, TOML values with units).
@@ -51,6 +54,8 @@ pub struct SweepFile {
     /// Cage revolutions of a `simulate` run left out of its summary (`"5rev"`), as written; the
     /// dynamics' default (one) when absent.
     pub discard: Option<String>,
+    /// Recalculation period of a `wear` sweep (`"1905h"` or `"auto"`), as written.
+    pub period: Option<String>,
     pub variants: Vec<Variant>,
 }
 
@@ -74,16 +79,27 @@ impl SweepFile {
         let analysis = match take_str(&mut table, "analysis")?.as_deref() {
             None | Some("simulate") => Analysis::Simulate,
             Some("skid") => Analysis::Skid,
+            Some("wear") => Analysis::Wear,
             Some(other) => {
                 return Err(SweepError::new(
                     path,
                     "analysis",
-                    format!("'{other}' is not simulate or skid"),
+                    format!("'{other}' is not simulate, skid or wear"),
                 ));
             }
         };
         let duration = take_str(&mut table, "duration")?;
         let discard = take_str(&mut table, "discard")?;
+        let period = take_str(&mut table, "period")?;
+        let library = match take_str(&mut table, "variants_from")? {
+            None => Vec::new(),
+            Some(file) => {
+                let from = path.parent().unwrap_or(Path::new(".")).join(&file);
+                SweepFile::load(&from)
+                    .map_err(|e| SweepError::new(path, "variants_from", e.to_string()))?
+                    .variants
+            }
+        };
         let variants = match table.remove("variant") {
             Some(Value::Array(items)) => items,
             None => {
@@ -105,7 +121,7 @@ impl SweepFile {
             return Err(SweepError::new(
                 path,
                 key.clone(),
-                "unknown key (expected model, analysis, duration, discard, variant)",
+                "unknown key (expected model, analysis, duration, discard, period, variants_from, variant)",
             ));
         }
         let model_path = path.parent().unwrap_or(Path::new(".")).join(&model);
@@ -143,7 +159,31 @@ impl SweepFile {
                     format!("'{name}' is used twice"),
                 ));
             }
-            let overrides: Vec<(String, Value)> = t.into_iter().collect();
+            let mut overrides = match t.remove("like") {
+                None => Vec::new(),
+                Some(Value::String(like)) => library
+                    .iter()
+                    .find(|v| v.name == like)
+                    .map(|v| v.overrides.clone())
+                    .ok_or_else(|| {
+                        SweepError::new(
+                            path,
+                            format!("{key}.like"),
+                            format!("no variant '{like}' in the variants_from file"),
+                        )
+                    })?,
+                Some(_) => {
+                    return Err(SweepError::new(
+                        path,
+                        format!("{key}.like"),
+                        "must be a string",
+                    ));
+                }
+            };
+            for (k, v) in t {
+                overrides.retain(|(old, _)| *old != k);
+                overrides.push((k, v));
+            }
             let variant_text = apply_overrides(&model_text, &overrides)
                 .map_err(|reason| SweepError::new(path, format!("{key} ({name})"), reason))?;
             rolldyn_model::parse(&variant_text, &model_path.display().to_string())
@@ -157,6 +197,7 @@ impl SweepFile {
             analysis,
             duration,
             discard,
+            period,
             variants: parsed,
         })
     }

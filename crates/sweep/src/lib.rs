@@ -6,9 +6,16 @@
 //!
 //! ```toml
 //! model = "../2002834.toml"
-//! analysis = "simulate"          # or "skid"
-//! duration = "5rev"              # simulate only
+//! analysis = "simulate"          # or "skid", "wear"
+//! duration = "5rev"              # simulate: simulated time; wear: the life ("25000h")
 //! discard = "1rev"               # simulate only: revolutions left out of the summary (default 1)
+//! period = "1905h"               # wear only: recalculation period, or "auto" (default 1905h)
+//! variants_from = "table-3.1.toml"  # optional: named variants a variant may start from
+//!
+//! [[variant]]
+//! name = "14-bar-ra-0.8"
+//! like = "14"                    # the overrides of variant 14 of `variants_from`, then these
+//! "cage.roughness_ra" = "0.8 um"
 //!
 //! [[variant]]
 //! name = "11"

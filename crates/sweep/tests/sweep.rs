@@ -331,3 +331,38 @@ fn summary_parquet_has_the_variant_and_error_columns_of_the_csv() {
     assert_eq!(rows[1].get_string(3).unwrap(), "no solution");
     std::fs::remove_dir_all(dir).ok();
 }
+
+#[test]
+fn a_variant_starts_from_a_named_variant_of_another_file() {
+    let dir = scratch("like");
+    let library = write_sweep(
+        &dir,
+        "[[variant]]\nname = \"14\"\n\"roller.count\" = 24\n\"clearance.radial\" = \"0.005 mm\"\n",
+    );
+    std::fs::rename(&library, dir.join("library.toml")).unwrap();
+    let path = write_sweep(
+        &dir,
+        "variants_from = \"library.toml\"\n[[variant]]\nname = \"14-smooth\"\nlike = \"14\"\n\"clearance.radial\" = \"0.009 mm\"\n",
+    );
+    let sweep = SweepFile::load(&path).unwrap();
+    let v = &sweep.variants[0];
+    assert_eq!(v.overrides.len(), 2);
+    assert!(
+        v.overrides
+            .contains(&("roller.count".into(), toml::Value::Integer(24)))
+    );
+    assert!(v.overrides.contains(&(
+        "clearance.radial".into(),
+        toml::Value::String("0.009 mm".into())
+    )));
+    let bad = write_sweep(
+        &dir,
+        "variants_from = \"library.toml\"\n[[variant]]\nname = \"x\"\nlike = \"99\"\n",
+    );
+    assert!(
+        SweepFile::load(&bad)
+            .unwrap_err()
+            .to_string()
+            .contains("no variant '99'")
+    );
+}

@@ -18,3 +18,4 @@ pub mod startup;
 pub mod study;
 pub mod sweep;
 pub mod traction;
+pub mod wear;

@@ -95,6 +95,56 @@ fn skid(model: rolldyn_model::Model) -> Result<BTreeMap<String, f64>, String> {
     ))
 }
 
+/// The life run of one variant (`analysis = "wear"`): the depths at the end as its row.
+fn wear(
+    settings: &rolldyn_wear::WearSettings,
+    model: rolldyn_model::Model,
+) -> Result<BTreeMap<String, f64>, String> {
+    let answer =
+        rolldyn_wear::study::run_wear(&model, &Overrides::default(), settings, None, &mut |_| {})
+            .map_err(|e| e.to_string())?;
+    let mut row: BTreeMap<String, f64> = answer
+        .max_depth_m
+        .iter()
+        .map(|(s, d)| (format!("max_depth_{}_m", s.name()), d))
+        .collect();
+    row.insert("life_h".into(), answer.life_h);
+    row.insert("clearance_increase_m".into(), answer.clearance_increase_m);
+    row.insert("periods".into(), answer.periods.len() as f64);
+    Ok(row)
+}
+
+/// The wear settings of a `wear` sweep: its `duration` is the life, its `period` the period.
+fn wear_settings(sweep: &SweepFile) -> Result<rolldyn_wear::WearSettings, String> {
+    use super::wear::PeriodArg;
+    use rolldyn_wear::PeriodControl;
+    let defaults = rolldyn_wear::WearSettings::default();
+    if sweep.analysis != Analysis::Wear {
+        return Ok(defaults);
+    }
+    let life_s = match sweep.duration.as_deref() {
+        Some(text) => rolldyn_units::Quantity::<rolldyn_units::Time>::parse(text)
+            .map_err(|e| format!("duration (the life) — {e}"))?
+            .si(),
+        None => defaults.life_s,
+    };
+    let period = match sweep
+        .period
+        .as_deref()
+        .map(str::parse::<PeriodArg>)
+        .transpose()?
+    {
+        None => defaults.period,
+        Some(PeriodArg::Fixed(p)) => PeriodControl::Fixed(p),
+        Some(PeriodArg::Auto) => PeriodControl::auto(defaults.period.initial_s()),
+    };
+    Ok(rolldyn_wear::WearSettings {
+        life_s,
+        period,
+        ..defaults
+    })
+}
+
 /// The revolution count of a sweep file's `discard` (`"5rev"`).
 fn discarded_revolutions(text: &str) -> Result<u32, String> {
     text.trim()
@@ -107,8 +157,12 @@ fn discarded_revolutions(text: &str) -> Result<u32, String> {
 
 /// The settings of the analysis beyond the sweep file (solver defaults and tolerances) for the
 /// variants' fingerprints.
-fn settings(analysis: Analysis, duration: Duration) -> String {
+fn settings(analysis: Analysis, duration: Duration, wear: &rolldyn_wear::WearSettings) -> String {
     match analysis {
+        Analysis::Wear => format!(
+            "{wear:?}; {:?}",
+            rolldyn_dynamics::DynamicsSettings::default()
+        ),
         Analysis::Simulate => format!(
             "duration {duration:?}; {:?}",
             rolldyn_dynamics::DynamicsSettings::default()
@@ -119,12 +173,13 @@ fn settings(analysis: Analysis, duration: Duration) -> String {
 
 pub fn run(args: Args) -> Result<(), Failure> {
     let sweep = SweepFile::load(&args.sweep).map_err(|e| Failure::Input(e.to_string()))?;
-    let duration: Duration = sweep
-        .duration
-        .as_deref()
-        .unwrap_or("5rev")
-        .parse()
-        .map_err(|e: String| Failure::Input(format!("{}: duration — {e}", args.sweep.display())))?;
+    let bad = |e: String| Failure::Input(format!("{}: {e}", args.sweep.display()));
+    let wear_settings = wear_settings(&sweep).map_err(bad)?;
+    let duration: Duration = match sweep.analysis {
+        Analysis::Wear => "1rev".parse(),
+        _ => sweep.duration.as_deref().unwrap_or("5rev").parse(),
+    }
+    .map_err(|e: String| bad(format!("duration — {e}")))?;
     let discard = sweep
         .discard
         .as_deref()
@@ -148,9 +203,11 @@ pub fn run(args: Args) -> Result<(), Failure> {
         .clone()
         .unwrap_or_else(|| PathBuf::from("out").join(stem));
     let analysis = sweep.analysis;
+    let wear_settings_ref = &wear_settings;
     let analyse = move |_: &Variant, model: rolldyn_model::Model| match analysis {
         Analysis::Simulate => simulate(duration, discard, model),
         Analysis::Skid => skid(model),
+        Analysis::Wear => wear(wear_settings_ref, model),
     };
     let done = AtomicUsize::new(0);
     let total = sweep.variants.len();
@@ -169,7 +226,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
         jobs: args.jobs.count(),
         shard: args.shard,
         resume: args.resume,
-        settings: settings(analysis, duration),
+        settings: settings(analysis, duration, &wear_settings),
     };
     let outcomes = run_sweep(&sweep, &options, &analyse, &progress)
         .map_err(|e| Failure::Run(e.to_string()))?;

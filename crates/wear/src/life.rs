@@ -1,0 +1,297 @@
+//! The life loop (seed 000 §2.4.1 step 7, §3.2.3; docs/theory.md §8.8): dynamics of the current
+//! geometry → wear rates → depth over a period → worn geometry → dynamics …, until the
+//! requested life or an operability limit; with the automatic period, a period whose rates
+//! change too much is halved and recomputed.
+
+use crate::WearError;
+use crate::bearing_data::WearData;
+use crate::rates::{ContactDiagnostics, SurfaceWear};
+use crate::recorder::WearRecorder;
+use crate::settings::{PeriodControl, WearSettings};
+use crate::surface::{PerSurface, Surface};
+use crate::worn::worn_bearing;
+use rolldyn_dynamics::conditions::OperatingConditions;
+use rolldyn_dynamics::output::NullSink;
+use rolldyn_geometry::CylindricalRollerBearing;
+use rolldyn_model::{DynamicsInputs, Lubrication};
+use std::time::Instant;
+
+/// One period of the life loop.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct PeriodRecord {
+    /// 1, 2, …
+    pub index: usize,
+    /// operating time at the end of the period, h
+    pub time_h: f64,
+    pub period_h: f64,
+    /// largest wear rate of each surface during the period, m/s of depth
+    pub max_rate_m_s: PerSurface<f64>,
+    /// largest accumulated depth of each surface at the end of the period, m
+    pub max_depth_m: PerSurface<f64>,
+    /// operating radial clearance increase at the end of the period, m
+    pub clearance_increase_m: f64,
+    /// mean cage speed of the dynamics run, rad/s
+    pub cage_speed_rad_s: f64,
+    /// cage revolutions in the period
+    pub revolutions: f64,
+    /// inner raceway, outer raceway, cage bar, rib: what the rates came from
+    pub contacts: [ContactDiagnostics; 4],
+    /// periods halved before this one was accepted
+    pub halvings: u32,
+    pub dynamics_wall_s: f64,
+    pub wear_wall_s: f64,
+}
+
+/// What ended the run.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum StopReason {
+    LifeReached,
+    ClearanceLimit,
+    DepthLimit(Surface),
+}
+
+/// The result of a life run.
+#[derive(Debug, Clone)]
+pub struct LifeRun {
+    pub periods: Vec<PeriodRecord>,
+    /// accumulated depth at the end, m
+    pub depth: SurfaceWear,
+    /// the unworn slice centres the roller and raceway lines sit at, m
+    pub line_positions_m: Vec<f64>,
+    pub worn: CylindricalRollerBearing,
+    pub life_h: f64,
+    pub stop: StopReason,
+}
+
+/// The bearing, oil, dynamics inputs and conditions a life run works on.
+pub struct LifeInputs<'a> {
+    pub bearing: &'a CylindricalRollerBearing,
+    pub lubrication: &'a Lubrication,
+    pub dynamics: &'a DynamicsInputs,
+    pub conditions: &'a OperatingConditions,
+}
+
+/// The wear rates of one geometry and what they cost.
+#[derive(Debug, Clone)]
+pub struct RatesRun {
+    pub rates: SurfaceWear,
+    /// mean cage speed over the recorded revolutions, rad/s
+    pub cage_speed_rad_s: f64,
+    /// wall time of the dynamics (set-up and integration), s
+    pub dynamics_s: f64,
+    /// wall time of the wear computation (geometry update and the recorder), s
+    pub wear_s: f64,
+}
+
+/// Rates of the bearing worn by `depth`: a dynamics run of `settings.settle_revolutions`
+/// discarded and `settings.revolutions` recorded cage revolutions.
+pub fn rates_of(
+    inputs: &LifeInputs,
+    positions: &[f64],
+    depth: &SurfaceWear,
+    settings: &WearSettings,
+) -> Result<RatesRun, WearError> {
+    let wall = Instant::now();
+    let bearing = worn_bearing(inputs.bearing, positions, depth)?;
+    let data = WearData::new(
+        &bearing,
+        &inputs.lubrication.oil,
+        inputs.conditions.temperatures.cage_k,
+        settings,
+    )?;
+    let geometry_s = wall.elapsed().as_secs_f64();
+    let prepared = rolldyn_setup::prepare_with(
+        &bearing,
+        inputs.lubrication,
+        inputs.dynamics,
+        inputs.conditions.clone(),
+        settings.output_step_s,
+        None,
+    )
+    .map_err(|e| WearError::Input(e.0))?;
+    let revolution = prepared.revolution_s.ok_or_else(|| {
+        WearError::Input("wear needs a running bearing: the rings do not turn at t = 0".into())
+    })?;
+    let mut sim = prepared.simulation;
+    let settle = settings.settle_revolutions as f64 * revolution;
+    let numerical = |e: rolldyn_dynamics::DynError| WearError::Numerical(e.to_string());
+    sim.run_until(settle, &mut NullSink, &mut |_| {})
+        .map_err(numerical)?;
+    let mut recorder = WearRecorder::new(&data, settings);
+    let end = settle + settings.revolutions as f64 * revolution;
+    sim.run_until(end, &mut recorder, &mut |_| {})
+        .map_err(numerical)?;
+    if recorder.samples() == 0 {
+        return Err(WearError::Numerical(
+            "the dynamics gave no output step to record".into(),
+        ));
+    }
+    let total = wall.elapsed().as_secs_f64();
+    let wear_s = geometry_s + recorder.wall_s();
+    Ok(RatesRun {
+        rates: recorder.rates(),
+        cage_speed_rad_s: recorder.mean_cage_speed(),
+        dynamics_s: total - wear_s,
+        wear_s,
+    })
+}
+
+/// Relative change of each surface's largest rate from `before` to `after` (0 when both are 0).
+fn rate_changes(before: &PerSurface<f64>, after: &PerSurface<f64>) -> PerSurface<f64> {
+    PerSurface::from_fn(|s| {
+        let (a, b) = (before.get(s), after.get(s));
+        if a > 0.0 {
+            b / a - 1.0
+        } else if b > 0.0 {
+            1.0
+        } else {
+            0.0
+        }
+    })
+}
+
+/// Whether the automatic control rejects a period whose rates changed by `change` after the
+/// previous period's `previous_change`: a change beyond the threshold, or a trend reversal
+/// larger than the noise on both sides.
+fn period_too_long(
+    control: &PeriodControl,
+    change: &PerSurface<f64>,
+    previous_change: Option<&PerSurface<f64>>,
+) -> bool {
+    let PeriodControl::Auto {
+        change_threshold,
+        trend_noise,
+        ..
+    } = *control
+    else {
+        return false;
+    };
+    change.iter().any(|(s, c)| {
+        let reversal = previous_change.is_some_and(|p| {
+            let p = p.get(s);
+            p * c < 0.0 && p.abs() > trend_noise && c.abs() > trend_noise
+        });
+        c.abs() > change_threshold || reversal
+    })
+}
+
+/// The limit `depth` violates, if any.
+fn limit_reached(settings: &WearSettings, depth: &SurfaceWear) -> Option<StopReason> {
+    let limits = &settings.limits;
+    if limits
+        .clearance_increase_m
+        .is_some_and(|l| depth.clearance_increase() > l)
+    {
+        return Some(StopReason::ClearanceLimit);
+    }
+    let deepest = Surface::ALL
+        .into_iter()
+        .find(|&s| limits.depth_m.is_some_and(|l| depth.max(s) > l));
+    deepest.map(StopReason::DepthLimit)
+}
+
+/// Runs the life loop; `on_period` sees every accepted period with the depth at its end (for
+/// streaming outputs and progress).
+pub fn run_life(
+    inputs: &LifeInputs,
+    settings: &WearSettings,
+    on_period: &mut dyn FnMut(&PeriodRecord, &SurfaceWear),
+) -> Result<LifeRun, WearError> {
+    let hour = 3600.0;
+    let positions = inputs.bearing.roller.slices().position;
+    let lines = positions.len();
+    let mut depth = SurfaceWear::zero(lines, settings.angle_bins, inputs.bearing.roller_count);
+    // the first period books the run at the unworn geometry too
+    let mut current = rates_of(inputs, &positions, &depth, settings)?;
+    let (mut dynamics_s, mut wear_s) = (current.dynamics_s, current.wear_s);
+    let mut period = settings.period.initial_s();
+    let minimum = match settings.period {
+        PeriodControl::Auto { minimum_s, .. } => minimum_s,
+        PeriodControl::Fixed(p) => p,
+    };
+    let mut previous_change: Option<PerSurface<f64>> = None;
+    let (mut time, mut periods, mut stop) = (0.0, Vec::new(), StopReason::LifeReached);
+    while time < settings.life_s * (1.0 - 1e-12) {
+        let mut halvings = 0;
+        let (next_depth, next, step) = loop {
+            let step = period.min(settings.life_s - time);
+            let mut trial = depth.clone();
+            trial.add_scaled(&current.rates, step);
+            let next = rates_of(inputs, &positions, &trial, settings)?;
+            dynamics_s += next.dynamics_s;
+            wear_s += next.wear_s;
+            let change = rate_changes(
+                &current.rates.max_per_surface(),
+                &next.rates.max_per_surface(),
+            );
+            if period / 2.0 >= minimum
+                && period_too_long(&settings.period, &change, previous_change.as_ref())
+            {
+                period /= 2.0;
+                halvings += 1;
+                continue;
+            }
+            previous_change = Some(change);
+            break (trial, next, step);
+        };
+        time += step;
+        let record = PeriodRecord {
+            index: periods.len() + 1,
+            time_h: time / hour,
+            period_h: step / hour,
+            max_rate_m_s: current.rates.max_per_surface(),
+            max_depth_m: next_depth.max_per_surface(),
+            clearance_increase_m: next_depth.clearance_increase(),
+            cage_speed_rad_s: current.cage_speed_rad_s,
+            revolutions: current.cage_speed_rad_s * step / std::f64::consts::TAU,
+            contacts: current.rates.diagnostics,
+            halvings,
+            dynamics_wall_s: dynamics_s,
+            wear_wall_s: wear_s,
+        };
+        on_period(&record, &next_depth);
+        periods.push(record);
+        (depth, current, dynamics_s, wear_s) = (next_depth, next, 0.0, 0.0);
+        if let Some(reason) = limit_reached(settings, &depth) {
+            stop = reason;
+            break;
+        }
+    }
+    let worn = worn_bearing(inputs.bearing, &positions, &depth)?;
+    Ok(LifeRun {
+        periods,
+        depth,
+        line_positions_m: positions,
+        worn,
+        life_h: time / hour,
+        stop,
+    })
+}
+
+/// The convergence evidence of a life run (SPEC §6.6): the same life with a fixed period of
+/// half the shortest period `run` accepted, and the relative difference of each surface's
+/// final depth (`run` against the halved run).
+pub fn halved_period_check(
+    inputs: &LifeInputs,
+    settings: &WearSettings,
+    run: &LifeRun,
+) -> Result<(LifeRun, PerSurface<f64>), WearError> {
+    let shortest = run
+        .periods
+        .iter()
+        .map(|p| p.period_h * 3600.0)
+        .fold(f64::INFINITY, f64::min);
+    let halved = WearSettings {
+        period: PeriodControl::Fixed(0.5 * shortest),
+        life_s: run.life_h * 3600.0,
+        limits: Default::default(),
+        ..settings.clone()
+    };
+    let check = run_life(inputs, &halved, &mut |_, _| {})?;
+    let difference = PerSurface::from_fn(|s| {
+        let (a, b) = (run.depth.max(s), check.depth.max(s));
+        if b > 0.0 { a / b - 1.0 } else { 0.0 }
+    });
+    Ok((check, difference))
+}

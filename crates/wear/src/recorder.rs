@@ -1,0 +1,418 @@
+//! The direct and the averaged wear methods as a sink of the dynamics' output steps (seed 000
+//! §2.4.1, §2.4.2; docs/theory.md §8.5–8.6): every output step's contact forces, sliding speeds
+//! and films become wear on the wear lines of every surface, summed over the recorded
+//! revolutions; [`WearRecorder::rates`] divides by the recorded time.
+
+use crate::averaged::AveragedContact;
+use crate::bar_load::bar_slice_forces;
+use crate::bearing_data::WearData;
+use crate::rates::{ContactDiagnostics, SurfaceWear};
+use crate::settings::{WearMethod, WearSettings};
+use crate::wear_line::{LinePatch, point_patch, slice_patch};
+use rolldyn_dynamics::EndContactRegime;
+use rolldyn_dynamics::output::{ContactSnapshot, OutputSink, Snapshot};
+use std::f64::consts::{PI, TAU};
+
+/// Samples of one contact kind for the averaged method: the equivalent-force sums, the
+/// force-weighted shape of the load over the wear lines and the contact-time-weighted ln Λ.
+#[derive(Debug, Clone)]
+struct AveragedSums {
+    contact: AveragedContact,
+    line_share: Vec<f64>,
+    ln_lambda_time: f64,
+    lambda_time: f64,
+    boundary_time: f64,
+}
+
+impl AveragedSums {
+    fn new(lines: usize, exponent: f64) -> Self {
+        Self {
+            contact: AveragedContact::new(exponent),
+            line_share: vec![0.0; lines],
+            ln_lambda_time: 0.0,
+            lambda_time: 0.0,
+            boundary_time: 0.0,
+        }
+    }
+
+    fn add(&mut self, force: f64, speed: f64, dt: f64, lambda: f64, boundary: bool, lines: &[f64]) {
+        if !(force > 0.0) {
+            return;
+        }
+        self.contact.add(force, speed, dt);
+        for (s, &f) in self.line_share.iter_mut().zip(lines) {
+            *s += f * dt;
+        }
+        if boundary {
+            self.boundary_time += dt;
+        } else if lambda.is_finite() && lambda > 0.0 {
+            self.ln_lambda_time += lambda.ln() * dt;
+            self.lambda_time += dt;
+        }
+    }
+
+    /// Mean Λ over the contact time (geometric mean; NaN without film samples).
+    fn mean_lambda(&self) -> f64 {
+        (self.ln_lambda_time / self.lambda_time).exp()
+    }
+
+    /// Whether boundary friction held for most of the contact time.
+    fn mostly_boundary(&self) -> bool {
+        self.boundary_time > 0.5 * self.contact.contact_time()
+    }
+
+    /// The equivalent force spread over the lines in the recorded load shape.
+    fn equivalent_line_forces(&self) -> Vec<f64> {
+        let total: f64 = self.line_share.iter().sum();
+        let qe = self.contact.equivalent_force();
+        self.line_share
+            .iter()
+            .map(|s| if total > 0.0 { qe * s / total } else { 0.0 })
+            .collect()
+    }
+}
+
+/// Wear of one output-step window, summed (depth in m) on every wear line.
+pub struct WearRecorder<'a> {
+    data: &'a WearData,
+    settings: &'a WearSettings,
+    recorded_s: f64,
+    samples: u64,
+    cage_angle_travel: f64,
+    /// wall time spent in this sink, s (the wear side of the dynamics/wear split)
+    wall_s: f64,
+    /// direct-method depth sums, m
+    depth: SurfaceWear,
+    /// averaged-method sums: inner, outer, bar, rib; raceway bins separately
+    averaged: [AveragedSums; 4],
+    inner_bins: Vec<AveragedSums>,
+    outer_bins: Vec<AveragedSums>,
+    /// Σ dt × (reduced radius, contact radius on the roller, on the ring) of the rib contacts
+    rib_geometry_time: [f64; 3],
+    scratch: Vec<f64>,
+}
+
+impl<'a> WearRecorder<'a> {
+    pub fn new(data: &'a WearData, settings: &'a WearSettings) -> Self {
+        let lines = data.lines();
+        let e = settings.equivalent_force_exponent;
+        let bins = settings.angle_bins;
+        Self {
+            data,
+            settings,
+            recorded_s: 0.0,
+            samples: 0,
+            cage_angle_travel: 0.0,
+            wall_s: 0.0,
+            depth: SurfaceWear::zero(lines, bins, data.roller_count),
+            averaged: std::array::from_fn(|_| AveragedSums::new(lines, e)),
+            inner_bins: vec![AveragedSums::new(lines, e); bins],
+            outer_bins: vec![AveragedSums::new(lines, e); bins],
+            rib_geometry_time: [0.0; 3],
+            scratch: vec![0.0; lines],
+        }
+    }
+
+    /// Mean cage speed over the recorded time, rad/s.
+    pub fn mean_cage_speed(&self) -> f64 {
+        self.cage_angle_travel / self.recorded_s
+    }
+
+    /// Wall time spent computing wear in the sink, s.
+    pub fn wall_s(&self) -> f64 {
+        self.wall_s
+    }
+
+    /// Output steps recorded.
+    pub fn samples(&self) -> u64 {
+        self.samples
+    }
+
+    fn bin(&self, azimuth: f64, ring_angle: f64) -> usize {
+        let bins = self.settings.angle_bins;
+        let psi = (azimuth - ring_angle).rem_euclid(TAU);
+        ((psi / TAU * bins as f64) as usize).min(bins - 1)
+    }
+
+    fn exposure(&self, patch: LinePatch, length: f64) -> f64 {
+        self.settings.exposure_width.width(patch.half_width_m) / length
+    }
+
+    /// One raceway contact of roller `j` (direct method): raceway map bin and roller lines.
+    fn raceway(&mut self, inner: bool, j: usize, c: &ContactSnapshot, bin: usize, dt: f64) {
+        let d = self.data;
+        let pair = if inner { &d.inner } else { &d.outer };
+        let ns = d.lines();
+        let forces = &c.slice_force_n[j * ns..(j + 1) * ns];
+        let (v, lambda) = (c.sliding_speed_m_s[j], c.lambda[j]);
+        let k = self.settings.coefficient.for_contact(lambda, false);
+        let arc = pair.raceway_radius_m * TAU / self.settings.angle_bins as f64;
+        for (s, &f) in forces.iter().enumerate() {
+            let patch = slice_patch(
+                f,
+                d.slice_lengths_m[s],
+                pair.reduced_radius_m,
+                pair.reduced_modulus_pa,
+            );
+            if patch.mean_pressure_pa == 0.0 {
+                continue;
+            }
+            let pv = k * patch.mean_pressure_pa * v * dt;
+            let ring = pv / pair.ring_hardness_pa * self.exposure(patch, arc);
+            let roller = pv / d.roller_hardness_pa * self.exposure(patch, PI * d.roller_diameter_m);
+            let map = if inner {
+                &mut self.depth.inner_map
+            } else {
+                &mut self.depth.outer_map
+            };
+            map[s * self.settings.angle_bins + bin] += ring;
+            self.depth.roller[s] += roller / d.roller_count as f64;
+        }
+        let sums = if inner {
+            &mut self.inner_bins[bin]
+        } else {
+            &mut self.outer_bins[bin]
+        };
+        sums.add(c.force_n[j], v, dt, lambda, false, forces);
+        self.averaged[if inner { 0 } else { 1 }].add(c.force_n[j], v, dt, lambda, false, forces);
+    }
+
+    /// Roller `j` on its cage bar (direct method): bar lines of its pocket and roller lines.
+    fn bar(&mut self, j: usize, force: f64, v: f64, dt: f64) {
+        let d = self.data;
+        let bar = &d.bar;
+        bar_slice_forces(
+            force,
+            &d.slice_lengths_m,
+            &d.slice_drops_m,
+            bar.reduced_radius_m,
+            bar.reduced_modulus_pa,
+            &mut self.scratch,
+        );
+        let lambda = d.bar_lambda(force, v);
+        let k = self.settings.coefficient.for_contact(lambda, false);
+        let ns = d.lines();
+        for s in 0..ns {
+            let patch = slice_patch(
+                self.scratch[s],
+                d.slice_lengths_m[s],
+                bar.reduced_radius_m,
+                bar.reduced_modulus_pa,
+            );
+            if patch.mean_pressure_pa == 0.0 {
+                continue;
+            }
+            let pv = k * patch.mean_pressure_pa * v * dt;
+            let on_bar = pv / bar.hardness_pa * self.exposure(patch, bar.exposure_length_m);
+            let on_roller =
+                pv / d.roller_hardness_pa * self.exposure(patch, PI * d.roller_diameter_m);
+            self.depth.bar_by_pocket[j * ns + s] += on_bar;
+            self.depth.roller_at_bar[s] += on_roller / d.roller_count as f64;
+        }
+        let forces = self.scratch.clone();
+        self.averaged[2].add(force, v, dt, lambda, false, &forces);
+    }
+
+    /// Roller `j` on the ribs (direct method): one wear line on the end, one on the rib.
+    fn rib(&mut self, j: usize, snapshot: &Snapshot, dt: f64) {
+        let r = &snapshot.rollers;
+        let force = r.rib_force_n[j];
+        if !(force > 0.0) {
+            return;
+        }
+        let d = self.data;
+        let ends = &d.ends;
+        let radius = r.rib_reduced_radius_m[j];
+        let radius = if radius.is_finite() && radius > 0.0 {
+            radius
+        } else {
+            ends.edge_radius_m
+        };
+        let patch = point_patch(force, radius, ends.reduced_modulus_pa);
+        let v = r.rib_sliding_speed_m_s[j];
+        let boundary = r.rib_regime[j] == EndContactRegime::Boundary;
+        let (on_roller_r, on_ring_r) = (r.rib_contact_radius_m[j], r.rib_contact_ring_radius_m[j]);
+        let entrainment = 0.5
+            * ((snapshot.inner_ring_speed_rad_s - snapshot.cage_speed_rad_s).abs() * on_ring_r
+                + (r.spin_speed_rad_s[j] - snapshot.cage_speed_rad_s).abs() * on_roller_r);
+        let lambda = if boundary {
+            f64::NAN
+        } else {
+            d.rib_lambda(force, entrainment, radius)
+        };
+        let k = self.settings.coefficient.for_contact(lambda, boundary);
+        let pv = k * patch.mean_pressure_pa * v * dt;
+        if on_roller_r > 0.0 {
+            // both ends share the wear (the roller touches either rib)
+            self.depth.roller_end += 0.5 * pv / d.roller_hardness_pa
+                * self.exposure(patch, TAU * on_roller_r)
+                / d.roller_count as f64;
+        }
+        if on_ring_r > 0.0 {
+            // every roller passes the rib circle; both ribs share it
+            self.depth.rib +=
+                0.5 * pv / ends.ring_hardness_pa * self.exposure(patch, TAU * on_ring_r);
+        }
+        self.averaged[3].add(force, v, dt, lambda, boundary, &[force]);
+        for (sum, x) in self
+            .rib_geometry_time
+            .iter_mut()
+            .zip([radius, on_roller_r, on_ring_r])
+        {
+            *sum += x * dt;
+        }
+    }
+
+    /// Rates of the averaged method (seed 000 eq. 2.35): per contact kind the equivalent force
+    /// spread over the lines in the recorded load shape, the mean sliding speed and k at the
+    /// mean Λ, times the fraction of time in contact.
+    fn averaged_rates(&self) -> SurfaceWear {
+        let d = self.data;
+        let t = self.recorded_s;
+        let z = d.roller_count as f64;
+        let mut w = SurfaceWear::zero(d.lines(), self.settings.angle_bins, d.roller_count);
+        // (rate while in contact, patch) on every line of one contact kind
+        let on_lines = |sums: &AveragedSums, radius: f64, modulus: f64| -> Vec<(f64, LinePatch)> {
+            let k = self
+                .settings
+                .coefficient
+                .for_contact(sums.mean_lambda(), sums.mostly_boundary());
+            let v = sums.contact.mean_sliding_speed();
+            sums.equivalent_line_forces()
+                .iter()
+                .zip(&d.slice_lengths_m)
+                .map(|(&f, &l)| {
+                    let patch = slice_patch(f, l, radius, modulus);
+                    (k * patch.mean_pressure_pa * v, patch)
+                })
+                .collect()
+        };
+        for (inner, bins) in [(true, &self.inner_bins), (false, &self.outer_bins)] {
+            let pair = if inner { &d.inner } else { &d.outer };
+            let arc = pair.raceway_radius_m * TAU / self.settings.angle_bins as f64;
+            let map = if inner {
+                &mut w.inner_map
+            } else {
+                &mut w.outer_map
+            };
+            for (b, sums) in bins.iter().enumerate() {
+                let time = sums.contact.contact_time() / t;
+                for (s, (kpv, patch)) in
+                    on_lines(sums, pair.reduced_radius_m, pair.reduced_modulus_pa)
+                        .into_iter()
+                        .enumerate()
+                {
+                    map[s * self.settings.angle_bins + b] +=
+                        kpv / pair.ring_hardness_pa * self.exposure(patch, arc) * time;
+                }
+            }
+            let sums = &self.averaged[if inner { 0 } else { 1 }];
+            let time = sums.contact.contact_time() / (z * t);
+            for (s, (kpv, patch)) in on_lines(sums, pair.reduced_radius_m, pair.reduced_modulus_pa)
+                .into_iter()
+                .enumerate()
+            {
+                w.roller[s] += kpv / d.roller_hardness_pa
+                    * self.exposure(patch, PI * d.roller_diameter_m)
+                    * time;
+            }
+        }
+        let sums = &self.averaged[2];
+        let time = sums.contact.contact_time() / (z * t);
+        for (s, (kpv, patch)) in on_lines(sums, d.bar.reduced_radius_m, d.bar.reduced_modulus_pa)
+            .into_iter()
+            .enumerate()
+        {
+            let on_bar =
+                kpv / d.bar.hardness_pa * self.exposure(patch, d.bar.exposure_length_m) * time;
+            for j in 0..d.roller_count {
+                w.bar_by_pocket[j * d.lines() + s] = on_bar;
+            }
+            w.roller_at_bar[s] =
+                kpv / d.roller_hardness_pa * self.exposure(patch, PI * d.roller_diameter_m) * time;
+        }
+        let sums = &self.averaged[3];
+        let contact_time = sums.contact.contact_time();
+        if contact_time > 0.0 {
+            let [radius, on_roller, on_ring] = self.rib_geometry_time.map(|x| x / contact_time);
+            let k = self
+                .settings
+                .coefficient
+                .for_contact(sums.mean_lambda(), sums.mostly_boundary());
+            let patch = point_patch(
+                sums.contact.equivalent_force(),
+                radius,
+                d.ends.reduced_modulus_pa,
+            );
+            let kpv = k * patch.mean_pressure_pa * sums.contact.mean_sliding_speed();
+            w.roller_end = 0.5 * kpv / d.roller_hardness_pa
+                * self.exposure(patch, TAU * on_roller)
+                * contact_time
+                / (z * t);
+            w.rib = 0.5 * kpv / d.ends.ring_hardness_pa
+                * self.exposure(patch, TAU * on_ring)
+                * contact_time
+                / t;
+        }
+        w
+    }
+
+    /// Wear rates of the recorded window, m/s of depth, by the chosen method.
+    pub fn rates(&self) -> SurfaceWear {
+        let t = self.recorded_s;
+        let mut rates = match self.settings.method {
+            WearMethod::Direct => self.depth.scaled(1.0 / t),
+            WearMethod::Averaged => self.averaged_rates(),
+        };
+        rates.diagnostics = self.diagnostics();
+        rates.recorded_s = t;
+        rates
+    }
+
+    fn diagnostics(&self) -> [ContactDiagnostics; 4] {
+        let t = self.recorded_s;
+        std::array::from_fn(|i| {
+            let a = &self.averaged[i];
+            ContactDiagnostics {
+                equivalent_force_n: a.contact.equivalent_force(),
+                mean_sliding_speed_m_s: a.contact.mean_sliding_speed(),
+                contact_fraction: a.contact.contact_time() / t,
+                mean_lambda: a.mean_lambda(),
+                boundary_fraction: a.boundary_time
+                    / a.contact.contact_time().max(f64::MIN_POSITIVE),
+            }
+        })
+    }
+}
+
+impl OutputSink for WearRecorder<'_> {
+    fn sample(&mut self, _t: f64, s: &Snapshot) {
+        let wall = std::time::Instant::now();
+        let dt = self.settings.output_step_s;
+        self.samples += 1;
+        self.recorded_s += dt;
+        self.cage_angle_travel += s.cage_speed_rad_s * dt;
+        let r = &s.rollers;
+        for j in 0..self.data.roller_count {
+            let az = r.azimuth_rad[j];
+            if r.inner.force_n[j] > 0.0 {
+                let bin = self.bin(az, s.inner_ring_angle_rad);
+                self.raceway(true, j, &r.inner, bin, dt);
+            }
+            if r.outer.force_n[j] > 0.0 {
+                let bin = self.bin(az, s.outer_ring_angle_rad);
+                self.raceway(false, j, &r.outer, bin, dt);
+            }
+            if r.cage_bar_force_n[j] > 0.0 {
+                self.bar(
+                    j,
+                    r.cage_bar_force_n[j],
+                    r.cage_bar_sliding_speed_m_s[j],
+                    dt,
+                );
+            }
+            self.rib(j, s, dt);
+        }
+        self.wall_s += wall.elapsed().as_secs_f64();
+    }
+}

@@ -1,0 +1,261 @@
+//! The tables and plots of a life run (`rolldyn wear --out DIR`, docs/outputs.md "wear"):
+//! streamed period by period so that a run stopped by a failure keeps what it computed.
+
+use crate::life::PeriodRecord;
+use crate::rates::SurfaceWear;
+use crate::surface::Surface;
+use rolldyn_output::{Formats, OutputError, TableWriter};
+use rolldyn_plot::{Field, Labels, PlotError, Series, heat_map, line_plot};
+use std::path::{Path, PathBuf};
+
+const UM: f64 = 1e6;
+/// rates are reported in µm per 1000 h
+const UM_PER_KH: f64 = 1e6 * 3.6e6;
+
+/// Column names of the periods table.
+pub fn period_columns() -> Vec<String> {
+    let mut names: Vec<String> = [
+        "period",
+        "time_h",
+        "period_h",
+        "cage_speed_rad_s",
+        "revolutions",
+        "clearance_increase_um",
+        "halvings",
+        "dynamics_wall_s",
+        "wear_wall_s",
+    ]
+    .map(String::from)
+    .into();
+    for s in Surface::ALL {
+        names.push(format!("max_depth_{}_um", s.name()));
+        names.push(format!("max_rate_{}_um_per_1000h", s.name()));
+    }
+    for (kind, _) in crate::rates::CONTACT_KINDS.iter().zip(0..) {
+        for q in [
+            "equivalent_force_n",
+            "mean_sliding_speed_m_s",
+            "contact_fraction",
+            "mean_lambda",
+            "boundary_fraction",
+        ] {
+            names.push(format!("{kind}_{q}"));
+        }
+    }
+    names
+}
+
+fn period_row(p: &PeriodRecord) -> Vec<f64> {
+    let mut row = vec![
+        p.index as f64,
+        p.time_h,
+        p.period_h,
+        p.cage_speed_rad_s,
+        p.revolutions,
+        p.clearance_increase_m * UM,
+        p.halvings as f64,
+        p.dynamics_wall_s,
+        p.wear_wall_s,
+    ];
+    for s in Surface::ALL {
+        row.push(p.max_depth_m.get(s) * UM);
+        row.push(p.max_rate_m_s.get(s) * UM_PER_KH);
+    }
+    for c in &p.contacts {
+        row.extend([
+            c.equivalent_force_n,
+            c.mean_sliding_speed_m_s,
+            c.contact_fraction,
+            c.mean_lambda,
+            c.boundary_fraction,
+        ]);
+    }
+    row
+}
+
+fn names(n: &[&str]) -> Vec<String> {
+    n.iter().map(|s| s.to_string()).collect()
+}
+
+/// The tables of a life run, written as the periods come.
+pub struct WearTables {
+    dir: PathBuf,
+    periods: TableWriter,
+    roller: TableWriter,
+    bar: TableWriter,
+    maps: [TableWriter; 2],
+    /// (time h, roller depth, bar depth) per period, for the plots
+    history: Vec<(f64, Vec<f64>, Vec<f64>)>,
+    records: Vec<PeriodRecord>,
+    positions_mm: Vec<f64>,
+}
+
+impl WearTables {
+    pub fn create(dir: &Path, positions_m: &[f64]) -> Result<Self, OutputError> {
+        let f = Formats::default();
+        let profile = names(&["period", "time_h", "x_mm", "depth_um", "depth_from_bar_um"]);
+        let bar = names(&[
+            "period",
+            "time_h",
+            "x_mm",
+            "depth_mean_um",
+            "depth_max_pocket_um",
+        ]);
+        let map = names(&["period", "time_h", "axial_mm", "angle_deg", "depth_um"]);
+        Ok(Self {
+            dir: dir.to_path_buf(),
+            periods: TableWriter::create(dir, "periods", &period_columns(), f)?,
+            roller: TableWriter::create(dir, "roller-profile", &profile, f)?,
+            bar: TableWriter::create(dir, "bar-profile", &bar, f)?,
+            maps: [
+                TableWriter::create(dir, "inner-raceway-map", &map, f)?,
+                TableWriter::create(dir, "outer-raceway-map", &map, f)?,
+            ],
+            history: Vec::new(),
+            records: Vec::new(),
+            positions_mm: positions_m.iter().map(|x| x * 1e3).collect(),
+        })
+    }
+
+    /// Writes one period's rows.
+    pub fn period(&mut self, p: &PeriodRecord, depth: &SurfaceWear) -> Result<(), OutputError> {
+        self.periods.write_row(&period_row(p))?;
+        let (i, t) = (p.index as f64, p.time_h);
+        let roller = depth.roller_total();
+        let bar_mean = depth.bar_mean();
+        for (s, &x) in self.positions_mm.iter().enumerate() {
+            self.roller
+                .write_row(&[i, t, x, roller[s] * UM, depth.roller_at_bar[s] * UM])?;
+            let pockets = (0..depth.roller_count).map(|j| depth.bar_by_pocket[j * depth.lines + s]);
+            let bar_max = pockets.fold(0.0, f64::max);
+            self.bar
+                .write_row(&[i, t, x, bar_mean[s] * UM, bar_max * UM])?;
+        }
+        for (table, map) in self
+            .maps
+            .iter_mut()
+            .zip([&depth.inner_map, &depth.outer_map])
+        {
+            for (s, &x) in self.positions_mm.iter().enumerate() {
+                for b in 0..depth.bins {
+                    let angle = (b as f64 + 0.5) * 360.0 / depth.bins as f64;
+                    table.write_row(&[i, t, x, angle, map[s * depth.bins + b] * UM])?;
+                }
+            }
+        }
+        for t in [&mut self.periods, &mut self.roller, &mut self.bar] {
+            t.flush()?;
+        }
+        self.history.push((t, roller, bar_mean));
+        self.records.push(p.clone());
+        Ok(())
+    }
+
+    /// Closes the tables and draws the plots of the run (the final raceway map from `depth`).
+    pub fn finish(self, depth: &SurfaceWear) -> Result<Vec<PathBuf>, WearReportError> {
+        let Self {
+            dir,
+            periods,
+            roller,
+            bar,
+            maps,
+            history,
+            records,
+            positions_mm,
+        } = self;
+        for t in [periods, roller, bar].into_iter().chain(maps) {
+            t.finish()?;
+        }
+        let mut written = Vec::new();
+        let profile_plot =
+            |name: &str, title: &str, pick: &dyn Fn(&(f64, Vec<f64>, Vec<f64>)) -> &Vec<f64>| {
+                let curves: Vec<(String, Vec<(f64, f64)>)> = history
+                    .iter()
+                    .map(|h| {
+                        let pts = positions_mm
+                            .iter()
+                            .zip(pick(h))
+                            .map(|(&x, &d)| (x, d * UM))
+                            .collect();
+                        (format!("{:.0} h", h.0), pts)
+                    })
+                    .collect();
+                let path = dir.join(name);
+                line_plot(
+                    &path,
+                    &Labels {
+                        title,
+                        x: "axial position, mm",
+                        y: "wear depth, µm",
+                    },
+                    &Series::from_pairs(&curves),
+                )
+                .map(|_| path)
+            };
+        written.push(profile_plot(
+            "roller-profile.svg",
+            "Roller wear along the roller, per period",
+            &|h| &h.1,
+        )?);
+        written.push(profile_plot(
+            "bar-profile.svg",
+            "Cage-bar wear along the bar (mean over pockets)",
+            &|h| &h.2,
+        )?);
+        let rates: Vec<(String, Vec<(f64, f64)>)> = Surface::ALL
+            .iter()
+            .map(|&s| {
+                let pts = records
+                    .iter()
+                    .map(|p| (p.time_h, p.max_rate_m_s.get(s) * UM_PER_KH))
+                    .collect();
+                (s.name().to_string(), pts)
+            })
+            .collect();
+        let path = dir.join("rates.svg");
+        line_plot(
+            &path,
+            &Labels {
+                title: "Largest wear rate per period",
+                x: "operating time, h",
+                y: "rate, µm per 1000 h",
+            },
+            &Series::from_pairs(&rates),
+        )?;
+        written.push(path);
+        for (name, map) in [
+            ("inner-raceway-map.svg", &depth.inner_map),
+            ("outer-raceway-map.svg", &depth.outer_map),
+        ] {
+            // heat_map stores x fastest: angle along x, axial line along y
+            let values: Vec<f64> = map.iter().map(|d| d * UM).collect();
+            let (x0, x1) = (positions_mm[0], positions_mm[positions_mm.len() - 1]);
+            let path = dir.join(name);
+            heat_map(
+                &path,
+                &Labels {
+                    title: "Raceway wear depth at the end, µm (ring frame)",
+                    x: "angle, deg",
+                    y: "axial position, mm",
+                },
+                &Field {
+                    values: &values,
+                    nx: depth.bins,
+                    ny: depth.lines,
+                    extent: (0.0, 360.0, x0, x1),
+                },
+            )?;
+            written.push(path);
+        }
+        Ok(written)
+    }
+}
+
+/// A table or plot that could not be written.
+#[derive(Debug, thiserror::Error)]
+pub enum WearReportError {
+    #[error("{0}")]
+    Table(#[from] OutputError),
+    #[error("{0}")]
+    Plot(#[from] PlotError),
+}

@@ -1,0 +1,169 @@
+//! `rolldyn wear`: a model's life run end to end — conditions, the life loop, the tables and
+//! plots, the worn model — and the answer the command prints (docs/outputs.md "wear").
+
+use crate::WearError;
+use crate::bearing_data::ribs_on_inner_ring;
+use crate::life::{LifeInputs, PeriodRecord, StopReason, halved_period_check, run_life};
+use crate::report::WearTables;
+use crate::settings::{PeriodControl, WearMethod, WearSettings};
+use crate::surface::PerSurface;
+use crate::worn_model::write_worn_model;
+use rolldyn_geometry::BearingModel;
+use rolldyn_model::Model;
+use rolldyn_setup::Overrides;
+use serde::Serialize;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+/// One period in the answer.
+#[derive(Debug, Clone, Serialize)]
+pub struct PeriodSummary {
+    pub time_h: f64,
+    pub period_h: f64,
+    pub max_depth_m: PerSurface<f64>,
+    pub max_rate_m_s: PerSurface<f64>,
+    pub clearance_increase_m: f64,
+    pub halvings: u32,
+}
+
+impl From<&PeriodRecord> for PeriodSummary {
+    fn from(p: &PeriodRecord) -> Self {
+        Self {
+            time_h: p.time_h,
+            period_h: p.period_h,
+            max_depth_m: p.max_depth_m,
+            max_rate_m_s: p.max_rate_m_s,
+            clearance_increase_m: p.clearance_increase_m,
+            halvings: p.halvings,
+        }
+    }
+}
+
+/// The automatic period's convergence evidence (SPEC §6.6).
+#[derive(Debug, Clone, Serialize)]
+pub struct Convergence {
+    /// the fixed period of the check run (half the shortest accepted), h
+    pub halved_period_h: f64,
+    pub max_depth_halved_m: PerSurface<f64>,
+    /// depth with the accepted periods over depth with the halved one, minus 1
+    pub relative_difference: PerSurface<f64>,
+}
+
+/// What `rolldyn wear` prints with `--json`.
+#[derive(Debug, Clone, Serialize)]
+pub struct WearAnswer {
+    pub model: String,
+    pub method: &'static str,
+    pub requested_life_h: f64,
+    /// life reached, h
+    pub life_h: f64,
+    pub stop: StopReason,
+    pub periods: Vec<PeriodSummary>,
+    pub max_depth_m: PerSurface<f64>,
+    pub clearance_increase_m: f64,
+    pub convergence: Option<Convergence>,
+    pub wall_time_s: f64,
+    pub dynamics_wall_s: f64,
+    pub wear_wall_s: f64,
+    pub output_folder: Option<String>,
+    pub files: Vec<String>,
+}
+
+/// Runs the life of `model` and writes its outputs into `out` (when given); `progress` sees
+/// each accepted period.
+pub fn run_wear(
+    model: &Model,
+    overrides: &Overrides,
+    settings: &WearSettings,
+    out: Option<&Path>,
+    progress: &mut dyn FnMut(&PeriodRecord),
+) -> Result<WearAnswer, WearError> {
+    let wall = Instant::now();
+    let BearingModel::Cylindrical(bearing) = &model.bearing else {
+        return Err(WearError::Input(format!(
+            "{}: wear needs a complete bearing (bearing.kind = \"cylindrical\")",
+            model.source.file
+        )));
+    };
+    let input = |e: rolldyn_setup::SetupError| WearError::Input(e.0);
+    let lubrication = rolldyn_setup::quasi_static::lubrication(model, "wear").map_err(input)?;
+    let conditions = rolldyn_setup::conditions(overrides, model).map_err(input)?;
+    let inputs = LifeInputs {
+        bearing,
+        lubrication,
+        dynamics: &model.dynamics,
+        conditions: &conditions,
+    };
+    let output_error = |e: String| WearError::Numerical(e);
+    let positions = bearing.roller.slices().position;
+    let mut tables = out
+        .map(|dir| WearTables::create(dir, &positions))
+        .transpose()
+        .map_err(|e| output_error(e.to_string()))?;
+    let mut table_error = None;
+    let run = run_life(&inputs, settings, &mut |record, depth| {
+        progress(record);
+        if let Some(t) = tables.as_mut()
+            && let Err(e) = t.period(record, depth)
+        {
+            table_error.get_or_insert(e.to_string());
+        }
+    })?;
+    if let Some(e) = table_error {
+        return Err(output_error(e));
+    }
+    let convergence = match settings.period {
+        PeriodControl::Auto { .. } => {
+            let (check, difference) = halved_period_check(&inputs, settings, &run)?;
+            Some(Convergence {
+                halved_period_h: check.periods.first().map_or(0.0, |p| p.period_h),
+                max_depth_halved_m: check.depth.max_per_surface(),
+                relative_difference: difference,
+            })
+        }
+        PeriodControl::Fixed(_) => None,
+    };
+    let mut files: Vec<PathBuf> = Vec::new();
+    if let (Some(dir), Some(t)) = (out, tables) {
+        files.extend(
+            t.finish(&run.depth)
+                .map_err(|e| output_error(e.to_string()))?,
+        );
+        let note = format!(
+            "{} worn by `rolldyn wear` over {:.0} h ({} periods); written from {}",
+            bearing.name,
+            run.life_h,
+            run.periods.len(),
+            model.source.file
+        );
+        files.extend(write_worn_model(
+            model.source.text(),
+            &run.worn,
+            ribs_on_inner_ring(bearing),
+            dir,
+            &note,
+        )?);
+    }
+    let (dynamics, wear): (f64, f64) = run.periods.iter().fold((0.0, 0.0), |(d, w), p| {
+        (d + p.dynamics_wall_s, w + p.wear_wall_s)
+    });
+    Ok(WearAnswer {
+        model: model.source.file.clone(),
+        method: match settings.method {
+            WearMethod::Direct => "direct",
+            WearMethod::Averaged => "averaged",
+        },
+        requested_life_h: settings.life_s / 3600.0,
+        life_h: run.life_h,
+        stop: run.stop.clone(),
+        periods: run.periods.iter().map(PeriodSummary::from).collect(),
+        max_depth_m: run.depth.max_per_surface(),
+        clearance_increase_m: run.depth.clearance_increase(),
+        convergence,
+        wall_time_s: wall.elapsed().as_secs_f64(),
+        dynamics_wall_s: dynamics,
+        wear_wall_s: wear,
+        output_folder: out.map(|d| d.display().to_string()),
+        files: files.iter().map(|f| f.display().to_string()).collect(),
+    })
+}

@@ -1,0 +1,127 @@
+//! The worn bearing: the unworn geometry with the accumulated depths subtracted along the
+//! surface normals (seed 000 §2.4.1 step 6; docs/theory.md §8.7). Always rebuilt from the
+//! unworn bearing and the total depth, so no rounding accumulates over the periods.
+
+use crate::WearError;
+use crate::rates::SurfaceWear;
+use crate::surface::Surface;
+use rolldyn_geometry::{CylindricalRollerBearing, Profile, ProfileShape, RacewayWearMap};
+
+/// Points of the worn roller generatrix per slice: the crown between slice centres stays
+/// resolved to a tenth of a slice.
+const PROFILE_POINTS_PER_SLICE: usize = 10;
+
+/// Linear interpolation of `values` at the abscissae `xs` (increasing), end values held.
+pub fn interpolate(xs: &[f64], values: &[f64], x: f64) -> f64 {
+    let n = xs.len();
+    if x <= xs[0] {
+        return values[0];
+    }
+    if x >= xs[n - 1] {
+        return values[n - 1];
+    }
+    let k = xs.partition_point(|&p| p <= x);
+    let t = (x - xs[k - 1]) / (xs[k] - xs[k - 1]);
+    values[k - 1] + t * (values[k] - values[k - 1])
+}
+
+/// The axial lines of a raceway wear map: the roller's slice centres, with a line of zero wear
+/// at each roller end (the raceway beyond the roller is not worn).
+pub fn raceway_lines(slice_positions_m: &[f64], roller_length_m: f64) -> Vec<f64> {
+    let h = 0.5 * roller_length_m;
+    let mut lines = Vec::with_capacity(slice_positions_m.len() + 2);
+    lines.push(-h);
+    lines.extend_from_slice(slice_positions_m);
+    lines.push(h);
+    lines
+}
+
+/// A raceway map of `depth` (lines × bins at the slice centres) padded with the zero lines of
+/// [`raceway_lines`].
+pub fn raceway_map(
+    slice_positions_m: &[f64],
+    roller_length_m: f64,
+    bins: usize,
+    depth: &[f64],
+) -> Result<RacewayWearMap, WearError> {
+    let axial = raceway_lines(slice_positions_m, roller_length_m);
+    let mut values = vec![0.0; bins];
+    values.extend_from_slice(depth);
+    values.extend(std::iter::repeat_n(0.0, bins));
+    RacewayWearMap::new(axial, bins, values).map_err(|e| WearError::Input(e.to_string()))
+}
+
+/// The roller generatrix worn by `depth` on the slice centres `positions`.
+fn worn_roller_profile(profile: &Profile, positions: &[f64], depth: &[f64]) -> Profile {
+    let xe = profile.chamfer_start();
+    let n = positions.len() * PROFILE_POINTS_PER_SLICE;
+    let points = (0..=n)
+        .map(|i| {
+            let x = -xe + 2.0 * xe * i as f64 / n as f64;
+            (x, profile.drop(x) + interpolate(positions, depth, x))
+        })
+        .collect();
+    Profile {
+        shape: ProfileShape::Polyline { points },
+        ..profile.clone()
+    }
+}
+
+/// `bearing` worn by `depth`, whose roller lines sit at `positions` (the unworn slice centres).
+pub fn worn_bearing(
+    bearing: &CylindricalRollerBearing,
+    positions: &[f64],
+    depth: &SurfaceWear,
+) -> Result<CylindricalRollerBearing, WearError> {
+    let mut worn = bearing.clone();
+    let length = bearing.roller.length;
+    worn.roller.profile =
+        worn_roller_profile(&bearing.roller.profile, positions, &depth.roller_total());
+    worn.inner_ring.raceway_wear = Some(raceway_map(
+        positions,
+        length,
+        depth.bins,
+        &depth.inner_map,
+    )?);
+    worn.outer_ring.raceway_wear = Some(raceway_map(
+        positions,
+        length,
+        depth.bins,
+        &depth.outer_map,
+    )?);
+    if let Some(cage) = worn.cage.as_mut() {
+        // the roller wears the bar face it pushes on: the window widens by that depth
+        cage.pocket_circumferential += depth.max(Surface::CageBar);
+    }
+    // both ends and both ribs share the end wear (the recorder halves it per end and per rib)
+    worn.roller.length -= 2.0 * depth.roller_end;
+    let ribbed = if crate::bearing_data::ribs_on_inner_ring(bearing) {
+        &mut worn.inner_ring
+    } else {
+        &mut worn.outer_ring
+    };
+    if let Some(spacing) = ribbed.rib_spacing.as_mut() {
+        *spacing += 2.0 * depth.rib;
+    }
+    Ok(worn)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn interpolation_holds_the_ends() {
+        let xs = [0.0, 1.0, 2.0];
+        let v = [1.0, 3.0, 2.0];
+        assert_eq!(interpolate(&xs, &v, -1.0), 1.0);
+        assert_eq!(interpolate(&xs, &v, 0.5), 2.0);
+        assert_eq!(interpolate(&xs, &v, 5.0), 2.0);
+    }
+
+    #[test]
+    fn raceway_lines_close_with_the_roller_ends() {
+        let lines = raceway_lines(&[-1.0, 0.0, 1.0], 3.0);
+        assert_eq!(lines, vec![-1.5, -1.0, 0.0, 1.0, 1.5]);
+    }
+}
