@@ -150,7 +150,7 @@ const HB_TO_HV: [(f64, f64); 21] = [
 
 /// Meyer hardness in Pa from a value in `scale`: HV → Meyer 1.0787·HV kgf/mm² (seed 000
 /// §3.1.1.5), HB → HV and HRC → HV by linear interpolation between the rows of ASTM E140
-/// Table 1 ([`HRC_TO_HV`], [`HB_TO_HV`]; the table lists whole numbers, so a conversion is good to
+/// Table 1 (`HRC_TO_HV`, `HB_TO_HV`; the table lists whole numbers, so a conversion is good to
 /// about ±1 HV). Values outside the table are an error, not an extrapolation.
 pub fn meyer_hardness_pa(value: f64, scale: HardnessScale) -> Result<f64, WearLawError> {
     if !(value.is_finite() && value > 0.0) {
