@@ -56,6 +56,8 @@ pub struct SweepFile {
     pub discard: Option<String>,
     /// Recalculation period of a `wear` sweep (`"1905h"` or `"auto"`), as written.
     pub period: Option<String>,
+    /// Wear method of a `wear` sweep (`"direct"` or `"averaged"`), as written.
+    pub method: Option<String>,
     pub variants: Vec<Variant>,
 }
 
@@ -91,6 +93,7 @@ impl SweepFile {
         let duration = take_str(&mut table, "duration")?;
         let discard = take_str(&mut table, "discard")?;
         let period = take_str(&mut table, "period")?;
+        let method = take_str(&mut table, "method")?;
         let library = match take_str(&mut table, "variants_from")? {
             None => Vec::new(),
             Some(file) => {
@@ -121,7 +124,7 @@ impl SweepFile {
             return Err(SweepError::new(
                 path,
                 key.clone(),
-                "unknown key (expected model, analysis, duration, discard, period, variants_from, variant)",
+                "unknown key (expected model, analysis, duration, discard, period, method, variants_from, variant)",
             ));
         }
         let model_path = path.parent().unwrap_or(Path::new(".")).join(&model);
@@ -198,6 +201,7 @@ impl SweepFile {
             duration,
             discard,
             period,
+            method,
             variants: parsed,
         })
     }

@@ -10,6 +10,7 @@
 //! duration = "5rev"              # simulate: simulated time; wear: the life ("25000h")
 //! discard = "1rev"               # simulate only: revolutions left out of the summary (default 1)
 //! period = "1905h"               # wear only: recalculation period, or "auto" (default 1905h)
+//! method = "direct"             # wear only: or "averaged"
 //! variants_from = "table-3.1.toml"  # optional: named variants a variant may start from
 //!
 //! [[variant]]

@@ -4,6 +4,7 @@
 use crate::WearError;
 use crate::bearing_data::ribs_on_inner_ring;
 use crate::life::{LifeInputs, PeriodRecord, StopReason, halved_period_check, run_life};
+use crate::rates::{CONTACT_KINDS, ContactDiagnostics};
 use crate::report::WearTables;
 use crate::settings::{PeriodControl, WearMethod, WearSettings};
 use crate::surface::PerSurface;
@@ -12,6 +13,7 @@ use rolldyn_geometry::BearingModel;
 use rolldyn_model::Model;
 use rolldyn_setup::Overrides;
 use serde::Serialize;
+use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
@@ -60,7 +62,11 @@ pub struct WearAnswer {
     pub stop: StopReason,
     pub periods: Vec<PeriodSummary>,
     pub max_depth_m: PerSurface<f64>,
+    /// the part of the roller's deepest wear that the cage bar caused, m
+    pub roller_depth_from_bar_m: f64,
     pub clearance_increase_m: f64,
+    /// what the first period's rates came from, per contact kind (the unworn bearing)
+    pub initial_contacts: BTreeMap<&'static str, ContactDiagnostics>,
     pub convergence: Option<Convergence>,
     pub wall_time_s: f64,
     pub dynamics_wall_s: f64,
@@ -158,6 +164,12 @@ pub fn run_wear(
         stop: run.stop.clone(),
         periods: run.periods.iter().map(PeriodSummary::from).collect(),
         max_depth_m: run.depth.max_per_surface(),
+        roller_depth_from_bar_m: run.depth.roller_at_bar.iter().copied().fold(0.0, f64::max),
+        initial_contacts: run
+            .periods
+            .first()
+            .map(|p| CONTACT_KINDS.into_iter().zip(p.contacts).collect())
+            .unwrap_or_default(),
         clearance_increase_m: run.depth.clearance_increase(),
         convergence,
         wall_time_s: wall.elapsed().as_secs_f64(),

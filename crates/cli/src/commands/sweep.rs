@@ -111,6 +111,18 @@ fn wear(
     row.insert("life_h".into(), answer.life_h);
     row.insert("clearance_increase_m".into(), answer.clearance_increase_m);
     row.insert("periods".into(), answer.periods.len() as f64);
+    row.insert("roller_depth_from_bar_m".into(), answer.roller_depth_from_bar_m);
+    for (kind, c) in &answer.initial_contacts {
+        for (name, v) in [
+            ("equivalent_force_n", c.equivalent_force_n),
+            ("mean_sliding_speed_m_s", c.mean_sliding_speed_m_s),
+            ("contact_fraction", c.contact_fraction),
+            ("mean_lambda", c.mean_lambda),
+        ] {
+            row.insert(format!("{kind}_{name}"), v);
+        }
+    }
+    row.retain(|_, v| v.is_finite());
     Ok(row)
 }
 
