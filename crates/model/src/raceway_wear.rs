@@ -87,7 +87,7 @@ pub fn read_raceway_wear_csv(text: &str) -> Result<RacewayWearMap, String> {
                 "line {n}: angle_deg {angle_deg} is not the centre {centre} of bin {k} of {bins}"
             ));
         }
-        if !(depth_um >= 0.0) {
+        if depth_um < 0.0 {
             return Err(format!(
                 "line {n}: depth_um {depth_um} must not be negative"
             ));
