@@ -31,4 +31,4 @@ pub use model::{BearingModel, RollerRacewayPair};
 pub use profile::{Chamfer, Profile, ProfileShape};
 pub use ring::{GuidingLand, Rib, RibFace, RibSide, Ring};
 pub use roller::{EndFace, Roller, SliceStack};
-pub use wear_map::RacewayWearMap;
+pub use wear_map::{RacewayWearMap, WearAtAngle};

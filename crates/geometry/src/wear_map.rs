@@ -71,22 +71,30 @@ impl RacewayWearMap {
 
     /// Depth at axial position `x` and ring-frame angle `angle_rad` (any real angle), m.
     pub fn depth(&self, x: f64, angle_rad: f64) -> f64 {
+        self.at_angle(angle_rad).depth(x)
+    }
+
+    /// The map at one ring-frame angle, to be read at many axial positions (the angular
+    /// interpolation done once).
+    pub fn at_angle(&self, angle_rad: f64) -> WearAtAngle<'_> {
         let bins = self.angle_bins;
         let u = angle_rad.rem_euclid(TAU) / TAU * bins as f64 - 0.5;
         let below = u.floor();
-        let w = u - below;
         let k0 = (below as isize).rem_euclid(bins as isize) as usize;
-        let k1 = (k0 + 1) % bins;
-        let at_bin = |k: usize| self.along_axis(x, |i| self.depth_m[i * bins + k]);
-        (1.0 - w) * at_bin(k0) + w * at_bin(k1)
+        WearAtAngle {
+            map: self,
+            bins: [k0, (k0 + 1) % bins],
+            weight: u - below,
+        }
     }
 
     /// Circumferential mean depth at axial position `x`, m (the axisymmetric reading).
     pub fn mean_depth(&self, x: f64) -> f64 {
         let bins = self.angle_bins;
-        self.along_axis(x, |i| {
-            self.depth_m[i * bins..(i + 1) * bins].iter().sum::<f64>() / bins as f64
-        })
+        let line_mean =
+            |i: usize| self.depth_m[i * bins..(i + 1) * bins].iter().sum::<f64>() / bins as f64;
+        let ([i0, i1], w) = self.axial_cell(x);
+        (1.0 - w) * line_mean(i0) + w * line_mean(i1)
     }
 
     /// The deepest point of the map, m.
@@ -94,19 +102,41 @@ impl RacewayWearMap {
         self.depth_m.iter().copied().fold(0.0, f64::max)
     }
 
-    /// Linear interpolation in x of `line(i)`, the value on axial line i (end values held).
-    fn along_axis(&self, x: f64, line: impl Fn(usize) -> f64) -> f64 {
+    /// The axial lines around `x` and the weight of the second: linear between them, the end
+    /// line alone beyond the ends.
+    fn axial_cell(&self, x: f64) -> ([usize; 2], f64) {
         let xs = &self.axial_m;
         let last = xs.len() - 1;
         if x <= xs[0] {
-            return line(0);
+            return ([0, 0], 0.0);
         }
         if x >= xs[last] {
-            return line(last);
+            return ([last, last], 0.0);
         }
         let i = xs.partition_point(|&xi| xi <= x) - 1;
-        let w = (x - xs[i]) / (xs[i + 1] - xs[i]);
-        (1.0 - w) * line(i) + w * line(i + 1)
+        ([i, i + 1], (x - xs[i]) / (xs[i + 1] - xs[i]))
+    }
+}
+
+/// A [`RacewayWearMap`] at one ring-frame angle: the two angle bins around it and the weight of
+/// the second.
+#[derive(Debug, Clone, Copy)]
+pub struct WearAtAngle<'a> {
+    map: &'a RacewayWearMap,
+    bins: [usize; 2],
+    weight: f64,
+}
+
+impl WearAtAngle<'_> {
+    /// Depth at axial position `x`, m (bilinear, RacewayWearMap).
+    pub fn depth(&self, x: f64) -> f64 {
+        let m = self.map;
+        let ([i0, i1], wx) = m.axial_cell(x);
+        let [k0, k1] = self.bins;
+        let at = |i: usize, k: usize| m.depth_m[i * m.angle_bins + k];
+        let wk = self.weight;
+        (1.0 - wx) * ((1.0 - wk) * at(i0, k0) + wk * at(i0, k1))
+            + wx * ((1.0 - wk) * at(i1, k0) + wk * at(i1, k1))
     }
 }
 

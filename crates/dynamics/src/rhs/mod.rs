@@ -147,7 +147,8 @@ fn roller_contacts(
 ) {
     let sc = &mut diag.scratch;
     let rk = bodies::roller_kinematics(model, y, j, &mut sc.rollers);
-    raceways::prepare_slots(model, bodies, j, &rk, &mut sc.raceways);
+    let azimuth = sc.rollers.theta[0][j];
+    raceways::prepare_slots(model, bodies, j, &rk, azimuth, &mut sc.raceways);
     let mut roller = Wrench {
         force: scale(model.conditions.gravity_m_s2, model.m_r),
         moment: [0.0; 3],

@@ -135,22 +135,23 @@ pub(super) fn detect(
     );
 }
 
-/// Prepares the slots of roller `j` for the slot loop: the raceway drop under them and its
-/// kinematics repeated over them, on the raceways it may touch.
+/// Prepares the slots of roller `j` (at azimuth `azimuth`, rad) for the slot loop: the raceway
+/// drop under them and its kinematics repeated over them, on the raceways it may touch.
 #[inline(always)]
 pub(super) fn prepare_slots(
     model: &Model,
     bodies: &Bodies,
     j: usize,
     rk: &RollerKinematics,
+    azimuth: f64,
     sc: &mut RacewayScratch,
 ) {
     let (touch_inner, touch_outer) = (sc.inner.may_touch[j], sc.outer.may_touch[j]);
     if touch_inner {
-        raceway_drop(&model.inner, j, rk, &bodies.inner, &mut sc.inner);
+        raceway_drop(&model.inner, j, rk, azimuth, &bodies.inner, &mut sc.inner);
     }
     if touch_outer {
-        raceway_drop(&model.outer, j, rk, &bodies.outer, &mut sc.outer);
+        raceway_drop(&model.outer, j, rk, azimuth, &bodies.outer, &mut sc.outer);
     }
     if touch_inner || touch_outer {
         sc.lanes.set(model.inner.lanes.slots(j), rk);
@@ -237,12 +238,14 @@ fn raceway_pairs<const INNER: bool>(
 
 /// The raceway drop under the slots of roller `j` (profiled or worn raceways only) for the slot
 /// loop ([`raceway_kernel`]): the profile's drop at each slot's axial position ζ on the ring,
-/// plus the wear map's depth at (ζ, ψ), ψ the roller centre's angle in the ring's frame
-/// ([`ring_frame_angle`]).
+/// plus the wear map's depth at (ζ, ψ), ψ = `azimuth` − ring angle the roller centre's angle
+/// in the ring's frame (the azimuth about the bearing axis: the inner ring's offset of a few µm
+/// turns it by ~10⁻⁵ rad, far below a bin of the map).
 fn raceway_drop(
     rs: &RacewaySlices,
     j: usize,
     rk: &RollerKinematics,
+    azimuth: f64,
     ring: &RingKin,
     pass: &mut RacewayPass,
 ) {
@@ -255,22 +258,15 @@ fn raceway_drop(
     let race_drop = &mut pass.race_drop[slots.clone()];
     let zetas = rs.lanes.x[slots].iter().map(|&x| zeta_c + x * a_ax);
     if let Some(map) = &rs.wear {
-        let psi = ring_frame_angle(rk.c, ring);
+        let wear = map.at_angle(azimuth - ring.angle);
         for (d, zeta) in race_drop.iter_mut().zip(zetas) {
-            *d = rs.profile.as_ref().map_or(0.0, |pr| pr.drop(zeta)) + map.depth(zeta, psi);
+            *d = rs.profile.as_ref().map_or(0.0, |pr| pr.drop(zeta)) + wear.depth(zeta);
         }
     } else if let Some(pr) = &rs.profile {
         for (d, zeta) in race_drop.iter_mut().zip(zetas) {
             *d = pr.drop(zeta);
         }
     }
-}
-
-/// The angle of point `p` in the frame of `ring`: its azimuth about the ring centre less the
-/// ring's rotation angle, rad.
-pub(super) fn ring_frame_angle(p: V3, ring: &RingKin) -> f64 {
-    let d = sub(p, ring.o);
-    d[1].atan2(d[0]) - ring.angle
 }
 
 /// Pass 1b on one raceway: the slot loop ([`slice_kernel::evaluate`]: approach, slice law,
@@ -571,7 +567,7 @@ mod tests {
         let slices = model.slice_x.len();
         let mut pass = RacewayPass::new(model.z, slices);
         let j = 3;
-        raceway_drop(&model.inner, j, &rk, &ring, &mut pass);
+        raceway_drop(&model.inner, j, &rk, 2.0, &ring, &mut pass);
         let slots = model.inner.lanes.slots(j);
         for (s, &x) in slots.clone().zip(&model.slice_x) {
             let expected = b.inner_ring.raceway_drop_at(1e-3 + x, 1.3);
