@@ -60,7 +60,7 @@ pub(crate) struct RacewaySlices {
     /// angle on the ring
     pub wear: Option<RacewayWearMap>,
     /// smallest raceway drop over the roller length (≤ 0), m — bounds the approach in the
-    /// contact pre-check
+    /// contact pre-check (wear only deepens the raceway: the profile alone gives the bound)
     pub min_drop: f64,
 }
 
