@@ -8,7 +8,7 @@ use crate::boussinesq::{
 };
 use crate::hertz::{Conformity, LineApproachModel, LineContact, reduced_modulus, reduced_radius};
 use crate::slices::{SliceError, SliceLaw, SlicedRoller, SolveOptions};
-use rolldyn_geometry::{BearingModel, Profile};
+use rolldyn_geometry::{BearingModel, Profile, Ring};
 use std::time::Instant;
 
 /// Why a roller–raceway contact could not be solved.
@@ -116,7 +116,8 @@ pub struct ContactReport {
 #[derive(Debug, Clone)]
 pub struct RollerRacewayContact {
     roller_profile: Profile,
-    raceway_profile: Option<Profile>,
+    /// the raceway's ring (its drop: profile and mean wear)
+    raceway: Ring,
     roller_length: f64,
     slice_count: usize,
     /// R' of seed 000 eq. (1.12).
@@ -177,7 +178,7 @@ impl RollerRacewayContact {
         }
         Ok(Self {
             roller_profile: roller.profile.clone(),
-            raceway_profile: ring.raceway_profile.clone(),
+            raceway: ring.clone(),
             roller_length: roller.length,
             slice_count: roller.slice_count,
             reduced_radius: r_prime,
@@ -200,8 +201,7 @@ impl RollerRacewayContact {
 
     /// Combined profile drop of roller and raceway at axial position `x` [m].
     pub fn profile_drop(&self, x: f64) -> f64 {
-        let raceway = self.raceway_profile.as_ref().map_or(0.0, |p| p.drop(x));
-        self.roller_profile.drop(x) + raceway
+        self.roller_profile.drop(x) + self.raceway.raceway_drop(x)
     }
 
     /// Axial part of the gap: profile drop minus the tilt term.

@@ -119,6 +119,8 @@ pub(crate) struct Deepest {
     pub normal: V3,
     /// radius of the point from the body axis, m
     pub rho: f64,
+    /// distance of the point from the roller axis (in the end-face plane), m
+    pub end_radius: f64,
     /// distance of the point from the end disc rim and from the band edges (min), m
     pub margin: f64,
 }
@@ -451,7 +453,8 @@ impl<'a> EndOnFace<'a> {
         let dprot = face.slope - face.curvature * u;
         let grad = axpy(scale(self.big_a, face.side), dprot, self.e_r);
         let normal = scale(grad, -1.0 / norm(grad));
-        let margin = (self.r - (x * x + y * y).sqrt())
+        let end_radius = (x * x + y * y).sqrt();
+        let margin = (self.r - end_radius)
             .min(face.rho_hi - rho)
             .min(rho - face.rho_lo);
         Some(Deepest {
@@ -459,6 +462,7 @@ impl<'a> EndOnFace<'a> {
             point,
             normal,
             rho,
+            end_radius,
             margin,
         })
     }
@@ -483,6 +487,9 @@ pub(crate) struct EndForce {
     pub delta: f64,
     /// distance of the contact point from the face edge `rho_edge`, m
     pub edge_distance: f64,
+    /// distance of the contact point from the roller axis and from the face body's axis, m
+    pub end_radius: f64,
+    pub body_radius: f64,
     pub regime: EndContactRegime,
 }
 
@@ -571,6 +578,8 @@ pub(crate) fn end_force(
         mu,
         delta: dp.delta,
         edge_distance,
+        end_radius: dp.end_radius,
+        body_radius: dp.rho,
         regime,
     })
 }

@@ -12,7 +12,8 @@ use crate::settings::DynamicsSettings;
 use crate::slice_kernel::SliceConstants;
 use rolldyn_contact::damping::SliceDamping;
 use rolldyn_geometry::{
-    Cage, CageGuidance, CylindricalRollerBearing, EndFace, Profile, RibFace, RibSide, Ring,
+    Cage, CageGuidance, CylindricalRollerBearing, EndFace, Profile, RacewayWearMap, RibFace,
+    RibSide, Ring,
 };
 use rolldyn_lubrication::TractionModel;
 
@@ -55,8 +56,11 @@ pub(crate) struct RacewaySlices {
     pub temperature_k: f64,
     /// raceway generatrix (None = straight)
     pub profile: Option<Profile>,
+    /// raceway wear over axial position × ring angle (None = unworn), read at each roller's
+    /// angle on the ring
+    pub wear: Option<RacewayWearMap>,
     /// smallest raceway drop over the roller length (≤ 0), m — bounds the approach in the
-    /// contact pre-check
+    /// contact pre-check (wear only deepens the raceway: the profile alone gives the bound)
     pub min_drop: f64,
 }
 
@@ -140,6 +144,7 @@ impl RacewaySlices {
             roughness: [roller.roughness_ra, ring.roughness_ra],
             temperature_k,
             profile: ring.raceway_profile.clone(),
+            wear: ring.raceway_wear.clone(),
             min_drop,
         })
     }

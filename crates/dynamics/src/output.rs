@@ -26,6 +26,10 @@ pub struct ContactSnapshot<'a> {
     pub traction_coefficient: &'a [f64],
     /// friction power μ Q v, W
     pub friction_power_w: &'a [f64],
+    /// normal force of every slice, roller-major (`[j * slices + i]`, slices in the order of
+    /// the roller's slice stack along its axis; 0 where unloaded), N — the axial load
+    /// distribution the raceway wear lines need
+    pub slice_force_n: &'a [f64],
 }
 
 /// Per-roller kinematics and forces (struct of arrays, index = roller).
@@ -53,6 +57,9 @@ pub struct RollerSnapshot<'a> {
     pub cage_bar_force_n: &'a [f64],
     /// roller ↔ cage bar friction power, W
     pub cage_bar_power_w: &'a [f64],
+    /// roller ↔ cage bar sliding speed (force-weighted over the bar contacts; the speed of the
+    /// friction law), m/s — 0 without contact
+    pub cage_bar_sliding_speed_m_s: &'a [f64],
     /// roller ends ↔ ribs normal force (both ends, all ribs), N (pair 56)
     pub rib_force_n: &'a [f64],
     /// roller ends ↔ ribs sliding speed (force-weighted), m/s — the wear-relevant speed
@@ -60,6 +67,15 @@ pub struct RollerSnapshot<'a> {
     /// distance of the rib contact point from the rib edge (rim minus edge break), m
     /// (force-weighted; NaN without contact) — seed §3.1.1.7 convex vs flat rib
     pub rib_edge_distance_m: &'a [f64],
+    /// reduced radius of the end/rib pair of the rib contacts, m (+∞ for a pair without
+    /// curvature, NaN without contact)
+    pub rib_reduced_radius_m: &'a [f64],
+    /// distance of the rib contact point from the roller axis, m (force-weighted; NaN without
+    /// contact) — the wear line on the roller end
+    pub rib_contact_radius_m: &'a [f64],
+    /// distance of the rib contact point from the ring axis, m (force-weighted; NaN without
+    /// contact) — the wear line on the rib
+    pub rib_contact_ring_radius_m: &'a [f64],
     /// roller ends ↔ ribs friction coefficient (force-weighted)
     pub rib_friction_coefficient: &'a [f64],
     /// roller ends ↔ ribs friction power, W
@@ -81,6 +97,11 @@ pub struct Snapshot<'a> {
     pub inner_ring_speed_rad_s: f64,
     /// prescribed outer-ring speed, rad/s
     pub outer_ring_speed_rad_s: f64,
+    /// inner-ring rotation angle ∫ω dt, rad (a point at angle ψ in the ring's frame is at
+    /// azimuth ψ + this angle)
+    pub inner_ring_angle_rad: f64,
+    /// outer-ring rotation angle ∫ω dt, rad
+    pub outer_ring_angle_rad: f64,
     /// inner-ring centre, m
     pub inner_ring_center_m: V3,
     /// cage centre, m
@@ -239,6 +260,8 @@ pub(crate) struct SnapshotBuffers {
     pub pitch: Vec<f64>,
     pub srr_inner: Vec<f64>,
     pub srr_outer: Vec<f64>,
+    /// reduced radius of the end/rib pair per roller (NaN without rib contact)
+    pub rib_reduced_radius: Vec<f64>,
 }
 
 impl SnapshotBuffers {
@@ -254,6 +277,7 @@ impl SnapshotBuffers {
             pitch: v(),
             srr_inner: v(),
             srr_outer: v(),
+            rib_reduced_radius: v(),
         }
     }
 }

@@ -606,6 +606,11 @@ impl Simulation {
             let d = &self.diag;
             sb.srr_inner[j] = d.inner.sliding[j] / d.inner.rolling[j].max(1e-9);
             sb.srr_outer[j] = d.outer.sliding[j] / d.outer.rolling[j].max(1e-9);
+            sb.rib_reduced_radius[j] = if d.rib[j] > 0.0 {
+                m.ends.rib_reduced_radius
+            } else {
+                f64::NAN
+            };
         }
         let ci = lay.cage();
         let ii = lay.inner();
@@ -617,6 +622,8 @@ impl Simulation {
             time_s: t,
             inner_ring_speed_rad_s: d.inner_speed,
             outer_ring_speed_rad_s: d.outer_speed,
+            inner_ring_angle_rad: m.conditions.inner_speed.angle(t),
+            outer_ring_angle_rad: m.conditions.outer_speed.angle(t),
             inner_ring_center_m: read3(y, ii + inner_ring::CENTRE),
             cage_center_m: read3(y, ci + cage::CENTRE),
             cage_angle_rad: y[ci + cage::ANGLE],
@@ -637,9 +644,13 @@ impl Simulation {
                 outer: contact_snapshot(&d.outer, &sb.srr_outer),
                 cage_bar_force_n: &d.bar,
                 cage_bar_power_w: &d.bar_power,
+                cage_bar_sliding_speed_m_s: &d.bar_sliding,
                 rib_force_n: &d.rib,
                 rib_sliding_speed_m_s: &d.rib_sliding,
                 rib_edge_distance_m: &d.rib_edge,
+                rib_reduced_radius_m: &sb.rib_reduced_radius,
+                rib_contact_radius_m: &d.rib_end_radius,
+                rib_contact_ring_radius_m: &d.rib_ring_radius,
                 rib_friction_coefficient: &d.rib_mu,
                 rib_power_w: &d.rib_power,
                 rib_regime: &d.rib_regime,
@@ -802,6 +813,7 @@ fn contact_snapshot<'a>(t: &'a crate::rhs::ContactTable, srr: &'a [f64]) -> Cont
         lambda: &t.lambda,
         traction_coefficient: &t.mu,
         friction_power_w: &t.power,
+        slice_force_n: &t.slice_force,
     }
 }
 

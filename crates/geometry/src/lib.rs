@@ -18,6 +18,7 @@ pub mod plausible;
 pub mod profile;
 mod ring;
 mod roller;
+mod wear_map;
 
 pub use bearing::{Clearance, CylindricalRollerBearing, Misalignment};
 pub use cage::{Cage, CageGuidance};
@@ -30,3 +31,4 @@ pub use model::{BearingModel, RollerRacewayPair};
 pub use profile::{Chamfer, Profile, ProfileShape};
 pub use ring::{GuidingLand, Rib, RibFace, RibSide, Ring};
 pub use roller::{EndFace, Roller, SliceStack};
+pub use wear_map::{RacewayWearMap, WearAtAngle};

@@ -4,6 +4,7 @@ use crate::error::{GeometryError, require_positive};
 use crate::mass::MassProperties;
 use crate::material::Material;
 use crate::profile::Profile;
+use crate::wear_map::RacewayWearMap;
 
 /// Which side of the raceway a rib stands on (axial −/+).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -63,6 +64,8 @@ pub struct Ring {
     pub rib_spacing: Option<f64>,
     /// Raceway generatrix (straight if absent).
     pub raceway_profile: Option<Profile>,
+    /// Raceway wear over axial position × ring angle (none when unworn).
+    pub raceway_wear: Option<RacewayWearMap>,
     pub guiding_land: Option<GuidingLand>,
     pub material: Material,
     pub roughness_ra: f64,
@@ -83,8 +86,23 @@ impl Ring {
         0.5 * (self.body_diameter - self.raceway_diameter).abs()
     }
 
-    /// Raceway drop at axial position `x` (0 for a straight raceway).
+    /// Raceway drop at axial position `x`: the profile's drop (0 for a straight raceway) plus
+    /// the circumferential mean wear depth (the axisymmetric reading of the worn raceway).
     pub fn raceway_drop(&self, x: f64) -> f64 {
+        self.profile_drop(x) + self.raceway_wear.as_ref().map_or(0.0, |w| w.mean_depth(x))
+    }
+
+    /// Raceway drop at axial position `x` and ring-frame angle `angle_rad`: the profile's drop
+    /// plus the wear depth there.
+    pub fn raceway_drop_at(&self, x: f64, angle_rad: f64) -> f64 {
+        self.profile_drop(x)
+            + self
+                .raceway_wear
+                .as_ref()
+                .map_or(0.0, |w| w.depth(x, angle_rad))
+    }
+
+    fn profile_drop(&self, x: f64) -> f64 {
         self.raceway_profile.as_ref().map_or(0.0, |p| p.drop(x))
     }
 

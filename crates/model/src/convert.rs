@@ -229,6 +229,7 @@ fn ring(
         ribs,
         rib_spacing: section.rib_spacing.map(|s| s.si()),
         raceway_profile,
+        raceway_wear: None,
         guiding_land: None,
         material: materials.get(section.material.as_deref(), &format!("{key}.material"))?,
         roughness_ra: section.roughness_ra.map_or(0.0, |r| r.si()),

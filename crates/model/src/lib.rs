@@ -12,6 +12,7 @@ mod dynamics;
 mod error;
 pub mod journal;
 mod operation;
+mod raceway_wear;
 pub mod schema;
 
 pub use convert::DEFAULT_SLICES;
@@ -21,6 +22,7 @@ pub use operation::{
     DEFAULT_STARTUP_REVOLUTIONS, FixedLoad, FrozenPoint, Lubrication, Operating, Schedules,
     Startup, Temperatures,
 };
+pub use raceway_wear::{RACEWAY_WEAR_HEADER, read_raceway_wear_csv, write_raceway_wear_csv};
 pub use rolldyn_geometry::BearingModel;
 
 /// Everything a model file describes.
@@ -185,7 +187,8 @@ pub fn parse(text: &str, file: &str) -> Result<Model, ModelError> {
     let document = Document::<schema::ModelFile>::parse(text, file)?;
     let schema = &document.schema;
     let locate = |e: rolldyn_geometry::GeometryError| document.error(&e.key, e.reason);
-    let bearing = convert::build(schema).map_err(locate)?;
+    let mut bearing = convert::build(schema).map_err(locate)?;
+    raceway_wear::attach(&mut bearing, schema, file).map_err(locate)?;
     bearing.validate().map_err(locate)?;
     let schedules = operation::schedules(schema.operating.as_ref()).map_err(locate)?;
     if let (Some(points), BearingModel::Cylindrical(b)) = (&schedules.clearance, &bearing) {

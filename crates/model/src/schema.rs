@@ -78,8 +78,18 @@ pub struct RingSection {
     pub ribs: Vec<RibSection>,
     pub guiding_land: Option<GuidingLandSection>,
     pub raceway_profile: Option<ProfileSection>,
+    /// Raceway wear map (`file = "wear.csv"`, relative to the model file).
+    pub raceway_wear: Option<RacewayWearSection>,
     #[serde(default)]
     pub mass_properties: MassOverride,
+}
+
+/// `[inner_ring.raceway_wear]` / `[outer_ring.raceway_wear]`: the CSV file of a raceway wear
+/// map (axial position × ring angle, docs/model-format.md).
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RacewayWearSection {
+    pub file: String,
 }
 
 #[derive(Debug, Deserialize, Clone, Copy)]

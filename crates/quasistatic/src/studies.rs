@@ -300,6 +300,7 @@ pub fn intershaft_bearing() -> CylindricalRollerBearing {
         ribs: Vec::new(),
         rib_spacing: None,
         raceway_profile: None,
+        raceway_wear: None,
         guiding_land: None,
         material: steel(),
         roughness_ra: 0.2e-6,
@@ -313,6 +314,7 @@ pub fn intershaft_bearing() -> CylindricalRollerBearing {
         ribs: vec![rib(RibSide::Left), rib(RibSide::Right)],
         rib_spacing: Some(roller_len + 0.03e-3),
         raceway_profile: None,
+        raceway_wear: None,
         guiding_land: Some(GuidingLand {
             diameter: 127e-3,
             width: 2.0e-3,

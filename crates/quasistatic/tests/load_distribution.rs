@@ -222,3 +222,24 @@ fn centrifugal_force_loads_the_outer_raceway_in_the_unloaded_zone() {
     }
     assert!(ld.rollers.iter().any(|r| !r.loaded));
 }
+
+/// A raceway wear map enters the slice drops by its circumferential mean at each slice (the
+/// axisymmetric reading of a worn raceway).
+#[test]
+fn a_raceway_wear_map_deepens_the_slice_drops_by_its_mean() {
+    let mut b = common::obrien_taylor();
+    let unworn = LoadModel::new(&b, SliceLawChoice::Iso).unwrap();
+    let half = 0.5 * b.roller.length;
+    // 2 µm and 4 µm on two bins at one end, 0 at the other: mean 3 µm → 0 linearly
+    let map =
+        rolldyn_geometry::RacewayWearMap::new(vec![-half, half], 2, vec![2e-6, 4e-6, 0.0, 0.0])
+            .unwrap();
+    b.inner_ring.raceway_wear = Some(map);
+    let worn = LoadModel::new(&b, SliceLawChoice::Iso).unwrap();
+    let (a, w) = (unworn.inner_slices(), worn.inner_slices());
+    for ((&x, &d0), &d1) in a.positions().iter().zip(a.drops()).zip(w.drops()) {
+        let mean = 3e-6 * (half - x) / (2.0 * half);
+        assert!((d1 - d0 - mean).abs() < 1e-15, "x {x}: {d0} → {d1}");
+    }
+    assert_eq!(unworn.outer_slices().drops(), worn.outer_slices().drops());
+}

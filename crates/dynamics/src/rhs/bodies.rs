@@ -10,12 +10,16 @@ use crate::model::Model;
 use crate::vec3::{V3, dot, scale, unit_or};
 use rolldyn_numerics::fastmath;
 
-/// Kinematics of a ring (centre, velocity, axis, spin) and its raceway radius at this time.
+/// Kinematics of a ring (centre, velocity, axis, spin, rotation angle) and its raceway radius
+/// at this time.
 pub(super) struct RingKin {
     pub o: V3,
     pub v: V3,
     pub axis: V3,
     pub spin: f64,
+    /// rotation angle ∫ω dt, rad: a point at angle ψ in the ring's frame is at azimuth
+    /// ψ + angle
+    pub angle: f64,
     pub raceway_radius: f64,
 }
 
@@ -72,6 +76,7 @@ pub(super) fn bodies(model: &Model, t: f64, y: &[f64]) -> Bodies {
         v: read3(y, ii + inner_ring::VELOCITY),
         axis: model.axis_i,
         spin: cond.inner_speed.speed(t),
+        angle: cond.inner_speed.angle(t),
         raceway_radius: model.ri,
     };
     let outer = RingKin {
@@ -79,6 +84,7 @@ pub(super) fn bodies(model: &Model, t: f64, y: &[f64]) -> Bodies {
         v: [0.0; 3],
         axis: [0.0, 0.0, 1.0],
         spin: cond.outer_speed.speed(t),
+        angle: cond.outer_speed.angle(t),
         raceway_radius: model.ro
             + cond
                 .clearance_at(t)

@@ -96,7 +96,7 @@ pub(super) fn detect(
 /// roller's straight part (SPEC §1.5 "bone-shaped" scar). Each point carries
 /// [`Model::bar_share`] of the pair's `K_p` and `C_h`: `Q = K_p' δⁿ + C(δ) δ̇` (seed 000 (2.5)–
 /// (2.8)), friction `μ(v_s) Q` against the sliding velocity. Adds the forces to the roller and
-/// their reaction to the cage; returns the normal force and the friction power.
+/// their reaction to the cage.
 #[inline(always)]
 pub(super) fn bar_contacts(
     model: &Model,
@@ -106,11 +106,11 @@ pub(super) fn bar_contacts(
     pockets: &PocketColumns,
     (roller, cage_wrench): (&mut Wrench, &mut Wrench),
     violation: &mut Option<Violation>,
-) -> (f64, f64) {
+) -> BarSums {
     let bar = &model.params.roller_cage;
     let bar_damping = SliceDamping::new(model.bar_share * bar.c_h, bar.d);
     let frame = pockets.frame(j);
-    let (mut bar_q, mut bar_pw) = (0.0, 0.0);
+    let mut sums = BarSums::default();
     for (k, &side) in [-1.0, 1.0].iter().enumerate() {
         for (i, &x) in model.bar_x.iter().enumerate() {
             // the (many) points clear of the bar were settled by the vector loop
@@ -146,11 +146,22 @@ pub(super) fn bar_contacts(
             roller.moment = add(roller.moment, cross(r_cp, fc));
             cage_wrench.force = sub(cage_wrench.force, fc);
             cage_wrench.moment = sub(cage_wrench.moment, cross(sub(cp, cage.centre), fc));
-            bar_q += qn;
-            bar_pw += mu * qn * vs;
+            sums.normal += qn;
+            sums.power += mu * qn * vs;
+            sums.sliding += qn * vs;
         }
     }
-    (bar_q, bar_pw)
+    sums
+}
+
+/// Sums of one roller's bar contacts: normal force, friction power and the force-weighted
+/// sliding speed (the speed of the friction law).
+#[derive(Debug, Clone, Copy, Default)]
+pub(super) struct BarSums {
+    pub normal: f64,
+    pub power: f64,
+    /// Σ Q v_s, N·m/s
+    pub sliding: f64,
 }
 
 /// Cage ↔ guiding land ([`Model::land_model`]), two stations at the quarter points of the land

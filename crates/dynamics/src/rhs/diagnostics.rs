@@ -21,13 +21,16 @@ pub(crate) struct ContactTable {
     pub lambda: Vec<f64>,
     pub mu: Vec<f64>,
     pub power: Vec<f64>,
+    /// normal force of every slice, roller-major (`slice_force[j * slices + i]`; 0 where
+    /// unloaded), N
+    pub slice_force: Vec<f64>,
     /// contact state of the most loaded slice (scuffing check)
     pub worst: Vec<Option<ContactState>>,
     pub(super) worst_q: Vec<f64>,
 }
 
 impl ContactTable {
-    fn new(z: usize) -> Self {
+    fn new(z: usize, slices: usize) -> Self {
         Self {
             force: vec![0.0; z],
             sliding: vec![0.0; z],
@@ -38,6 +41,7 @@ impl ContactTable {
             lambda: vec![0.0; z],
             mu: vec![0.0; z],
             power: vec![0.0; z],
+            slice_force: vec![0.0; z * slices],
             worst: vec![None; z],
             worst_q: vec![0.0; z],
         }
@@ -58,6 +62,8 @@ impl ContactTable {
         self.lambda[j] = 0.0;
         self.mu[j] = 0.0;
         self.power[j] = 0.0;
+        let slices = self.slice_force.len() / self.force.len();
+        self.slice_force[j * slices..(j + 1) * slices].fill(0.0);
         self.worst[j] = None;
         self.worst_q[j] = 0.0;
     }
@@ -126,12 +132,18 @@ pub(crate) struct Diagnostics {
     /// roller–cage bar normal force per roller (sum of the evaluation points), N
     pub bar: Vec<f64>,
     pub bar_power: Vec<f64>,
+    /// force-weighted sliding speed of the roller–cage bar contacts per roller, m/s (0: none)
+    pub bar_sliding: Vec<f64>,
     /// roller end ↔ rib normal force per roller (sum of both ends and all ribs), N
     pub rib: Vec<f64>,
     /// force-weighted sliding speed of the rib contacts per roller, m/s
     pub rib_sliding: Vec<f64>,
     /// force-weighted distance of the rib contact point from the rib edge (rim), m (NaN: none)
     pub rib_edge: Vec<f64>,
+    /// force-weighted distance of the rib contact point from the roller axis and from the ring
+    /// axis, m (NaN: none)
+    pub rib_end_radius: Vec<f64>,
+    pub rib_ring_radius: Vec<f64>,
     /// force-weighted friction coefficient of the rib contacts per roller
     pub rib_mu: Vec<f64>,
     /// friction power of the rib contacts per roller, W
@@ -156,13 +168,16 @@ pub(crate) struct Diagnostics {
 impl Diagnostics {
     pub fn new(z: usize, slices: usize) -> Self {
         Self {
-            inner: ContactTable::new(z),
-            outer: ContactTable::new(z),
+            inner: ContactTable::new(z, slices),
+            outer: ContactTable::new(z, slices),
             bar: vec![0.0; z],
             bar_power: vec![0.0; z],
+            bar_sliding: vec![0.0; z],
             rib: vec![0.0; z],
             rib_sliding: vec![0.0; z],
             rib_edge: vec![f64::NAN; z],
+            rib_end_radius: vec![f64::NAN; z],
+            rib_ring_radius: vec![f64::NAN; z],
             rib_mu: vec![0.0; z],
             rib_power: vec![0.0; z],
             rib_regime: vec![EndContactRegime::None; z],

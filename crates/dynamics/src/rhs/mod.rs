@@ -147,13 +147,14 @@ fn roller_contacts(
 ) {
     let sc = &mut diag.scratch;
     let rk = bodies::roller_kinematics(model, y, j, &mut sc.rollers);
-    raceways::prepare_slots(model, bodies, j, &rk, &mut sc.raceways);
+    let azimuth = sc.rollers.theta[0][j];
+    raceways::prepare_slots(model, bodies, j, &rk, azimuth, &mut sc.raceways);
     let mut roller = Wrench {
         force: scale(model.conditions.gravity_m_s2, model.m_r),
         moment: [0.0; 3],
     };
     let violation = &mut diag.violation;
-    (diag.bar[j], diag.bar_power[j]) = cage::bar_contacts(
+    let bar = cage::bar_contacts(
         model,
         &bodies.cage,
         j,
@@ -162,6 +163,13 @@ fn roller_contacts(
         (&mut roller, cage_wrench),
         violation,
     );
+    diag.bar[j] = bar.normal;
+    diag.bar_power[j] = bar.power;
+    diag.bar_sliding[j] = if bar.normal > 0.0 {
+        bar.sliding / bar.normal
+    } else {
+        0.0
+    };
     let rib = roller_ends::rib_contacts(
         model,
         faces,
@@ -177,10 +185,14 @@ fn roller_contacts(
     if rib.normal > 0.0 {
         diag.rib_sliding[j] = rib.sliding / rib.normal;
         diag.rib_edge[j] = rib.edge / rib.normal;
+        diag.rib_end_radius[j] = rib.end_radius / rib.normal;
+        diag.rib_ring_radius[j] = rib.ring_radius / rib.normal;
         diag.rib_mu[j] = rib.mu / rib.normal;
     } else {
         diag.rib_sliding[j] = 0.0;
         diag.rib_edge[j] = f64::NAN;
+        diag.rib_end_radius[j] = f64::NAN;
+        diag.rib_ring_radius[j] = f64::NAN;
         diag.rib_mu[j] = 0.0;
     }
     (diag.pocket[j], diag.pocket_power[j]) = roller_ends::pocket_contacts(

@@ -135,22 +135,23 @@ pub(super) fn detect(
     );
 }
 
-/// Prepares the slots of roller `j` for the slot loop: the raceway drop under them and its
-/// kinematics repeated over them, on the raceways it may touch.
+/// Prepares the slots of roller `j` (at azimuth `azimuth`, rad) for the slot loop: the raceway
+/// drop under them and its kinematics repeated over them, on the raceways it may touch.
 #[inline(always)]
 pub(super) fn prepare_slots(
     model: &Model,
     bodies: &Bodies,
     j: usize,
     rk: &RollerKinematics,
+    azimuth: f64,
     sc: &mut RacewayScratch,
 ) {
     let (touch_inner, touch_outer) = (sc.inner.may_touch[j], sc.outer.may_touch[j]);
     if touch_inner {
-        raceway_drop(&model.inner, j, rk, &bodies.inner, &mut sc.inner);
+        raceway_drop(&model.inner, j, rk, azimuth, &bodies.inner, &mut sc.inner);
     }
     if touch_outer {
-        raceway_drop(&model.outer, j, rk, &bodies.outer, &mut sc.outer);
+        raceway_drop(&model.outer, j, rk, azimuth, &bodies.outer, &mut sc.outer);
     }
     if touch_inner || touch_outer {
         sc.lanes.set(model.inner.lanes.slots(j), rk);
@@ -235,22 +236,35 @@ fn raceway_pairs<const INNER: bool>(
     }
 }
 
-/// The raceway drop under the slots of roller `j` (profiled raceways only) for the slot loop
-/// ([`raceway_kernel`]).
+/// The raceway drop under the slots of roller `j` (profiled or worn raceways only) for the slot
+/// loop ([`raceway_kernel`]): the profile's drop at each slot's axial position ζ on the ring,
+/// plus the wear map's depth at (ζ, ψ), ψ = `azimuth` − ring angle the roller centre's angle
+/// in the ring's frame (the azimuth about the bearing axis: the inner ring's offset of a few µm
+/// turns it by ~10⁻⁵ rad, far below a bin of the map).
 fn raceway_drop(
     rs: &RacewaySlices,
     j: usize,
     rk: &RollerKinematics,
+    azimuth: f64,
     ring: &RingKin,
     pass: &mut RacewayPass,
 ) {
-    if let Some(pr) = &rs.profile {
-        let zeta_c = dot(sub(rk.c, ring.o), ring.axis);
-        let a_ax = dot(rk.a, ring.axis);
-        let slots = rs.lanes.slots(j);
-        let race_drop = &mut pass.race_drop[slots.clone()];
-        for (d, &x) in race_drop.iter_mut().zip(&rs.lanes.x[slots]) {
-            *d = pr.drop(zeta_c + x * a_ax);
+    if rs.profile.is_none() && rs.wear.is_none() {
+        return;
+    }
+    let zeta_c = dot(sub(rk.c, ring.o), ring.axis);
+    let a_ax = dot(rk.a, ring.axis);
+    let slots = rs.lanes.slots(j);
+    let race_drop = &mut pass.race_drop[slots.clone()];
+    let zetas = rs.lanes.x[slots].iter().map(|&x| zeta_c + x * a_ax);
+    if let Some(map) = &rs.wear {
+        let wear = map.at_angle(azimuth - ring.angle);
+        for (d, zeta) in race_drop.iter_mut().zip(zetas) {
+            *d = rs.profile.as_ref().map_or(0.0, |pr| pr.drop(zeta)) + wear.depth(zeta);
+        }
+    } else if let Some(pr) = &rs.profile {
+        for (d, zeta) in race_drop.iter_mut().zip(zetas) {
+            *d = pr.drop(zeta);
         }
     }
 }
@@ -422,7 +436,7 @@ pub(super) fn apply_traction(
         }
         if tables == Tables::Fill {
             fill_table(&pass.loaded, table);
-            fill_sliding_split(&pass.loaded, &pass.out, axis, table);
+            fill_slices(&pass.loaded, &pass.out, axis, table);
         }
     }
 }
@@ -477,10 +491,10 @@ fn fill_table(loaded: &LoadedContacts, table: &mut ContactTable) {
     }
 }
 
-/// The load-weighted sums of the sliding velocity split along the roller
-/// ([`split_sliding`]) of every loaded slice into `table` (rolling-direction and axial
-/// components; [`ContactTable::finish`] turns them into means).
-fn fill_sliding_split(
+/// Every loaded slice's normal force and the load-weighted sums of its sliding velocity split
+/// along the roller ([`split_sliding`]) into `table` (rolling-direction and axial components;
+/// [`ContactTable::finish`] turns them into means).
+fn fill_slices(
     loaded: &LoadedContacts,
     out: &SliceOutputs,
     axis: &[Vec<f64>; 3],
@@ -492,6 +506,7 @@ fn fill_sliding_split(
         for run in &loaded.runs[block.runs.clone()] {
             for s in run.slot..run.slot + run.batch.len() {
                 let q = out.q[s];
+                table.slice_force[s] = q;
                 let n = scale([out.force[0][s], out.force[1][s], out.force[2][s]], 1.0 / q);
                 let dir = [
                     out.slide_dir[0][s],
@@ -502,6 +517,71 @@ fn fill_sliding_split(
                 table.sliding_rolling[j] += q * split.rolling;
                 table.sliding_axial[j] += q * split.axial;
             }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::conditions::OperatingConditions;
+    use crate::model::RacewayTraction;
+    use crate::parameters::ContactParameters;
+    use rolldyn_geometry::RacewayWearMap;
+
+    /// A ring turned by 0.7 rad: the roller at azimuth 2.0 rad sits over ring angle 1.3 rad,
+    /// and the drop under its slots is the map's depth there (plus the raceway profile), the
+    /// value `Ring::raceway_drop_at` gives.
+    #[test]
+    fn the_drop_reads_the_map_at_the_roller_angle_in_the_ring_frame() {
+        let mut b = rolldyn_model::default_cylindrical_bearing();
+        let depth = (0..3)
+            .flat_map(|i| (0..8).map(move |k| 1e-6 * (1 + i + 3 * k) as f64))
+            .collect();
+        let map = RacewayWearMap::new(vec![-5e-3, 0.0, 5e-3], 8, depth).unwrap();
+        b.inner_ring.raceway_wear = Some(map);
+        let traction = RacewayTraction::same(
+            rolldyn_lubrication::TractionModel::muraki(
+                rolldyn_lubrication::lubricant_by_name("pao1-vg320").unwrap(),
+            )
+            .unwrap(),
+        );
+        let cond = OperatingConditions::new(100.0, 1000.0);
+        let model = Model::new(&b, cond, ContactParameters::for_bearing(&b), traction).unwrap();
+        let ring = RingKin {
+            o: [0.0; 3],
+            v: [0.0; 3],
+            axis: [0.0, 0.0, 1.0],
+            spin: 100.0,
+            angle: 0.7,
+            raceway_radius: model.ri,
+        };
+        let (s, c) = 2.0_f64.sin_cos();
+        let rk = RollerKinematics {
+            c: [model.rm * c, model.rm * s, 1e-3],
+            a: [0.0, 0.0, 1.0],
+            v: [0.0; 3],
+            w: [0.0; 3],
+            orbit: 0.0,
+        };
+        let slices = model.slice_x.len();
+        let mut pass = RacewayPass::new(model.z, slices);
+        let j = 3;
+        raceway_drop(&model.inner, j, &rk, 2.0, &ring, &mut pass);
+        let slots = model.inner.lanes.slots(j);
+        for (s, &x) in slots.clone().zip(&model.slice_x) {
+            let expected = b.inner_ring.raceway_drop_at(1e-3 + x, 1.3);
+            assert!((pass.race_drop[s] - expected).abs() < 1e-15, "{s}");
+        }
+        // the map varies with the angle: azimuth + ring angle (the wrong sign) or the azimuth
+        // alone would read other depths
+        let first = 1e-3 + model.slice_x[0];
+        for wrong in [2.7, 2.0] {
+            let other = b.inner_ring.raceway_drop_at(first, wrong);
+            assert!(
+                (pass.race_drop[slots.start] - other).abs() > 1e-6,
+                "{wrong}"
+            );
         }
     }
 }

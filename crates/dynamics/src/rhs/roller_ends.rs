@@ -94,12 +94,15 @@ pub(super) fn detect(
 }
 
 /// Sums of one roller's rib contacts: normal force and the force-weighted sliding speed, edge
-/// distance and friction coefficient, the friction power and the regime of the most loaded.
+/// distance, contact radii (from the roller axis, from the ring axis) and friction
+/// coefficient, the friction power and the regime of the most loaded.
 #[derive(Debug, Clone, Copy, Default)]
 pub(super) struct RibSums {
     pub normal: f64,
     pub sliding: f64,
     pub edge: f64,
+    pub end_radius: f64,
+    pub ring_radius: f64,
     pub mu: f64,
     pub power: f64,
     best: f64,
@@ -112,6 +115,8 @@ impl RibSums {
         self.normal += ef.normal;
         self.sliding += ef.normal * ef.sliding;
         self.edge += ef.normal * ef.edge_distance;
+        self.end_radius += ef.normal * ef.end_radius;
+        self.ring_radius += ef.normal * ef.body_radius;
         self.mu += ef.normal * ef.mu;
         self.power += ef.mu * ef.normal * ef.sliding;
         if ef.normal > self.best {
