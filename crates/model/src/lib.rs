@@ -52,6 +52,11 @@ pub struct Source {
 }
 
 impl Source {
+    /// The text of the model file.
+    pub fn text(&self) -> &str {
+        &self.text
+    }
+
     /// The error `reason` at dotted `key` of this file (at its line when the key is in it).
     pub fn error(&self, key: &str, reason: impl Into<String>) -> ModelError {
         let tree = DeTable::parse(&self.text).ok();
