@@ -76,6 +76,7 @@ impl RacewayWearMap {
 
     /// The map at one ring-frame angle, to be read at many axial positions (the angular
     /// interpolation done once).
+    #[inline]
     pub fn at_angle(&self, angle_rad: f64) -> WearAtAngle<'_> {
         let bins = self.angle_bins;
         let u = angle_rad.rem_euclid(TAU) / TAU * bins as f64 - 0.5;
@@ -104,6 +105,7 @@ impl RacewayWearMap {
 
     /// The axial lines around `x` and the weight of the second: linear between them, the end
     /// line alone beyond the ends.
+    #[inline]
     fn axial_cell(&self, x: f64) -> ([usize; 2], f64) {
         let xs = &self.axial_m;
         let last = xs.len() - 1;
@@ -129,6 +131,7 @@ pub struct WearAtAngle<'a> {
 
 impl WearAtAngle<'_> {
     /// Depth at axial position `x`, m (bilinear, RacewayWearMap).
+    #[inline]
     pub fn depth(&self, x: f64) -> f64 {
         let m = self.map;
         let ([i0, i1], wx) = m.axial_cell(x);
