@@ -31,4 +31,4 @@ pub use model::{BearingModel, RollerRacewayPair};
 pub use profile::{Chamfer, Profile, ProfileShape};
 pub use ring::{GuidingLand, Rib, RibFace, RibSide, Ring};
 pub use roller::{EndFace, Roller, SliceStack};
-pub use wear_map::{RacewayWearMap, WearAtAngle};
+pub use wear_map::{RacewayWearMap, WearAtAngle, angle_bin_centre_rad, angle_bin_of};

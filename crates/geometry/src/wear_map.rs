@@ -9,6 +9,16 @@ use std::f64::consts::TAU;
 /// m, measured along the raceway normal, into the ring), bilinear: linear in x between the
 /// axial lines (the end values held beyond them), periodic linear in the angle between bin
 /// centres ψ_k = (k + ½)·2π/bins.
+/// Centre ψ_k = (k + ½)·2π/bins of angular bin `k` of `bins`, rad.
+pub fn angle_bin_centre_rad(k: usize, bins: usize) -> f64 {
+    (k as f64 + 0.5) * TAU / bins as f64
+}
+
+/// The angular bin of `bins` that ring-frame angle `angle_rad` (any real angle) falls in.
+pub fn angle_bin_of(angle_rad: f64, bins: usize) -> usize {
+    ((angle_rad.rem_euclid(TAU) / TAU * bins as f64) as usize).min(bins - 1)
+}
+
 #[derive(Debug, Clone, PartialEq)]
 pub struct RacewayWearMap {
     axial_m: Vec<f64>,
@@ -66,7 +76,7 @@ impl RacewayWearMap {
 
     /// Centre of angle bin `k`, ψ_k = (k + ½)·2π/bins, rad.
     pub fn bin_centre_rad(&self, k: usize) -> f64 {
-        (k as f64 + 0.5) * TAU / self.angle_bins as f64
+        angle_bin_centre_rad(k, self.angle_bins)
     }
 
     /// Depth at axial position `x` and ring-frame angle `angle_rad` (any real angle), m.

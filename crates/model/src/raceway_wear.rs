@@ -81,7 +81,7 @@ pub fn read_raceway_wear_csv(text: &str) -> Result<RacewayWearMap, String> {
                 axial[i] / M_PER_MM
             ));
         }
-        let centre = (k as f64 + 0.5) * 360.0 / bins as f64;
+        let centre = rolldyn_geometry::angle_bin_centre_rad(k, bins).to_degrees();
         if (angle_deg - centre).abs() > ANGLE_TOLERANCE_DEG {
             return Err(format!(
                 "line {n}: angle_deg {angle_deg} is not the centre {centre} of bin {k} of {bins}"

@@ -11,7 +11,7 @@ pub struct ContactDiagnostics {
     pub equivalent_force_n: f64,
     /// mean sliding speed while in contact (eq. 2.37), m/s
     pub mean_sliding_speed_m_s: f64,
-    /// fraction of the recorded time × rollers the contact is loaded (the rib: × 1)
+    /// fraction of the recorded time the contact of a roller is loaded (mean over the rollers)
     pub contact_fraction: f64,
     /// geometric mean Λ over the film-friction contact time
     pub mean_lambda: f64,

@@ -11,6 +11,7 @@ use crate::settings::{WearMethod, WearSettings};
 use crate::wear_line::{LinePatch, point_patch, slice_patch};
 use rolldyn_dynamics::EndContactRegime;
 use rolldyn_dynamics::output::{ContactSnapshot, OutputSink, Snapshot};
+use rolldyn_geometry::angle_bin_of;
 use std::f64::consts::{PI, TAU};
 
 /// Samples of one contact kind for the averaged method: the equivalent-force sums, the
@@ -128,10 +129,9 @@ impl<'a> WearRecorder<'a> {
         self.samples
     }
 
+    /// The map bin of a roller at `azimuth` on a ring turned by `ring_angle`.
     fn bin(&self, azimuth: f64, ring_angle: f64) -> usize {
-        let bins = self.settings.angle_bins;
-        let psi = (azimuth - ring_angle).rem_euclid(TAU);
-        ((psi / TAU * bins as f64) as usize).min(bins - 1)
+        angle_bin_of(azimuth - ring_angle, self.settings.angle_bins)
     }
 
     fn exposure(&self, patch: LinePatch, length: f64) -> f64 {
@@ -376,7 +376,7 @@ impl<'a> WearRecorder<'a> {
             ContactDiagnostics {
                 equivalent_force_n: a.contact.equivalent_force(),
                 mean_sliding_speed_m_s: a.contact.mean_sliding_speed(),
-                contact_fraction: a.contact.contact_time() / t,
+                contact_fraction: a.contact.contact_time() / (t * self.data.roller_count as f64),
                 mean_lambda: a.mean_lambda(),
                 boundary_fraction: a.boundary_time
                     / a.contact.contact_time().max(f64::MIN_POSITIVE),

@@ -4,6 +4,7 @@
 use crate::life::PeriodRecord;
 use crate::rates::SurfaceWear;
 use crate::surface::Surface;
+use rolldyn_geometry::angle_bin_centre_rad;
 use rolldyn_output::{Formats, OutputError, TableWriter};
 use rolldyn_plot::{Field, Labels, PlotError, Series, heat_map, line_plot};
 use std::path::{Path, PathBuf};
@@ -138,7 +139,7 @@ impl WearTables {
         {
             for (s, &x) in self.positions_mm.iter().enumerate() {
                 for b in 0..depth.bins {
-                    let angle = (b as f64 + 0.5) * 360.0 / depth.bins as f64;
+                    let angle = angle_bin_centre_rad(b, depth.bins).to_degrees();
                     table.write_row(&[i, t, x, angle, map[s * depth.bins + b] * UM])?;
                 }
             }

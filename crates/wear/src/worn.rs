@@ -5,7 +5,9 @@
 use crate::WearError;
 use crate::rates::SurfaceWear;
 use crate::surface::Surface;
-use rolldyn_geometry::{CylindricalRollerBearing, Profile, ProfileShape, RacewayWearMap};
+use rolldyn_geometry::{
+    CylindricalRollerBearing, Profile, ProfileShape, RacewayWearMap, Ring, angle_bin_centre_rad,
+};
 
 /// Points of the worn roller generatrix per slice: the crown between slice centres stays
 /// resolved to a tenth of a slice.
@@ -36,19 +38,33 @@ pub fn raceway_lines(slice_positions_m: &[f64], roller_length_m: f64) -> Vec<f64
     lines
 }
 
-/// A raceway map of `depth` (lines × bins at the slice centres) padded with the zero lines of
-/// [`raceway_lines`].
+/// The raceway map of `ring` worn further by `depth` (lines × bins at the slice centres),
+/// padded with the zero lines of [`raceway_lines`]; the ring's own map (a worn model) is
+/// sampled at the same lines and bin centres and added.
 pub fn raceway_map(
+    ring: &Ring,
     slice_positions_m: &[f64],
     roller_length_m: f64,
     bins: usize,
     depth: &[f64],
 ) -> Result<RacewayWearMap, WearError> {
     let axial = raceway_lines(slice_positions_m, roller_length_m);
-    let mut values = vec![0.0; bins];
-    values.extend_from_slice(depth);
-    values.extend(std::iter::repeat_n(0.0, bins));
-    RacewayWearMap::new(axial, bins, values).map_err(|e| WearError::Input(e.to_string()))
+    let added = |line: usize, bin: usize| match line {
+        0 => 0.0,
+        l if l == axial.len() - 1 => 0.0,
+        l => depth[(l - 1) * bins + bin],
+    };
+    let values = (0..axial.len())
+        .flat_map(|l| (0..bins).map(move |b| (l, b)))
+        .map(|(l, b)| {
+            let before = ring
+                .raceway_wear
+                .as_ref()
+                .map_or(0.0, |m| m.depth(axial[l], angle_bin_centre_rad(b, bins)));
+            before + added(l, b)
+        })
+        .collect();
+    RacewayWearMap::new(axial.clone(), bins, values).map_err(|e| WearError::Input(e.to_string()))
 }
 
 /// The roller generatrix worn by `depth` on the slice centres `positions`.
@@ -78,12 +94,14 @@ pub fn worn_bearing(
     worn.roller.profile =
         worn_roller_profile(&bearing.roller.profile, positions, &depth.roller_total());
     worn.inner_ring.raceway_wear = Some(raceway_map(
+        &bearing.inner_ring,
         positions,
         length,
         depth.bins,
         &depth.inner_map,
     )?);
     worn.outer_ring.raceway_wear = Some(raceway_map(
+        &bearing.outer_ring,
         positions,
         length,
         depth.bins,

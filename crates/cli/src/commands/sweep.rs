@@ -111,7 +111,10 @@ fn wear(
     row.insert("life_h".into(), answer.life_h);
     row.insert("clearance_increase_m".into(), answer.clearance_increase_m);
     row.insert("periods".into(), answer.periods.len() as f64);
-    row.insert("roller_depth_from_bar_m".into(), answer.roller_depth_from_bar_m);
+    row.insert(
+        "roller_depth_from_bar_m".into(),
+        answer.roller_depth_from_bar_m,
+    );
     for (kind, c) in &answer.initial_contacts {
         for (name, v) in [
             ("equivalent_force_n", c.equivalent_force_n),
