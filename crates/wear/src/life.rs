@@ -295,3 +295,61 @@ pub fn halved_period_check(
     });
     Ok((check, difference))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn rates(roller: f64, bar: f64) -> PerSurface<f64> {
+        PerSurface::from_fn(|s| match s {
+            Surface::Roller => roller,
+            Surface::CageBar => bar,
+            _ => 0.0,
+        })
+    }
+
+    #[test]
+    fn a_fixed_period_is_never_halved() {
+        let change = rate_changes(&rates(1.0, 1.0), &rates(10.0, 1.0));
+        assert!(!period_too_long(&PeriodControl::Fixed(1.0), &change, None));
+    }
+
+    #[test]
+    fn the_automatic_period_halves_on_a_large_change_or_a_reversal() {
+        let auto = PeriodControl::auto(1905.0 * 3600.0);
+        let small = rate_changes(&rates(1.0, 1.0), &rates(1.2, 1.0));
+        assert!((small.get(Surface::Roller) - 0.2).abs() < 1e-12);
+        assert!(!period_too_long(&auto, &small, None));
+        let large = rate_changes(&rates(1.0, 1.0), &rates(1.0, 0.4));
+        assert!(period_too_long(&auto, &large, None));
+        // the roller rate fell by 20 %, then rises by 20 %: a reversal beyond the noise
+        let fell = rate_changes(&rates(1.0, 1.0), &rates(0.8, 1.0));
+        assert!(period_too_long(&auto, &small, Some(&fell)));
+        // reversals within the noise (5 %) are not trends
+        let noise = rate_changes(&rates(1.0, 1.0), &rates(0.95, 1.0));
+        let back = rate_changes(&rates(1.0, 1.0), &rates(1.05, 1.0));
+        assert!(!period_too_long(&auto, &back, Some(&noise)));
+        // a surface that starts wearing counts as a full change
+        let starts = rate_changes(&rates(1.0, 0.0), &rates(1.0, 1.0));
+        assert_eq!(starts.get(Surface::CageBar), 1.0);
+    }
+
+    #[test]
+    fn limits_name_what_was_reached() {
+        let mut depth = SurfaceWear::zero(2, 4, 3);
+        depth.rib = 50e-6;
+        let mut settings = WearSettings::default();
+        assert_eq!(limit_reached(&settings, &depth), None);
+        settings.limits.depth_m = Some(40e-6);
+        assert_eq!(
+            limit_reached(&settings, &depth),
+            Some(StopReason::DepthLimit(Surface::Rib))
+        );
+        depth.roller = vec![10e-6, 0.0];
+        settings.limits.clearance_increase_m = Some(30e-6);
+        assert_eq!(
+            limit_reached(&settings, &depth),
+            Some(StopReason::ClearanceLimit)
+        );
+    }
+}

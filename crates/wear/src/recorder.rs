@@ -9,7 +9,6 @@ use crate::bearing_data::WearData;
 use crate::rates::{ContactDiagnostics, SurfaceWear};
 use crate::settings::{WearMethod, WearSettings};
 use crate::wear_line::{LinePatch, point_patch, slice_patch};
-use rolldyn_dynamics::EndContactRegime;
 use rolldyn_dynamics::output::{ContactSnapshot, OutputSink, Snapshot};
 use rolldyn_geometry::angle_bin_of;
 use std::f64::consts::{PI, TAU};
@@ -230,7 +229,11 @@ impl<'a> WearRecorder<'a> {
         };
         let patch = point_patch(force, radius, ends.reduced_modulus_pa);
         let v = r.rib_sliding_speed_m_s[j];
-        let boundary = r.rib_regime[j] == EndContactRegime::Boundary;
+        // seed 000 §3.2.2 (theory §3.5): film friction only while the patch stays inside the
+        // faces' overlap; a flat end on a flat rib (no reduced radius) meets it on an edge
+        let flat_on_flat =
+            !(r.rib_reduced_radius_m[j].is_finite() && r.rib_reduced_radius_m[j] > 0.0);
+        let boundary = flat_on_flat || !(r.rib_edge_distance_m[j] > patch.half_width_m);
         let (on_roller_r, on_ring_r) = (r.rib_contact_radius_m[j], r.rib_contact_ring_radius_m[j]);
         let entrainment = 0.5
             * ((snapshot.inner_ring_speed_rad_s - snapshot.cage_speed_rad_s).abs() * on_ring_r

@@ -71,11 +71,16 @@ pub fn raceway_map(
 fn worn_roller_profile(profile: &Profile, positions: &[f64], depth: &[f64]) -> Profile {
     let xe = profile.chamfer_start();
     let n = positions.len() * PROFILE_POINTS_PER_SLICE;
-    let points = (0..=n)
-        .map(|i| {
-            let x = -xe + 2.0 * xe * i as f64 / n as f64;
-            (x, profile.drop(x) + interpolate(positions, depth, x))
-        })
+    // the slice centres themselves are points: the slices see the worn drop exactly
+    let mut xs: Vec<f64> = (0..=n)
+        .map(|i| -xe + 2.0 * xe * i as f64 / n as f64)
+        .chain(positions.iter().copied().filter(|x| x.abs() < xe))
+        .collect();
+    xs.sort_by(f64::total_cmp);
+    xs.dedup_by(|a, b| (*a - *b).abs() < 1e-12);
+    let points = xs
+        .into_iter()
+        .map(|x| (x, profile.drop(x) + interpolate(positions, depth, x)))
         .collect();
     Profile {
         shape: ProfileShape::Polyline { points },

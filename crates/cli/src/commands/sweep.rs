@@ -95,14 +95,22 @@ fn skid(model: rolldyn_model::Model) -> Result<BTreeMap<String, f64>, String> {
     ))
 }
 
-/// The life run of one variant (`analysis = "wear"`): the depths at the end as its row.
+/// The life run of one variant (`analysis = "wear"`): the depths at the end as its row; its
+/// tables, plots and worn model go to `out` (`<sweep out>/variants/<name>-wear`).
 fn wear(
     settings: &rolldyn_wear::WearSettings,
     model: rolldyn_model::Model,
+    out: &std::path::Path,
 ) -> Result<BTreeMap<String, f64>, String> {
-    let answer =
-        rolldyn_wear::study::run_wear(&model, &Overrides::default(), settings, None, &mut |_| {})
-            .map_err(|e| e.to_string())?;
+    std::fs::create_dir_all(out).map_err(|e| format!("cannot create {}: {e}", out.display()))?;
+    let answer = rolldyn_wear::study::run_wear(
+        &model,
+        &Overrides::default(),
+        settings,
+        Some(out),
+        &mut |_| {},
+    )
+    .map_err(|e| e.to_string())?;
     let mut row: BTreeMap<String, f64> = answer
         .max_depth_m
         .iter()
@@ -153,9 +161,15 @@ fn wear_settings(sweep: &SweepFile) -> Result<rolldyn_wear::WearSettings, String
         Some(PeriodArg::Fixed(p)) => PeriodControl::Fixed(p),
         Some(PeriodArg::Auto) => PeriodControl::auto(defaults.period.initial_s()),
     };
+    let method = match sweep.method.as_deref() {
+        None | Some("direct") => rolldyn_wear::WearMethod::Direct,
+        Some("averaged") => rolldyn_wear::WearMethod::Averaged,
+        Some(other) => return Err(format!("method — '{other}' is not direct or averaged")),
+    };
     Ok(rolldyn_wear::WearSettings {
         life_s,
         period,
+        method,
         ..defaults
     })
 }
@@ -219,10 +233,15 @@ pub fn run(args: Args) -> Result<(), Failure> {
         .unwrap_or_else(|| PathBuf::from("out").join(stem));
     let analysis = sweep.analysis;
     let wear_settings_ref = &wear_settings;
-    let analyse = move |_: &Variant, model: rolldyn_model::Model| match analysis {
+    let variants_dir = out_dir.join("variants");
+    let analyse = move |v: &Variant, model: rolldyn_model::Model| match analysis {
         Analysis::Simulate => simulate(duration, discard, model),
         Analysis::Skid => skid(model),
-        Analysis::Wear => wear(wear_settings_ref, model),
+        Analysis::Wear => wear(
+            wear_settings_ref,
+            model,
+            &variants_dir.join(format!("{}-wear", v.name)),
+        ),
     };
     let done = AtomicUsize::new(0);
     let total = sweep.variants.len();
