@@ -14,6 +14,9 @@ use std::fmt::Write as _;
 use std::path::PathBuf;
 
 const HOUR: f64 = 3600.0;
+
+/// Labelled depth histories (time h, depth µm), one per period control.
+type Curves = Vec<(String, Vec<(f64, f64)>)>;
 const PERIODS_H: [f64; 5] = [12_500.0, 6_250.0, 3_810.0, 1_905.0, 952.5];
 
 fn main() -> Result<(), String> {
@@ -81,7 +84,7 @@ fn main() -> Result<(), String> {
         write!(csv, ",{}_um", s.name()).unwrap();
     }
     csv.push_str(",clearance_increase_um\n");
-    let mut curves: Vec<(Surface, Vec<(String, Vec<(f64, f64)>)>)> =
+    let mut curves: Vec<(Surface, Curves)> =
         Surface::ALL.iter().map(|&s| (s, Vec::new())).collect();
     for ((label, _), result) in controls.iter().zip(&results) {
         let (life, wall) = result.as_ref().map_err(|e| format!("{label}: {e}"))?;

@@ -17,7 +17,8 @@ pub fn bar_slice_forces(
     out: &mut [f64],
 ) {
     out.fill(0.0);
-    if !(force_n > 0.0) {
+    let loaded = force_n > 0.0; // false for NaN too
+    if !loaded {
         return;
     }
     let contact = |l: f64| LineContact {

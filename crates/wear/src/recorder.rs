@@ -36,7 +36,8 @@ impl AveragedSums {
     }
 
     fn add(&mut self, force: f64, speed: f64, dt: f64, lambda: f64, boundary: bool, lines: &[f64]) {
-        if !(force > 0.0) {
+        let loaded = force > 0.0; // false for NaN too
+        if !loaded {
             return;
         }
         self.contact.add(force, speed, dt);
@@ -216,7 +217,8 @@ impl<'a> WearRecorder<'a> {
     fn rib(&mut self, j: usize, snapshot: &Snapshot, dt: f64) {
         let r = &snapshot.rollers;
         let force = r.rib_force_n[j];
-        if !(force > 0.0) {
+        let loaded = force > 0.0; // false for NaN too
+        if !loaded {
             return;
         }
         let d = self.data;
@@ -233,7 +235,8 @@ impl<'a> WearRecorder<'a> {
         // faces' overlap; a flat end on a flat rib (no reduced radius) meets it on an edge
         let flat_on_flat =
             !(r.rib_reduced_radius_m[j].is_finite() && r.rib_reduced_radius_m[j] > 0.0);
-        let boundary = flat_on_flat || !(r.rib_edge_distance_m[j] > patch.half_width_m);
+        let inside = r.rib_edge_distance_m[j] > patch.half_width_m;
+        let boundary = flat_on_flat || !inside;
         let (on_roller_r, on_ring_r) = (r.rib_contact_radius_m[j], r.rib_contact_ring_radius_m[j]);
         let entrainment = 0.5
             * ((snapshot.inner_ring_speed_rad_s - snapshot.cage_speed_rad_s).abs() * on_ring_r

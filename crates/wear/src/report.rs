@@ -78,6 +78,13 @@ fn names(n: &[&str]) -> Vec<String> {
     n.iter().map(|s| s.to_string()).collect()
 }
 
+/// The roller and bar depth profiles at the end of one period.
+struct ProfileHistory {
+    time_h: f64,
+    roller: Vec<f64>,
+    bar: Vec<f64>,
+}
+
 /// The tables of a life run, written as the periods come.
 pub struct WearTables {
     dir: PathBuf,
@@ -85,8 +92,8 @@ pub struct WearTables {
     roller: TableWriter,
     bar: TableWriter,
     maps: [TableWriter; 2],
-    /// (time h, roller depth, bar depth) per period, for the plots
-    history: Vec<(f64, Vec<f64>, Vec<f64>)>,
+    /// roller and bar depths per period, for the plots
+    history: Vec<ProfileHistory>,
     records: Vec<PeriodRecord>,
     positions_mm: Vec<f64>,
 }
@@ -147,7 +154,11 @@ impl WearTables {
         for t in [&mut self.periods, &mut self.roller, &mut self.bar] {
             t.flush()?;
         }
-        self.history.push((t, roller, bar_mean));
+        self.history.push(ProfileHistory {
+            time_h: t,
+            roller,
+            bar: bar_mean,
+        });
         self.records.push(p.clone());
         Ok(())
     }
@@ -169,7 +180,7 @@ impl WearTables {
         }
         let mut written = Vec::new();
         let profile_plot =
-            |name: &str, title: &str, pick: &dyn Fn(&(f64, Vec<f64>, Vec<f64>)) -> &Vec<f64>| {
+            |name: &str, title: &str, pick: &dyn Fn(&ProfileHistory) -> &Vec<f64>| {
                 let curves: Vec<(String, Vec<(f64, f64)>)> = history
                     .iter()
                     .map(|h| {
@@ -178,7 +189,7 @@ impl WearTables {
                             .zip(pick(h))
                             .map(|(&x, &d)| (x, d * UM))
                             .collect();
-                        (format!("{:.0} h", h.0), pts)
+                        (format!("{:.0} h", h.time_h), pts)
                     })
                     .collect();
                 let path = dir.join(name);
@@ -196,12 +207,12 @@ impl WearTables {
         written.push(profile_plot(
             "roller-profile.svg",
             "Roller wear along the roller, per period",
-            &|h| &h.1,
+            &|h| &h.roller,
         )?);
         written.push(profile_plot(
             "bar-profile.svg",
             "Cage-bar wear along the bar (mean over pockets)",
-            &|h| &h.2,
+            &|h| &h.bar,
         )?);
         let rates: Vec<(String, Vec<(f64, f64)>)> = Surface::ALL
             .iter()

@@ -35,7 +35,8 @@ pub fn slice_patch(
     reduced_radius_m: f64,
     reduced_modulus_pa: f64,
 ) -> LinePatch {
-    if !(force_n > 0.0) {
+    let loaded = force_n > 0.0; // false for NaN too
+    if !loaded {
         return LinePatch::NONE;
     }
     let q = force_n / length_m;
@@ -49,7 +50,8 @@ pub fn slice_patch(
 /// The central wear line of a circular Hertz patch of reduced radius `reduced_radius_m`
 /// (sphere on flat, SPEC §2.3): a = (3QR/(4E*))^{1/3}, p̄ = π p₀/4.
 pub fn point_patch(force_n: f64, reduced_radius_m: f64, reduced_modulus_pa: f64) -> LinePatch {
-    if !(force_n > 0.0) {
+    let loaded = force_n > 0.0; // false for NaN too
+    if !loaded {
         return LinePatch::NONE;
     }
     match point_contact_sphere_flat(reduced_radius_m, reduced_modulus_pa, force_n) {

@@ -39,9 +39,7 @@ struct Step {
 impl Step {
     fn new(z: usize, slices: usize, slice_force: f64) -> Self {
         let mut slice_forces = vec![0.0; z * slices];
-        for s in 3..slices - 3 {
-            slice_forces[s] = slice_force;
-        }
+        slice_forces[3..slices - 3].fill(slice_force);
         let mut inner_force = vec![0.0; z];
         inner_force[0] = slice_forces.iter().sum();
         let mut sliding = vec![0.0; z];
