@@ -57,7 +57,7 @@ fn main() -> Result<(), String> {
     // two lives at a time: the even and the odd controls
     let (even, odd): (Vec<(usize, PeriodControl)>, Vec<_>) = controls
         .iter()
-        .map(|(_, c)| *c)
+        .map(|(_, c)| c.clone())
         .enumerate()
         .partition(|(i, _)| i % 2 == 0);
     let results: Vec<Result<(LifeRun, f64), String>> = std::thread::scope(|scope| {

@@ -176,6 +176,19 @@ fn period_too_long(
     })
 }
 
+/// Whether the automatic control may double the period after a period whose rates changed by
+/// `change`: every change within a quarter of the threshold.
+fn steady(control: &PeriodControl, change: &PerSurface<f64>) -> bool {
+    match control {
+        PeriodControl::Auto {
+            change_threshold, ..
+        } => change
+            .iter()
+            .all(|(_, c)| c.abs() < 0.25 * change_threshold),
+        _ => false,
+    }
+}
+
 /// The limit `depth` violates, if any.
 fn limit_reached(settings: &WearSettings, depth: &SurfaceWear) -> Option<StopReason> {
     let limits = &settings.limits;
@@ -206,13 +219,16 @@ pub fn run_life(
     let mut current = rates_of(inputs, &positions, &depth, settings)?;
     let (mut dynamics_s, mut wear_s) = (current.dynamics_s, current.wear_s);
     let mut period = settings.period.initial_s();
-    let minimum = match settings.period {
-        PeriodControl::Auto { minimum_s, .. } => minimum_s,
-        PeriodControl::Fixed(p) => p,
+    let minimum = match &settings.period {
+        PeriodControl::Auto { minimum_s, .. } => *minimum_s,
+        _ => f64::INFINITY,
     };
     let mut previous_change: Option<PerSurface<f64>> = None;
     let (mut time, mut periods, mut stop) = (0.0, Vec::new(), StopReason::LifeReached);
     while time < settings.life_s * (1.0 - 1e-12) {
+        if let PeriodControl::Schedule(list) = &settings.period {
+            period = list[periods.len().min(list.len() - 1)];
+        }
         let mut halvings = 0;
         let (next_depth, next, step) = loop {
             let step = period.min(settings.life_s - time);
@@ -231,6 +247,9 @@ pub fn run_life(
                 period /= 2.0;
                 halvings += 1;
                 continue;
+            }
+            if halvings == 0 && steady(&settings.period, &change) {
+                period = (2.0 * period).min(settings.period.initial_s());
             }
             previous_change = Some(change);
             break (trial, next, step);
@@ -269,21 +288,21 @@ pub fn run_life(
     })
 }
 
-/// The convergence evidence of a life run (SPEC §6.6): the same life with a fixed period of
-/// half the shortest period `run` accepted, and the relative difference of each surface's
+/// The convergence evidence of a life run (SPEC §6.6): the same life with every period of
+/// `run` replaced by two of half its length, and the relative difference of each surface's
 /// final depth (`run` against the halved run).
 pub fn halved_period_check(
     inputs: &LifeInputs,
     settings: &WearSettings,
     run: &LifeRun,
 ) -> Result<(LifeRun, PerSurface<f64>), WearError> {
-    let shortest = run
+    let halves = run
         .periods
         .iter()
-        .map(|p| p.period_h * 3600.0)
-        .fold(f64::INFINITY, f64::min);
+        .flat_map(|p| [0.5 * p.period_h * 3600.0; 2])
+        .collect();
     let halved = WearSettings {
-        period: PeriodControl::Fixed(0.5 * shortest),
+        period: PeriodControl::Schedule(halves),
         life_s: run.life_h * 3600.0,
         limits: Default::default(),
         ..settings.clone()
@@ -332,6 +351,16 @@ mod tests {
         // a surface that starts wearing counts as a full change
         let starts = rate_changes(&rates(1.0, 0.0), &rates(1.0, 1.0));
         assert_eq!(starts.get(Surface::CageBar), 1.0);
+    }
+
+    #[test]
+    fn the_automatic_period_grows_back_only_when_steady() {
+        let auto = PeriodControl::auto(1905.0 * 3600.0);
+        let calm = rate_changes(&rates(1.0, 1.0), &rates(1.1, 0.95));
+        assert!(steady(&auto, &calm));
+        let moving = rate_changes(&rates(1.0, 1.0), &rates(1.2, 1.0));
+        assert!(!steady(&auto, &moving));
+        assert!(!steady(&PeriodControl::Fixed(1.0), &calm));
     }
 
     #[test]

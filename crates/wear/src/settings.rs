@@ -37,13 +37,16 @@ impl ExposureWidth {
 }
 
 /// How long the geometry is held fixed between two dynamics runs (seed 000 §3.2.3).
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub enum PeriodControl {
     /// a fixed recalculation period, s
     Fixed(f64),
+    /// these periods in turn, the last one repeated, s (the replay of a run's periods)
+    Schedule(Vec<f64>),
     /// start with `initial_s`; halve the period when a surface's wear rate changes by more
     /// than `change_threshold` (relative) between periods or reverses its trend by more than
-    /// `trend_noise`; never below `minimum_s`
+    /// `trend_noise`; never below `minimum_s`. After a period whose rates all changed by less
+    /// than a quarter of the threshold the period doubles again, up to `initial_s`
     Auto {
         initial_s: f64,
         change_threshold: f64,
@@ -66,9 +69,10 @@ impl PeriodControl {
     }
 
     pub fn initial_s(&self) -> f64 {
-        match *self {
-            PeriodControl::Fixed(p) => p,
-            PeriodControl::Auto { initial_s, .. } => initial_s,
+        match self {
+            PeriodControl::Fixed(p) => *p,
+            PeriodControl::Schedule(periods) => periods.first().copied().unwrap_or(f64::INFINITY),
+            PeriodControl::Auto { initial_s, .. } => *initial_s,
         }
     }
 }

@@ -44,7 +44,7 @@ impl From<&PeriodRecord> for PeriodSummary {
 /// The automatic period's convergence evidence (SPEC §6.6).
 #[derive(Debug, Clone, Serialize)]
 pub struct Convergence {
-    /// the fixed period of the check run (half the shortest accepted), h
+    /// the first period of the check run (every accepted period halved), h
     pub halved_period_h: f64,
     pub max_depth_halved_m: PerSurface<f64>,
     /// depth with the accepted periods over depth with the halved one, minus 1
@@ -118,7 +118,7 @@ pub fn run_wear(
     if let Some(e) = table_error {
         return Err(output_error(e));
     }
-    let convergence = match settings.period {
+    let convergence = match &settings.period {
         PeriodControl::Auto { .. } => {
             let (check, difference) = halved_period_check(&inputs, settings, &run)?;
             Some(Convergence {
@@ -127,7 +127,7 @@ pub fn run_wear(
                 relative_difference: difference,
             })
         }
-        PeriodControl::Fixed(_) => None,
+        PeriodControl::Fixed(_) | PeriodControl::Schedule(_) => None,
     };
     let mut files: Vec<PathBuf> = Vec::new();
     if let (Some(dir), Some(t)) = (out, tables) {

@@ -216,11 +216,16 @@ pub fn run(args: Args) -> Result<(), Failure> {
     );
     if let Some(c) = &answer.convergence {
         println!(
-            "period halved to {:.0} h changes the depths by:",
+            "convergence: with every period halved (the first {:.0} h) the depths are",
             c.halved_period_h
         );
         for (s, d) in c.relative_difference.iter() {
-            println!("  {:<14} {:+.1} %", s.name(), d * 100.0);
+            println!(
+                "  {:<14} {:.3} µm ({:+.1} % from the accepted periods)",
+                s.name(),
+                c.max_depth_halved_m.get(s) * 1e6,
+                -d / (1.0 + d) * 100.0
+            );
         }
     }
     println!(
