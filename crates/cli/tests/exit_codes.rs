@@ -129,3 +129,23 @@ fn flag_values_out_of_bounds_exit_2_naming_the_flag() {
         );
     }
 }
+
+#[test]
+fn wear_exits_2_naming_the_missing_hardness_and_bad_flags() {
+    let path = mutated_model(
+        "nohardness",
+        "meyer_hardness = \"305 kgf/mm2\"  # flag F-45",
+        "",
+    );
+    let file = path.display().to_string();
+    let (code, line) = run(&["wear", &file, "--life", "10h", "--quiet"]);
+    assert_eq!(code, 2, "{line}");
+    assert!(
+        line.contains(&file) && line.contains("materials.cage-steel.meyer_hardness"),
+        "{line}"
+    );
+    let (code, line) = run(&["wear", "--period", "soon"]);
+    assert_eq!(code, 2, "{line}");
+    let (code, line) = run(&["wear", "--life", "-5h"]);
+    assert_eq!(code, 2, "{line}");
+}

@@ -61,11 +61,9 @@ pub struct WearData {
 }
 
 fn hardness(material: &Material, key: &str, settings: &WearSettings) -> Result<f64, WearError> {
-    let h = material.meyer_hardness.ok_or_else(|| {
-        WearError::Input(format!(
-            "materials.{}.meyer_hardness is needed for the wear of the {key}",
-            material.name
-        ))
+    let h = material.meyer_hardness.ok_or_else(|| WearError::Key {
+        key: format!("materials.{}.meyer_hardness", material.name),
+        reason: format!("missing: the wear of the {key} needs the Meyer hardness"),
     })?;
     Ok(if settings.seed_literal_hardness {
         crate::law::seed_literal_hardness_pa(h)

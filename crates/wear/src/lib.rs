@@ -36,6 +36,10 @@ pub enum WearError {
     /// bad or missing input (exit code 2)
     #[error("{0}")]
     Input(String),
+    /// a model-file key that is missing or unusable for wear (exit code 2; the caller names
+    /// the file)
+    #[error("{key} — {reason}")]
+    Key { key: String, reason: String },
     /// the dynamics failed (exit code 1)
     #[error("{0}")]
     Numerical(String),

@@ -5,7 +5,7 @@ use crate::surface::{PerSurface, Surface};
 
 /// What the averaged method works from, per contact kind (seed 000 eqs. 2.36, 2.37), reported
 /// for both methods.
-#[derive(Debug, Clone, Copy, PartialEq, Default, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct ContactDiagnostics {
     /// equivalent force Q_e (seed 000 eq. 2.36), N
     pub equivalent_force_n: f64,
@@ -17,6 +17,33 @@ pub struct ContactDiagnostics {
     pub mean_lambda: f64,
     /// fraction of the contact time in boundary friction
     pub boundary_fraction: f64,
+}
+
+impl serde::Serialize for ContactDiagnostics {
+    /// The fields by name; a value that is not finite follows docs/outputs.md (`null` and a
+    /// reason under `"non_finite"`).
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        let values = [
+            ("equivalent_force_n", self.equivalent_force_n),
+            ("mean_sliding_speed_m_s", self.mean_sliding_speed_m_s),
+            ("contact_fraction", self.contact_fraction),
+            ("mean_lambda", self.mean_lambda),
+            ("boundary_fraction", self.boundary_fraction),
+        ];
+        let mut object: serde_json::Map<String, serde_json::Value> = values
+            .iter()
+            .filter(|(_, v)| v.is_finite())
+            .map(|&(k, v)| (k.to_string(), v.into()))
+            .collect();
+        rolldyn_output::mark_non_finite(&mut object, &values, |key, v| match key {
+            "mean_lambda" if v.is_nan() => {
+                "no contact time in film friction (boundary throughout or no contact)".into()
+            }
+            _ if v.is_nan() => "no contact in the recorded revolutions".into(),
+            _ => rolldyn_output::default_reason(v).into(),
+        });
+        object.serialize(serializer)
+    }
 }
 
 /// The contact kinds of [`ContactDiagnostics`], in order.

@@ -107,6 +107,12 @@ pub fn run_wear(
         .transpose()
         .map_err(|e| output_error(e.to_string()))?;
     let mut table_error = None;
+    let locate = |e: WearError| match e {
+        WearError::Key { key, reason } => {
+            WearError::Input(model.source.error(&key, reason).to_string())
+        }
+        e => e,
+    };
     let run = run_life(&inputs, settings, &mut |record, depth| {
         progress(record);
         if let Some(t) = tables.as_mut()
@@ -114,7 +120,8 @@ pub fn run_wear(
         {
             table_error.get_or_insert(e.to_string());
         }
-    })?;
+    })
+    .map_err(locate)?;
     if let Some(e) = table_error {
         return Err(output_error(e));
     }

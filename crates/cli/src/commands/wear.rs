@@ -178,7 +178,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
         ));
     })
     .map_err(|e| match e {
-        WearError::Input(m) => Failure::Input(m),
+        e @ (WearError::Input(_) | WearError::Key { .. }) => Failure::Input(e.to_string()),
         WearError::Numerical(m) => Failure::Run(format!(
             "{m} (the periods computed so far are in {})",
             dir.display()
