@@ -209,8 +209,7 @@ impl<'a> WearRecorder<'a> {
             self.depth.bar_by_pocket[j * ns + s] += on_bar;
             self.depth.roller_at_bar[s] += on_roller / d.roller_count as f64;
         }
-        let forces = self.scratch.clone();
-        self.averaged[2].add(force, v, dt, lambda, false, &forces);
+        self.averaged[2].add(force, v, dt, lambda, false, &self.scratch);
     }
 
     /// Roller `j` on the ribs (direct method): one wear line on the end, one on the rib.
