@@ -50,8 +50,11 @@ fn main() -> Result<(), String> {
         .collect();
     let run = |control: PeriodControl| -> Result<(LifeRun, f64), String> {
         let wall = std::time::Instant::now();
-        let life =
-            run_life(&inputs, &settings(control), &mut |_, _| {}).map_err(|e| e.to_string())?;
+        let label = format!("{control:?}");
+        let life = run_life(&inputs, &settings(control), &mut |p, _| {
+            eprintln!("{label}: {:.0} h", p.time_h)
+        })
+        .map_err(|e| e.to_string())?;
         Ok((life, wall.elapsed().as_secs_f64()))
     };
     // two lives at a time: the even and the odd controls

@@ -176,6 +176,11 @@ fn period_too_long(
     })
 }
 
+/// A rate change that halving the period shrinks to less than this fraction is caused by the
+/// period (explicit steps in operating time: the change is about proportional to the step, so
+/// halving gives ½); one that stays above it is not, and no longer halves the period.
+const PERIOD_SENSITIVITY: f64 = 0.75;
+
 /// Whether the automatic control may double the period after a period whose rates changed by
 /// `change`: every change within a quarter of the threshold.
 fn steady(control: &PeriodControl, change: &PerSurface<f64>) -> bool {
@@ -230,6 +235,10 @@ pub fn run_life(
             period = list[periods.len().min(list.len() - 1)];
         }
         let mut halvings = 0;
+        // surfaces whose rate change did not shrink when the period was halved: not caused by
+        // the period's length (a jump between coexisting dynamic regimes, scatter)
+        let mut insensitive = PerSurface::from_fn(|_| false);
+        let mut trial_change: Option<PerSurface<f64>> = None;
         let (next_depth, next, step) = loop {
             let step = period.min(settings.life_s - time);
             let mut trial = depth.clone();
@@ -237,10 +246,19 @@ pub fn run_life(
             let next = rates_of(inputs, &positions, &trial, settings)?;
             dynamics_s += next.dynamics_s;
             wear_s += next.wear_s;
-            let change = rate_changes(
+            let raw = rate_changes(
                 &current.rates.max_per_surface(),
                 &next.rates.max_per_surface(),
             );
+            if let Some(before) = &trial_change {
+                for (s, c) in raw.iter() {
+                    if c.abs() > PERIOD_SENSITIVITY * before.get(s).abs() {
+                        insensitive.set(s, true);
+                    }
+                }
+            }
+            trial_change = Some(raw);
+            let change = PerSurface::from_fn(|s| if insensitive.get(s) { 0.0 } else { raw.get(s) });
             if period / 2.0 >= minimum
                 && period_too_long(&settings.period, &change, previous_change.as_ref())
             {
