@@ -229,15 +229,16 @@ pub fn run_life(
         _ => f64::INFINITY,
     };
     let mut previous_change: Option<PerSurface<f64>> = None;
+    // surfaces whose rate change did not shrink when a period was halved: not caused by the
+    // period's length (jumps between coexisting dynamic regimes, scatter); they no longer
+    // decide the period for the rest of the run
+    let mut insensitive = PerSurface::from_fn(|_| false);
     let (mut time, mut periods, mut stop) = (0.0, Vec::new(), StopReason::LifeReached);
     while time < settings.life_s * (1.0 - 1e-12) {
         if let PeriodControl::Schedule(list) = &settings.period {
             period = list[periods.len().min(list.len() - 1)];
         }
         let mut halvings = 0;
-        // surfaces whose rate change did not shrink when the period was halved: not caused by
-        // the period's length (a jump between coexisting dynamic regimes, scatter)
-        let mut insensitive = PerSurface::from_fn(|_| false);
         let mut trial_change: Option<PerSurface<f64>> = None;
         let (next_depth, next, step) = loop {
             let step = period.min(settings.life_s - time);

@@ -47,8 +47,8 @@ pub enum PeriodControl {
     /// than `change_threshold` (relative) between periods or reverses its trend by more than
     /// `trend_noise`; never below `minimum_s`. After a period whose rates all changed by less
     /// than a quarter of the threshold the period doubles again, up to `initial_s`. A surface
-    /// whose change does not shrink when the period is halved is not period-driven and stops
-    /// deciding for that period (docs/theory.md §8.8)
+    /// whose change does not shrink when the period is halved is not period-driven and no
+    /// longer decides the period (docs/theory.md §8.8)
     Auto {
         initial_s: f64,
         change_threshold: f64,
