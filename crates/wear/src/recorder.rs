@@ -73,6 +73,24 @@ impl AveragedSums {
     }
 }
 
+/// `(line, k p̄ v Δt, patch)` on every loaded wear line of a sliced line contact: eq. (45) of
+/// docs/theory.md §8.6 before the hardness and the exposure; `k_v_dt` is k v Δt (k v̄ for a rate).
+fn loaded_lines<'a>(
+    forces: &'a [f64],
+    lengths: &'a [f64],
+    reduced_radius_m: f64,
+    reduced_modulus_pa: f64,
+    k_v_dt: f64,
+) -> impl Iterator<Item = (usize, f64, LinePatch)> + 'a {
+    forces
+        .iter()
+        .zip(lengths)
+        .enumerate()
+        .map(move |(s, (&f, &l))| (s, slice_patch(f, l, reduced_radius_m, reduced_modulus_pa)))
+        .filter(|(_, patch)| patch.mean_pressure_pa > 0.0)
+        .map(move |(s, patch)| (s, k_v_dt * patch.mean_pressure_pa, patch))
+}
+
 /// Wear of one output-step window, summed (depth in m) on every wear line.
 pub struct WearRecorder<'a> {
     data: &'a WearData,
@@ -147,17 +165,14 @@ impl<'a> WearRecorder<'a> {
         let (v, lambda) = (c.sliding_speed_m_s[j], c.lambda[j]);
         let k = self.settings.coefficient.for_contact(lambda, false);
         let arc = pair.raceway_radius_m * TAU / self.settings.angle_bins as f64;
-        for (s, &f) in forces.iter().enumerate() {
-            let patch = slice_patch(
-                f,
-                d.slice_lengths_m[s],
-                pair.reduced_radius_m,
-                pair.reduced_modulus_pa,
-            );
-            if patch.mean_pressure_pa == 0.0 {
-                continue;
-            }
-            let pv = k * patch.mean_pressure_pa * v * dt;
+        let lines = loaded_lines(
+            forces,
+            &d.slice_lengths_m,
+            pair.reduced_radius_m,
+            pair.reduced_modulus_pa,
+            k * v * dt,
+        );
+        for (s, pv, patch) in lines {
             let ring = pv / pair.ring_hardness_pa * self.exposure(patch, arc);
             let roller = pv / d.roller_hardness_pa * self.exposure(patch, PI * d.roller_diameter_m);
             let map = if inner {
@@ -192,17 +207,14 @@ impl<'a> WearRecorder<'a> {
         let lambda = d.bar_lambda(force, v);
         let k = self.settings.coefficient.for_contact(lambda, false);
         let ns = d.lines();
-        for s in 0..ns {
-            let patch = slice_patch(
-                self.scratch[s],
-                d.slice_lengths_m[s],
-                bar.reduced_radius_m,
-                bar.reduced_modulus_pa,
-            );
-            if patch.mean_pressure_pa == 0.0 {
-                continue;
-            }
-            let pv = k * patch.mean_pressure_pa * v * dt;
+        let lines = loaded_lines(
+            &self.scratch,
+            &d.slice_lengths_m,
+            bar.reduced_radius_m,
+            bar.reduced_modulus_pa,
+            k * v * dt,
+        );
+        for (s, pv, patch) in lines {
             let on_bar = pv / bar.hardness_pa * self.exposure(patch, bar.exposure_length_m);
             let on_roller =
                 pv / d.roller_hardness_pa * self.exposure(patch, PI * d.roller_diameter_m);
@@ -277,21 +289,16 @@ impl<'a> WearRecorder<'a> {
         let z = d.roller_count as f64;
         let mut w = SurfaceWear::zero(d.lines(), self.settings.angle_bins, d.roller_count);
         // (rate while in contact, patch) on every line of one contact kind
-        let on_lines = |sums: &AveragedSums, radius: f64, modulus: f64| -> Vec<(f64, LinePatch)> {
-            let k = self
-                .settings
-                .coefficient
-                .for_contact(sums.mean_lambda(), sums.mostly_boundary());
-            let v = sums.contact.mean_sliding_speed();
-            sums.equivalent_line_forces()
-                .iter()
-                .zip(&d.slice_lengths_m)
-                .map(|(&f, &l)| {
-                    let patch = slice_patch(f, l, radius, modulus);
-                    (k * patch.mean_pressure_pa * v, patch)
-                })
-                .collect()
-        };
+        let on_lines =
+            |sums: &AveragedSums, radius: f64, modulus: f64| -> Vec<(usize, f64, LinePatch)> {
+                let k = self
+                    .settings
+                    .coefficient
+                    .for_contact(sums.mean_lambda(), sums.mostly_boundary());
+                let forces = sums.equivalent_line_forces();
+                let k_v = k * sums.contact.mean_sliding_speed();
+                loaded_lines(&forces, &d.slice_lengths_m, radius, modulus, k_v).collect()
+            };
         for (inner, bins) in [(true, &self.inner_bins), (false, &self.outer_bins)] {
             let pair = if inner { &d.inner } else { &d.outer };
             let arc = pair.raceway_radius_m * TAU / self.settings.angle_bins as f64;
@@ -302,10 +309,8 @@ impl<'a> WearRecorder<'a> {
             };
             for (b, sums) in bins.iter().enumerate() {
                 let time = sums.contact.contact_time() / t;
-                for (s, (kpv, patch)) in
+                for (s, kpv, patch) in
                     on_lines(sums, pair.reduced_radius_m, pair.reduced_modulus_pa)
-                        .into_iter()
-                        .enumerate()
                 {
                     map[s * self.settings.angle_bins + b] +=
                         kpv / pair.ring_hardness_pa * self.exposure(patch, arc) * time;
@@ -313,10 +318,7 @@ impl<'a> WearRecorder<'a> {
             }
             let sums = &self.averaged[if inner { 0 } else { 1 }];
             let time = sums.contact.contact_time() / (z * t);
-            for (s, (kpv, patch)) in on_lines(sums, pair.reduced_radius_m, pair.reduced_modulus_pa)
-                .into_iter()
-                .enumerate()
-            {
+            for (s, kpv, patch) in on_lines(sums, pair.reduced_radius_m, pair.reduced_modulus_pa) {
                 w.roller[s] += kpv / d.roller_hardness_pa
                     * self.exposure(patch, PI * d.roller_diameter_m)
                     * time;
@@ -324,10 +326,7 @@ impl<'a> WearRecorder<'a> {
         }
         let sums = &self.averaged[2];
         let time = sums.contact.contact_time() / (z * t);
-        for (s, (kpv, patch)) in on_lines(sums, d.bar.reduced_radius_m, d.bar.reduced_modulus_pa)
-            .into_iter()
-            .enumerate()
-        {
+        for (s, kpv, patch) in on_lines(sums, d.bar.reduced_radius_m, d.bar.reduced_modulus_pa) {
             let on_bar =
                 kpv / d.bar.hardness_pa * self.exposure(patch, d.bar.exposure_length_m) * time;
             for j in 0..d.roller_count {
