@@ -57,6 +57,9 @@ pub struct WearAnswer {
     pub model: String,
     pub method: &'static str,
     pub requested_life_h: f64,
+    /// cage revolutions recorded per period, and discarded before them
+    pub revolutions: u32,
+    pub settle_revolutions: u32,
     /// life reached, h
     pub life_h: f64,
     pub stop: StopReason,
@@ -167,6 +170,8 @@ pub fn run_wear(
             WearMethod::Averaged => "averaged",
         },
         requested_life_h: settings.life_s / 3600.0,
+        revolutions: settings.revolutions,
+        settle_revolutions: settings.settle_revolutions,
         life_h: run.life_h,
         stop: run.stop.clone(),
         periods: run.periods.iter().map(PeriodSummary::from).collect(),

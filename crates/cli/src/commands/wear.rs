@@ -189,8 +189,14 @@ pub fn run(args: Args) -> Result<(), Failure> {
         return print_json(&answer);
     }
     println!(
-        "{}: {} method, {:.0} h of {:.0} h ({:?})",
-        answer.model, answer.method, answer.life_h, answer.requested_life_h, answer.stop
+        "{}: {} method, {:.0} h of {:.0} h ({:?}); {} cage revolutions recorded per period after {}",
+        answer.model,
+        answer.method,
+        answer.life_h,
+        answer.requested_life_h,
+        answer.stop,
+        answer.revolutions,
+        answer.settle_revolutions
     );
     println!(
         "{:>10} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9}",
