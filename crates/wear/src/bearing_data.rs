@@ -2,9 +2,10 @@
 //! from the (worn) geometry.
 
 use crate::WearError;
-use crate::settings::WearSettings;
+use crate::settings::{PressureModel, WearSettings};
 use rolldyn_contact::hertz::{Conformity, reduced_modulus, reduced_radius};
-use rolldyn_geometry::{CylindricalRollerBearing, Material};
+use rolldyn_contact::roller_raceway::RollerRacewayContact;
+use rolldyn_geometry::{BearingModel, CylindricalRollerBearing, Material};
 use rolldyn_lubrication::Lubricant;
 use rolldyn_lubrication::film::{hamrock_dowson_point, rigid_piezoviscous_line};
 use rolldyn_lubrication::regime::film_parameter;
@@ -43,7 +44,7 @@ pub struct EndPair {
 }
 
 /// The bearing as the wear calculation sees it.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone)]
 pub struct WearData {
     pub roller_count: usize,
     pub roller_diameter_m: f64,
@@ -58,6 +59,9 @@ pub struct WearData {
     /// oil viscosity and pressure–viscosity coefficient at the cage temperature
     pub oil_viscosity_pa_s: f64,
     pub oil_pressure_viscosity_1_pa: f64,
+    /// the roller on the inner and the outer raceway for the Boussinesq wear-line pressures
+    /// (`PressureModel::Boussinesq`): the inner contact tilted by the ring misalignment
+    contacts: Option<[RollerRacewayContact; 2]>,
 }
 
 fn hardness(material: &Material, key: &str, settings: &WearSettings) -> Result<f64, WearError> {
@@ -75,6 +79,22 @@ fn hardness(material: &Material, key: &str, settings: &WearSettings) -> Result<f
 /// Whether the roller ends run on the inner ring's ribs (else the outer ring's).
 pub fn ribs_on_inner_ring(bearing: &CylindricalRollerBearing) -> bool {
     !bearing.inner_ring.ribs.is_empty() || bearing.outer_ring.ribs.is_empty()
+}
+
+/// The roller on both raceways of the (worn) bearing: the inner contact tilted by the ring
+/// misalignment (the rollers follow the outer ring), the outer one straight.
+fn raceway_contacts(
+    bearing: &CylindricalRollerBearing,
+) -> Result<[RollerRacewayContact; 2], WearError> {
+    let model = BearingModel::Cylindrical(bearing.clone());
+    let contact = |inner: bool, tilt: f64| {
+        RollerRacewayContact::from_model(&model, inner, tilt)
+            .map_err(|e| WearError::Input(format!("Boussinesq wear-line pressures: {e}")))
+    };
+    Ok([
+        contact(true, bearing.misalignment.inner_ring_tilt)?,
+        contact(false, 0.0)?,
+    ])
 }
 
 fn modulus(a: &Material, b: &Material) -> f64 {
@@ -150,7 +170,16 @@ impl WearData {
             },
             oil_viscosity_pa_s: oil.dynamic_viscosity(cage_k).map_err(oil_error)?,
             oil_pressure_viscosity_1_pa: oil.pressure_viscosity(cage_k).map_err(oil_error)?,
+            contacts: match settings.pressure_model {
+                PressureModel::Slices => None,
+                PressureModel::Boussinesq => Some(raceway_contacts(bearing)?),
+            },
         })
+    }
+
+    /// The roller on the inner (`inner`) or outer raceway for Boussinesq pressures, if built.
+    pub fn boussinesq(&self, inner: bool) -> Option<&RollerRacewayContact> {
+        self.contacts.as_ref().map(|c| &c[usize::from(!inner)])
     }
 
     /// Number of wear lines on the roller (its slice centres).

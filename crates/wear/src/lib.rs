@@ -12,6 +12,7 @@
 pub mod averaged;
 pub mod bar_load;
 pub mod bearing_data;
+pub mod boussinesq_lines;
 pub mod coefficient;
 pub mod law;
 pub mod life;
@@ -27,7 +28,9 @@ pub mod worn_model;
 
 pub use life::{LifeInputs, LifeRun, PeriodRecord, StopReason, halved_period_check, run_life};
 pub use rates::SurfaceWear;
-pub use settings::{ExposureWidth, OperabilityLimits, PeriodControl, WearMethod, WearSettings};
+pub use settings::{
+    ExposureWidth, OperabilityLimits, PeriodControl, PressureModel, WearMethod, WearSettings,
+};
 pub use surface::{PerSurface, Surface};
 
 /// Why a wear calculation stopped.

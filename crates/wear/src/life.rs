@@ -130,7 +130,7 @@ pub fn rates_of(
     let total = wall.elapsed().as_secs_f64();
     let wear_s = geometry_s + recorder.wall_s();
     Ok(RatesRun {
-        rates: recorder.rates(),
+        rates: recorder.rates()?,
         cage_speed_rad_s: recorder.mean_cage_speed(),
         dynamics_s: total - wear_s,
         wear_s,
@@ -216,6 +216,7 @@ pub fn run_life(
     settings: &WearSettings,
     on_period: &mut dyn FnMut(&PeriodRecord, &SurfaceWear),
 ) -> Result<LifeRun, WearError> {
+    settings.validate().map_err(WearError::Input)?;
     let hour = 3600.0;
     let positions = inputs.bearing.roller.slices().position;
     let lines = positions.len();

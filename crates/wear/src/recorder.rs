@@ -3,11 +3,13 @@
 //! and films become wear on the wear lines of every surface, summed over the recorded
 //! revolutions; [`WearRecorder::rates`] divides by the recorded time.
 
+use crate::WearError;
 use crate::averaged::AveragedContact;
 use crate::bar_load::bar_slice_forces;
 use crate::bearing_data::WearData;
+use crate::boussinesq_lines::boussinesq_patches;
 use crate::rates::{ContactDiagnostics, SurfaceWear};
-use crate::settings::{WearMethod, WearSettings};
+use crate::settings::{PressureModel, WearMethod, WearSettings};
 use crate::wear_line::{LinePatch, point_patch, slice_patch};
 use rolldyn_dynamics::output::{ContactSnapshot, OutputSink, Snapshot};
 use rolldyn_geometry::angle_bin_of;
@@ -283,42 +285,75 @@ impl<'a> WearRecorder<'a> {
     /// Rates of the averaged method (seed 000 eq. 2.35): per contact kind the equivalent force
     /// spread over the lines in the recorded load shape, the mean sliding speed and k at the
     /// mean Λ, times the fraction of time in contact.
-    fn averaged_rates(&self) -> SurfaceWear {
+    fn averaged_rates(&self) -> Result<SurfaceWear, WearError> {
         let d = self.data;
         let t = self.recorded_s;
         let z = d.roller_count as f64;
         let mut w = SurfaceWear::zero(d.lines(), self.settings.angle_bins, d.roller_count);
-        // (rate while in contact, patch) on every line of one contact kind
-        let on_lines =
-            |sums: &AveragedSums, radius: f64, modulus: f64| -> Vec<(usize, f64, LinePatch)> {
-                let k = self
-                    .settings
-                    .coefficient
-                    .for_contact(sums.mean_lambda(), sums.mostly_boundary());
-                let forces = sums.equivalent_line_forces();
-                let k_v = k * sums.contact.mean_sliding_speed();
-                loaded_lines(&forces, &d.slice_lengths_m, radius, modulus, k_v).collect()
-            };
+        // (line, rate while in contact, patch) on every loaded line of one contact kind: the
+        // slices' Hertz patches under the equivalent force in the recorded load shape, or the
+        // given patches (Boussinesq at the raceway's equivalent force)
+        let on_lines = |sums: &AveragedSums,
+                        radius: f64,
+                        modulus: f64,
+                        given: Option<&[LinePatch]>|
+         -> Vec<(usize, f64, LinePatch)> {
+            let k = self
+                .settings
+                .coefficient
+                .for_contact(sums.mean_lambda(), sums.mostly_boundary());
+            let k_v = k * sums.contact.mean_sliding_speed();
+            match given {
+                Some(patches) => patches
+                    .iter()
+                    .enumerate()
+                    .filter(|(_, p)| p.mean_pressure_pa > 0.0)
+                    .map(|(s, &p)| (s, k_v * p.mean_pressure_pa, p))
+                    .collect(),
+                None => {
+                    let forces = sums.equivalent_line_forces();
+                    loaded_lines(&forces, &d.slice_lengths_m, radius, modulus, k_v).collect()
+                }
+            }
+        };
         for (inner, bins) in [(true, &self.inner_bins), (false, &self.outer_bins)] {
             let pair = if inner { &d.inner } else { &d.outer };
+            let sums = &self.averaged[if inner { 0 } else { 1 }];
+            let given = match (self.settings.pressure_model, d.boussinesq(inner)) {
+                (PressureModel::Boussinesq, Some(contact)) => Some(boussinesq_patches(
+                    contact,
+                    sums.contact.equivalent_force(),
+                    &d.slice_lengths_m,
+                )?),
+                _ => None,
+            };
             let arc = pair.raceway_radius_m * TAU / self.settings.angle_bins as f64;
             let map = if inner {
                 &mut w.inner_map
             } else {
                 &mut w.outer_map
             };
-            for (b, sums) in bins.iter().enumerate() {
-                let time = sums.contact.contact_time() / t;
-                for (s, kpv, patch) in
-                    on_lines(sums, pair.reduced_radius_m, pair.reduced_modulus_pa)
-                {
+            for (b, bin) in bins.iter().enumerate() {
+                let time = bin.contact.contact_time() / t;
+                let lines = on_lines(
+                    bin,
+                    pair.reduced_radius_m,
+                    pair.reduced_modulus_pa,
+                    given.as_deref(),
+                );
+                for (s, kpv, patch) in lines {
                     map[s * self.settings.angle_bins + b] +=
                         kpv / pair.ring_hardness_pa * self.exposure(patch, arc) * time;
                 }
             }
-            let sums = &self.averaged[if inner { 0 } else { 1 }];
             let time = sums.contact.contact_time() / (z * t);
-            for (s, kpv, patch) in on_lines(sums, pair.reduced_radius_m, pair.reduced_modulus_pa) {
+            let lines = on_lines(
+                sums,
+                pair.reduced_radius_m,
+                pair.reduced_modulus_pa,
+                given.as_deref(),
+            );
+            for (s, kpv, patch) in lines {
                 w.roller[s] += kpv / d.roller_hardness_pa
                     * self.exposure(patch, PI * d.roller_diameter_m)
                     * time;
@@ -326,7 +361,9 @@ impl<'a> WearRecorder<'a> {
         }
         let sums = &self.averaged[2];
         let time = sums.contact.contact_time() / (z * t);
-        for (s, kpv, patch) in on_lines(sums, d.bar.reduced_radius_m, d.bar.reduced_modulus_pa) {
+        for (s, kpv, patch) in
+            on_lines(sums, d.bar.reduced_radius_m, d.bar.reduced_modulus_pa, None)
+        {
             let on_bar =
                 kpv / d.bar.hardness_pa * self.exposure(patch, d.bar.exposure_length_m) * time;
             for j in 0..d.roller_count {
@@ -358,19 +395,19 @@ impl<'a> WearRecorder<'a> {
                 * contact_time
                 / t;
         }
-        w
+        Ok(w)
     }
 
     /// Wear rates of the recorded window, m/s of depth, by the chosen method.
-    pub fn rates(&self) -> SurfaceWear {
+    pub fn rates(&self) -> Result<SurfaceWear, WearError> {
         let t = self.recorded_s;
         let mut rates = match self.settings.method {
             WearMethod::Direct => self.depth.scaled(1.0 / t),
-            WearMethod::Averaged => self.averaged_rates(),
+            WearMethod::Averaged => self.averaged_rates()?,
         };
         rates.diagnostics = self.diagnostics();
         rates.recorded_s = t;
-        rates
+        Ok(rates)
     }
 
     fn diagnostics(&self) -> [ContactDiagnostics; 4] {

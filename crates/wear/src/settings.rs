@@ -36,6 +36,17 @@ impl ExposureWidth {
     }
 }
 
+/// Where the mean pressure on the raceway wear lines comes from (docs/theory.md §8.5).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PressureModel {
+    /// the slices' Hertz line contacts under the dynamics' slice forces
+    Slices,
+    /// the Boussinesq solver (seed 004) on the roller's profile at the raceway's equivalent
+    /// force — where the edges matter; with the averaged method only (one solve per raceway and
+    /// period, as the seed's FE contact at the equivalent force)
+    Boussinesq,
+}
+
 /// How long the geometry is held fixed between two dynamics runs (seed 000 §3.2.3).
 #[derive(Debug, Clone, PartialEq)]
 pub enum PeriodControl {
@@ -111,12 +122,23 @@ pub struct WearSettings {
     /// exponent of the equivalent force (seed 000 eq. 2.36: 1/3; flag F-49)
     pub equivalent_force_exponent: f64,
     pub exposure_width: ExposureWidth,
+    pub pressure_model: PressureModel,
     /// angular bins of the raceway wear maps. Default 72 (5°): the loaded zone of a rotating
     /// load spans ± 60–90° and is resolved by 25–35 bins
     pub angle_bins: usize,
     /// the seed's literal hardness (kgf/mm² read as MPa, flag F-45) instead of Pa
     pub seed_literal_hardness: bool,
     pub limits: OperabilityLimits,
+}
+
+impl WearSettings {
+    /// Settings that cannot work together: one line naming the flags.
+    pub fn validate(&self) -> Result<(), String> {
+        if self.pressure_model == PressureModel::Boussinesq && self.method == WearMethod::Direct {
+            return Err("--pressure boussinesq needs --method averaged (one Boussinesq solve per raceway and period at the equivalent force)".into());
+        }
+        Ok(())
+    }
 }
 
 impl Default for WearSettings {
@@ -132,6 +154,7 @@ impl Default for WearSettings {
             coefficient: WearCoefficient::seed_default(),
             equivalent_force_exponent: SEED_EQUIVALENT_FORCE_EXPONENT,
             exposure_width: ExposureWidth::Full,
+            pressure_model: PressureModel::Slices,
             angle_bins: 72,
             seed_literal_hardness: false,
             limits: OperabilityLimits::default(),

@@ -133,7 +133,7 @@ fn direct_rates_follow_archard_with_the_exposure_of_each_surface() {
     for i in 0..50 {
         recorder.sample(i as f64 * settings.output_step_s, &step.snapshot(0.0));
     }
-    let rates = recorder.rates();
+    let rates = recorder.rates().unwrap();
     // eq. (45) on a middle line: k p̄ v / H × 2b / ρ, the roller in every step (mean over z)
     let s = 4;
     let patch = slice_patch(
@@ -168,7 +168,7 @@ fn direct_rates_follow_archard_with_the_exposure_of_each_surface() {
     for i in 0..50 {
         recorder.sample(i as f64 * settings.output_step_s, &step.snapshot(0.0));
     }
-    let a = recorder.rates();
+    let a = recorder.rates().unwrap();
     assert!((a.roller[s] / rates.roller[s] - 1.0).abs() < 1e-9);
     assert!((a.inner_map[s * settings.angle_bins] / ring - 1.0).abs() < 1e-9);
     assert!((a.diagnostics[0].equivalent_force_n - step.inner_force[0]).abs() < 1e-9);

@@ -9,7 +9,8 @@ use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use rolldyn_units::{Length, Quantity, Time};
 use rolldyn_wear::study::run_wear;
 use rolldyn_wear::{
-    ExposureWidth, OperabilityLimits, PeriodControl, Surface, WearError, WearMethod, WearSettings,
+    ExposureWidth, OperabilityLimits, PeriodControl, PressureModel, Surface, WearError, WearMethod,
+    WearSettings,
 };
 use std::path::PathBuf;
 use std::str::FromStr;
@@ -56,6 +57,14 @@ pub enum ExposureArg {
     Half,
 }
 
+#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum PressureArg {
+    /// the slices' Hertz line contacts
+    Slices,
+    /// the Boussinesq solver at the raceway's equivalent force (with --method averaged)
+    Boussinesq,
+}
+
 #[derive(clap::Args)]
 pub struct Args {
     /// Model file (TOML) with [lubricant], [operating] and the materials' meyer_hardness; the
@@ -78,6 +87,9 @@ pub struct Args {
     /// Cage revolutions run and discarded before recording.
     #[arg(long, default_value_t = 10)]
     pub settle: u32,
+    /// Mean pressure on the raceway wear lines (docs/theory.md §8.5).
+    #[arg(long, value_enum, default_value = "slices")]
+    pub pressure: PressureArg,
     /// Width a surface point spends under the contact (seed 000 eq. 3.1, flag F-47).
     #[arg(long, value_enum, default_value = "full")]
     pub exposure_width: ExposureArg,
@@ -111,7 +123,7 @@ impl Args {
             return Err(Failure::Input("--revolutions must be at least 1".into()));
         }
         let hour = 3600.0;
-        Ok(WearSettings {
+        let settings = WearSettings {
             method: match self.method {
                 MethodArg::Direct => WearMethod::Direct,
                 MethodArg::Averaged => WearMethod::Averaged,
@@ -128,12 +140,18 @@ impl Args {
                 ExposureArg::Half => ExposureWidth::Half,
             },
             seed_literal_hardness: self.seed_literal_hardness,
+            pressure_model: match self.pressure {
+                PressureArg::Slices => PressureModel::Slices,
+                PressureArg::Boussinesq => PressureModel::Boussinesq,
+            },
             limits: OperabilityLimits {
                 clearance_increase_m: self.max_clearance_increase.map(|q| q.si()),
                 depth_m: self.max_depth.map(|q| q.si()),
             },
             ..WearSettings::default()
-        })
+        };
+        settings.validate().map_err(Failure::Input)?;
+        Ok(settings)
     }
 }
 
