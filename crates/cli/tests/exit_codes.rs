@@ -148,4 +148,7 @@ fn wear_exits_2_naming_the_missing_hardness_and_bad_flags() {
     assert_eq!(code, 2, "{line}");
     let (code, line) = run(&["wear", "--life", "-5h"]);
     assert_eq!(code, 2, "{line}");
+    let (code, line) = run(&["wear", "--pressure", "boussinesq", "--method", "direct"]);
+    assert_eq!(code, 2, "{line}");
+    assert!(line.contains("--method averaged"), "{line}");
 }
