@@ -95,7 +95,7 @@ pub const BEARING_COLUMNS: [BearingColumn; 12] = [
 
 /// Columns of the `rollers` table (the raceway contacts as `inner_*` then `outer_*`, each in
 /// the order of [`crate::output::ContactSnapshot`]).
-pub const ROLLER_COLUMNS: [RollerColumn; 27] = [
+pub const ROLLER_COLUMNS: [RollerColumn; 28] = [
     Column {
         name: "time_s",
         description: "time, s",
@@ -225,6 +225,11 @@ pub const ROLLER_COLUMNS: [RollerColumn; 27] = [
         name: "rib_force_n",
         description: "roller ends ↔ ribs normal force, N",
         value: |s, j| s.rollers.rib_force_n[j],
+    },
+    Column {
+        name: "rib_friction_power_w",
+        description: "roller ends ↔ ribs friction power, W",
+        value: |s, j| s.rollers.rib_power_w[j],
     },
     Column {
         name: "pocket_face_force_n",
