@@ -1,0 +1,6 @@
+//! Cage high-cycle fatigue (seed 000 §2.5, §3.1.1.8): the cycle counting of stress histories
+//! ([`rainflow`]).
+
+pub mod rainflow;
+
+pub use rainflow::{Cycle, HistoryKind, rainflow, turning_points};
