@@ -45,6 +45,8 @@ enum Command {
     Startup(commands::startup::Args),
     /// Wear of raceways, rollers, cage bars, roller ends and ribs over the bearing's life.
     Wear(commands::wear::Args),
+    /// Cage fatigue tools: rainflow cycle counting of a stress history.
+    Fatigue(commands::fatigue::Args),
     /// Re-run a seed's validation study and write its tables and plots.
     Study(commands::study::Args),
     /// Finite journal bearing by the Reynolds equation: load, attitude, friction, K and C.
@@ -78,6 +80,7 @@ fn main() -> ExitCode {
         Command::Bench(args) => commands::bench::run(args),
         Command::Startup(args) => commands::startup::run(args),
         Command::Wear(args) => commands::wear::run(args),
+        Command::Fatigue(args) => commands::fatigue::run(args),
         Command::Simulate(args) => commands::simulate::run(args),
         Command::Skid(args) => commands::skid::run(args),
         Command::Oils(args) => commands::oils::run(args),

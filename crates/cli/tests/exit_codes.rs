@@ -152,3 +152,27 @@ fn wear_exits_2_naming_the_missing_hardness_and_bad_flags() {
     assert_eq!(code, 2, "{line}");
     assert!(line.contains("--method averaged"), "{line}");
 }
+
+#[test]
+fn fatigue_rainflow_counts_a_csv_and_names_a_bad_line() {
+    let dir = std::env::temp_dir().join(format!("rolldyn-rainflow-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let good = dir.join("h.csv");
+    std::fs::write(&good, "stress\n-2\n1\n-3\n5\n-1\n3\n-4\n4\n-2\n").unwrap();
+    let out = rolldyn(&["fatigue", "rainflow", &good.display().to_string(), "--json"]);
+    assert_eq!(out.status.code(), Some(0));
+    let json: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let total: f64 = json["cycles"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|c| c["count"].as_f64().unwrap())
+        .sum();
+    assert_eq!(total, 4.0);
+    let bad = dir.join("bad.csv");
+    std::fs::write(&bad, "1\n2\nx\n").unwrap();
+    let file = bad.display().to_string();
+    let (code, line) = run(&["fatigue", "rainflow", &file]);
+    assert_eq!(code, 2, "{line}");
+    assert!(line.contains(&file) && line.contains("line 3"), "{line}");
+}
