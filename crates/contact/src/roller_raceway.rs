@@ -9,6 +9,7 @@ use crate::boussinesq::{
 use crate::hertz::{Conformity, LineApproachModel, LineContact, reduced_modulus, reduced_radius};
 use crate::slices::{SliceError, SliceLaw, SlicedRoller, SolveOptions};
 use rolldyn_geometry::{BearingModel, Profile, Ring};
+use rolldyn_numerics::table::interpolate_held;
 use std::time::Instant;
 
 /// Why a roller–raceway contact could not be solved.
@@ -344,7 +345,7 @@ impl RollerRacewayContact {
             tilt_rad: self.tilt,
             approach_m: solution.approach,
             max_pressure_pa: max_pressure,
-            mid_pressure_pa: interpolate(&central_line, 0.0),
+            mid_pressure_pa: interpolate_held(&central_line, 0.0),
             mean_pressure_pa: mean,
             concentration_factor: if mean > 0.0 { max_pressure / mean } else { 0.0 },
             contact_length_m: contact_length,
@@ -382,19 +383,6 @@ impl RollerRacewayContact {
             solve_time_s: start.elapsed().as_secs_f64(),
             central_line: vec![(-half, p_max), (half, p_max)],
             map: None,
-        }
-    }
-}
-
-/// Linear interpolation in a table sorted by x (end values held).
-fn interpolate(table: &[(f64, f64)], x: f64) -> f64 {
-    let k = table.partition_point(|p| p.0 <= x);
-    match k {
-        0 => table.first().map_or(0.0, |p| p.1),
-        k if k >= table.len() => table.last().map_or(0.0, |p| p.1),
-        k => {
-            let (a, b) = (table[k - 1], table[k]);
-            a.1 + (b.1 - a.1) * (x - a.0) / (b.0 - a.0)
         }
     }
 }

@@ -90,16 +90,7 @@ impl SpeedLaw {
 /// Value at `t` of the piecewise-linear function through `pts` (constant beyond the ends; 0
 /// for no points).
 pub fn piecewise_linear(pts: &[(f64, f64)], t: f64) -> f64 {
-    let Some(first) = pts.first() else { return 0.0 };
-    if t <= first.0 {
-        return first.1;
-    }
-    for w in pts.windows(2) {
-        if t <= w[1].0 {
-            return w[0].1 + (w[1].1 - w[0].1) * (t - w[0].0) / (w[1].0 - w[0].0);
-        }
-    }
-    pts[pts.len() - 1].1
+    rolldyn_numerics::table::interpolate_held(pts, t)
 }
 
 /// ∫₀ᵗ of the piecewise-linear function through `pts` (constant beyond the ends).

@@ -23,6 +23,7 @@ pub mod maximize1d;
 pub mod newton2d;
 pub mod root1d;
 pub mod step;
+pub mod table;
 pub mod vector_copies;
 
 pub use newton2d::{Damping, Newton2dOptions, Newton2dOutcome, Newton2dStatus, Sample, solve_2d};

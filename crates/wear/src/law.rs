@@ -191,9 +191,7 @@ fn interpolate_within(
             max: last.0,
         });
     }
-    let upper = table.partition_point(|row| row.0 < x).max(1);
-    let (a, b) = (table[upper - 1], table[upper]);
-    Ok(a.1 + (b.1 - a.1) * (x - a.0) / (b.0 - a.0))
+    Ok(rolldyn_numerics::table::interpolate_held(table, x))
 }
 
 #[cfg(test)]

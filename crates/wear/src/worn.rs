@@ -8,24 +8,11 @@ use crate::surface::Surface;
 use rolldyn_geometry::{
     CylindricalRollerBearing, Profile, ProfileShape, RacewayWearMap, Ring, angle_bin_centre_rad,
 };
+use rolldyn_numerics::table::interpolate_held;
 
 /// Points of the worn roller generatrix per slice: the crown between slice centres stays
 /// resolved to a tenth of a slice.
 const PROFILE_POINTS_PER_SLICE: usize = 10;
-
-/// Linear interpolation of `values` at the abscissae `xs` (increasing), end values held.
-pub fn interpolate(xs: &[f64], values: &[f64], x: f64) -> f64 {
-    let n = xs.len();
-    if x <= xs[0] {
-        return values[0];
-    }
-    if x >= xs[n - 1] {
-        return values[n - 1];
-    }
-    let k = xs.partition_point(|&p| p <= x);
-    let t = (x - xs[k - 1]) / (xs[k] - xs[k - 1]);
-    values[k - 1] + t * (values[k] - values[k - 1])
-}
 
 /// The axial lines of a raceway wear map: the roller's slice centres, with a line of zero wear
 /// at each roller end (the raceway beyond the roller is not worn).
@@ -78,9 +65,14 @@ fn worn_roller_profile(profile: &Profile, positions: &[f64], depth: &[f64]) -> P
         .collect();
     xs.sort_by(f64::total_cmp);
     xs.dedup_by(|a, b| (*a - *b).abs() < 1e-12);
+    let wear: Vec<(f64, f64)> = positions
+        .iter()
+        .copied()
+        .zip(depth.iter().copied())
+        .collect();
     let points = xs
         .into_iter()
-        .map(|x| (x, profile.drop(x) + interpolate(positions, depth, x)))
+        .map(|x| (x, profile.drop(x) + interpolate_held(&wear, x)))
         .collect();
     Profile {
         shape: ProfileShape::Polyline { points },
@@ -132,15 +124,6 @@ pub fn worn_bearing(
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn interpolation_holds_the_ends() {
-        let xs = [0.0, 1.0, 2.0];
-        let v = [1.0, 3.0, 2.0];
-        assert_eq!(interpolate(&xs, &v, -1.0), 1.0);
-        assert_eq!(interpolate(&xs, &v, 0.5), 2.0);
-        assert_eq!(interpolate(&xs, &v, 5.0), 2.0);
-    }
 
     #[test]
     fn raceway_lines_close_with_the_roller_ends() {
