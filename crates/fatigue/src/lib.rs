@@ -1,8 +1,13 @@
-//! Cage high-cycle fatigue (seed 000 §2.5, §3.1.1.8): the cycle counting of stress histories
-//! ([`rainflow`]) and reading a history ([`history`]).
+//! Cage high-cycle fatigue (seed 000 §2.5, §3.1.1.8): the cage and its load stations
+//! ([`cage`]), the unit stress cases of a stress model ([`unit_stresses`]), the cycle counting
+//! of stress histories ([`rainflow`]) and reading a history ([`history`]).
 
+pub mod cage;
 pub mod history;
 pub mod rainflow;
+pub mod unit_stresses;
 
+pub use cage::{CageGeometry, Face, FilletPoint, PocketSide, STATIONS, Station};
 pub use history::read_history_csv;
 pub use rainflow::{Cycle, HistoryKind, rainflow, turning_points};
+pub use unit_stresses::{Stress, UnitStresses, principal_extremes, signed_von_mises};
