@@ -473,6 +473,8 @@ impl<'a> EndOnFace<'a> {
 pub(crate) struct EndForce {
     /// force on the roller, N
     pub force: V3,
+    /// contact point, m
+    pub point: V3,
     /// moment on the roller about its centre, N·m
     pub moment: V3,
     /// moment on the face body about its origin, N·m
@@ -571,6 +573,7 @@ pub(crate) fn end_force(
     let edge_distance = (dp.rho - face.rho_edge).abs();
     Some(EndForce {
         force: f,
+        point: dp.point,
         moment: cross(r_cp, f),
         body_moment: cross(r_body, scale(f, -1.0)),
         normal: q,

@@ -439,7 +439,7 @@ impl Model {
         )?;
         let land = LandGeometry::of(bearing, cage);
         let rm = 0.5 * bearing.pitch_diameter();
-        let h = roller.profile.chamfer_start().min(0.5 * roller.length);
+        let h = roller.bar_contact_half_span();
         let (s, c) = conditions.misalignment_azimuth_rad.sin_cos();
         let (sb, cb) = conditions.misalignment_rad.sin_cos();
         let axis_i = [sb * c, sb * s, cb];

@@ -88,6 +88,43 @@ pub struct RollerSnapshot<'a> {
     pub pocket_face_power_w: &'a [f64],
 }
 
+/// A contact force on the cage and its point of application (inertial frame).
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct PointForce {
+    /// force on the cage, N (zero without contact)
+    pub force_n: V3,
+    /// point of application, m
+    pub point_m: V3,
+}
+
+/// The contact forces one roller puts on its pocket (the cage-load export, SPEC §7.2).
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct PocketLoads {
+    /// roller ↔ bar at the evaluation points `[side −, end 0; side −, end 1; side +, end 0;
+    /// side +, end 1]` (side −: the bar at lower cage angle; ends at the two ends of the roller's
+    /// straight part)
+    pub bar: [PointForce; 4],
+    /// roller ends ↔ pocket faces, in the order of the model's pocket faces
+    pub end: [PointForce; 2],
+}
+
+/// The cage's loads and rigid-body motion at one output time (inertial frame).
+#[derive(Debug, Clone, Copy)]
+pub struct CageLoads<'a> {
+    /// unit axis of the cage
+    pub axis: V3,
+    /// acceleration of the cage centre, m/s²
+    pub acceleration_m_s2: V3,
+    /// angular velocity, rad/s
+    pub angular_velocity_rad_s: V3,
+    /// angular acceleration `I⁻¹(L̇ − ω × L)`, rad/s²
+    pub angular_acceleration_rad_s2: V3,
+    /// per pocket (index = roller)
+    pub pockets: &'a [PocketLoads],
+    /// cage ↔ guiding land at its two stations
+    pub land: [PointForce; 2],
+}
+
 /// State of the bearing at one output time.
 #[derive(Debug, Clone, Copy)]
 pub struct Snapshot<'a> {
@@ -120,6 +157,8 @@ pub struct Snapshot<'a> {
     pub cage_land_power_w: f64,
     /// rollers
     pub rollers: RollerSnapshot<'a>,
+    /// contact forces on the cage and its motion
+    pub cage_loads: CageLoads<'a>,
 }
 
 /// Summary of one cage revolution (seed 000 Table 3.2 columns that this issue covers).

@@ -13,8 +13,8 @@ use crate::layout::{
 };
 use crate::model::{Model, RacewayTraction};
 use crate::output::{
-    ContactSnapshot, OutputSink, RevolutionSummary, RollerSnapshot, RunSummary, Snapshot,
-    SnapshotBuffers,
+    CageLoads, ContactSnapshot, OutputSink, RevolutionSummary, RollerSnapshot, RunSummary,
+    Snapshot, SnapshotBuffers,
 };
 use crate::parameters::ContactParameters;
 use crate::rhs::{Diagnostics, Tables, axisymmetric_omega, rhs};
@@ -22,7 +22,7 @@ use crate::rosenbrock::{JacobianBlock, RosenbrockW};
 use crate::settings::{DynamicsSettings, IntegratorMethod, IntegratorSettings, VelocityErrorScale};
 use crate::stepper::Stepper;
 use crate::summary::{SlidingMaxima, StepValues, Window};
-use crate::vec3::{V3, dot, unit_or};
+use crate::vec3::{V3, cross, dot, sub, unit_or};
 use rolldyn_geometry::CylindricalRollerBearing;
 use rolldyn_lubrication::{SlipSearch, scuffing::scuffing_check};
 use std::f64::consts::TAU;
@@ -657,6 +657,7 @@ impl Simulation {
                 pocket_face_force_n: &d.pocket,
                 pocket_face_power_w: &d.pocket_power,
             },
+            cage_loads: cage_loads(m, y, &self.scratch_dy, d),
         };
         sink.sample(t, &snapshot);
     }
@@ -800,6 +801,25 @@ impl Simulation {
         self.ig = ig;
         self.tr = tr;
         Ok(note)
+    }
+}
+/// The cage's contact forces and rigid-body motion at the state `y` with derivative `dy`
+/// (the cage-load export, SPEC §7.2): `v̇` from `dy`, `ω` from `L`, and `α = I⁻¹(L̇ − ω × L)`
+/// (Euler's equation of the axisymmetric body in the inertial frame).
+fn cage_loads<'a>(m: &Model, y: &[f64], dy: &[f64], d: &'a Diagnostics) -> CageLoads<'a> {
+    let ci = m.layout.cage();
+    let axis = unit_or(read3(y, ci + cage::AXIS), [0.0, 0.0, 1.0]);
+    let l = read3(y, ci + cage::MOMENTUM);
+    let omega = axisymmetric_omega(l, axis, m.ia_c, m.it_c);
+    let l_dot = read3(dy, ci + cage::MOMENTUM);
+    let alpha = axisymmetric_omega(sub(l_dot, cross(omega, l)), axis, m.ia_c, m.it_c);
+    CageLoads {
+        axis,
+        acceleration_m_s2: read3(dy, ci + cage::VELOCITY),
+        angular_velocity_rad_s: omega,
+        angular_acceleration_rad_s2: alpha,
+        pockets: &d.pocket_loads,
+        land: d.land_loads,
     }
 }
 

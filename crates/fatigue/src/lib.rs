@@ -4,10 +4,14 @@
 
 pub mod cage;
 pub mod history;
+pub mod loads;
 pub mod rainflow;
+pub mod recorder;
 pub mod unit_stresses;
 
 pub use cage::{CageGeometry, Face, FilletPoint, PocketSide, STATIONS, Station};
 pub use history::read_history_csv;
+pub use loads::{CageLoadExport, ContactKind, ContactLoad, ExportHeader, LoadSet};
 pub use rainflow::{Cycle, HistoryKind, rainflow, turning_points};
+pub use recorder::{CageLoadRecorder, SETS_PER_REVOLUTION, export_output_step};
 pub use unit_stresses::{Stress, UnitStresses, principal_extremes, signed_von_mises};

@@ -48,6 +48,12 @@ pub struct SliceStack {
 }
 
 impl Roller {
+    /// Distance from the roller's mid-plane of the two points where the dynamics evaluates the
+    /// roller ↔ cage-bar contact: the ends of the straight part (SPEC §1.5 "bone-shaped" scar), m.
+    pub fn bar_contact_half_span(&self) -> f64 {
+        self.profile.chamfer_start().min(0.5 * self.length)
+    }
+
     /// Mass properties of the roller body from its profile and density (Simpson rule, 400
     /// intervals: the chamfers are resolved to < 0.1 % of the mass).
     pub fn computed_mass_properties(&self) -> MassProperties {

@@ -7,6 +7,7 @@ use super::diagnostics::{Violation, note};
 use crate::kinematics::RollerKinematics;
 use crate::land::LandKinematics;
 use crate::model::Model;
+use crate::output::PointForce;
 use crate::vec3::{V3, add, axpy, cross, dot, norm, perp, power, scale, sub, unit_or};
 use rolldyn_contact::damping::SliceDamping;
 
@@ -146,6 +147,10 @@ pub(super) fn bar_contacts(
             roller.moment = add(roller.moment, cross(r_cp, fc));
             cage_wrench.force = sub(cage_wrench.force, fc);
             cage_wrench.moment = sub(cage_wrench.moment, cross(sub(cp, cage.centre), fc));
+            sums.points[2 * k + i] = PointForce {
+                force_n: scale(fc, -1.0),
+                point_m: cp,
+            };
             sums.normal += qn;
             sums.power += mu * qn * vs;
             sums.sliding += qn * vs;
@@ -155,9 +160,11 @@ pub(super) fn bar_contacts(
 }
 
 /// Sums of one roller's bar contacts: normal force, friction power and the force-weighted
-/// sliding speed (the speed of the friction law).
+/// sliding speed (the speed of the friction law), and the force of each contact point on the
+/// cage ([`PocketLoads::bar`](crate::output::PocketLoads)).
 #[derive(Debug, Clone, Copy, Default)]
 pub(super) struct BarSums {
+    pub points: [PointForce; 4],
     pub normal: f64,
     pub power: f64,
     /// Σ Q v_s, N·m/s
@@ -166,16 +173,18 @@ pub(super) struct BarSums {
 
 /// Cage ↔ guiding land ([`Model::land_model`]), two stations at the quarter points of the land
 /// width. Adds the force and moment to the cage and, for an inner-ring land, the reaction to
-/// the inner ring; returns the normal force and the power.
+/// the inner ring; returns the normal force, the power and the force of each station on the
+/// cage.
 pub(super) fn land_contact(
     model: &Model,
     bodies: &Bodies,
     cage_wrench: &mut Wrench,
     f_inner: &mut V3,
     violation: &mut Option<Violation>,
-) -> (f64, f64) {
+) -> (f64, f64, [PointForce; 2]) {
+    let mut loads = [PointForce::default(); 2];
     let Some(land) = model.land else {
-        return (0.0, 0.0);
+        return (0.0, 0.0, loads);
     };
     let ring = if land.inner {
         &bodies.inner
@@ -184,7 +193,10 @@ pub(super) fn land_contact(
     };
     let cage = &bodies.cage;
     let (mut force, mut power) = (0.0, 0.0);
-    for zeta in [-0.25 * land.width, 0.25 * land.width] {
+    for (station, zeta) in [-0.25 * land.width, 0.25 * land.width]
+        .into_iter()
+        .enumerate()
+    {
         let k = LandKinematics {
             land_axis: ring.axis,
             land_center: axpy(ring.o, zeta, ring.axis),
@@ -219,7 +231,11 @@ pub(super) fn land_contact(
             }
             force += lf.normal_force_n;
             power += lf.power_w;
+            loads[station] = PointForce {
+                force_n: f,
+                point_m: lf.point_m,
+            };
         }
     }
-    (force, power)
+    (force, power, loads)
 }

@@ -3,6 +3,7 @@
 
 use super::Scratch;
 use crate::ends::EndContactRegime;
+use crate::output::{PocketLoads, PointForce};
 use rolldyn_lubrication::ContactState;
 
 /// Per-roller contact quantities of one raceway (struct of arrays). Speeds, film, Λ and μ are
@@ -154,6 +155,10 @@ pub(crate) struct Diagnostics {
     pub pocket: Vec<f64>,
     /// friction power of the pocket-face contacts per roller, W
     pub pocket_power: Vec<f64>,
+    /// contact forces on the cage per pocket (index = roller)
+    pub pocket_loads: Vec<PocketLoads>,
+    /// cage–land force at each station
+    pub land_loads: [PointForce; 2],
     /// cage–land normal force (sum of stations), N
     pub land_force: f64,
     pub land_power: f64,
@@ -183,6 +188,8 @@ impl Diagnostics {
             rib_regime: vec![EndContactRegime::None; z],
             pocket: vec![0.0; z],
             pocket_power: vec![0.0; z],
+            pocket_loads: vec![PocketLoads::default(); z],
+            land_loads: [PointForce::default(); 2],
             land_force: 0.0,
             land_power: 0.0,
             inner_speed: 0.0,

@@ -116,7 +116,7 @@ pub(crate) fn rhs(
         );
     }
     raceway_forces(model, &bodies, diag, &mut f_inner, tables);
-    (diag.land_force, diag.land_power) = cage::land_contact(
+    (diag.land_force, diag.land_power, diag.land_loads) = cage::land_contact(
         model,
         &bodies,
         &mut cage_wrench,
@@ -163,6 +163,7 @@ fn roller_contacts(
         (&mut roller, cage_wrench),
         violation,
     );
+    diag.pocket_loads[j].bar = bar.points;
     diag.bar[j] = bar.normal;
     diag.bar_power[j] = bar.power;
     diag.bar_sliding[j] = if bar.normal > 0.0 {
@@ -195,7 +196,7 @@ fn roller_contacts(
         diag.rib_ring_radius[j] = f64::NAN;
         diag.rib_mu[j] = 0.0;
     }
-    (diag.pocket[j], diag.pocket_power[j]) = roller_ends::pocket_contacts(
+    let pocket = roller_ends::pocket_contacts(
         model,
         faces,
         j,
@@ -204,6 +205,9 @@ fn roller_contacts(
         (&mut roller, cage_wrench),
         violation,
     );
+    diag.pocket[j] = pocket.normal;
+    diag.pocket_power[j] = pocket.power;
+    diag.pocket_loads[j].end = pocket.points;
     sc.wrench[j] = roller;
 }
 

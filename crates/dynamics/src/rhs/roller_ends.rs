@@ -8,7 +8,8 @@ use super::diagnostics::{Violation, note};
 use crate::ends::{BodyKin, EndContactRegime, EndForce, EndLubrication, ReachColumns, end_force};
 use crate::kinematics::RollerKinematics;
 use crate::model::Model;
-use crate::vec3::{V3, add, sub};
+use crate::output::PointForce;
+use crate::vec3::{V3, add, scale, sub};
 
 /// A ring as a carrier of ribs: its kinematics, the lubrication of its rib contacts, and whether
 /// it is the inner ring.
@@ -184,7 +185,7 @@ pub(super) fn rib_contacts(
 }
 
 /// Roller `j`'s ends ↔ the faces of its cage pocket: adds the forces to the roller and their
-/// reaction to the cage; returns the normal force and the friction power.
+/// reaction to the cage.
 #[inline(always)]
 pub(super) fn pocket_contacts(
     model: &Model,
@@ -194,14 +195,14 @@ pub(super) fn pocket_contacts(
     reach: &[ReachColumns; 3],
     (roller, cage): (&mut Wrench, &mut Wrench),
     violation: &mut Option<Violation>,
-) -> (f64, f64) {
-    let (mut normal, mut power) = (0.0, 0.0);
+) -> PocketSums {
+    let mut sums = PocketSums::default();
     if !model.params.roller_end_cage.enabled {
-        return (normal, power);
+        return sums;
     }
     let ends = &model.ends;
     let reach = reach[2].get(j);
-    for face in &ends.pocket {
+    for (k, face) in ends.pocket.iter().enumerate() {
         if reach.bound(face, &ends.end) <= 0.0 {
             continue;
         }
@@ -222,8 +223,21 @@ pub(super) fn pocket_contacts(
         apply(&ef, roller);
         cage.force = sub(cage.force, ef.force);
         cage.moment = add(cage.moment, ef.body_moment);
-        normal += ef.normal;
-        power += ef.mu * ef.normal * ef.sliding;
+        sums.normal += ef.normal;
+        sums.power += ef.mu * ef.normal * ef.sliding;
+        sums.points[k] = PointForce {
+            force_n: scale(ef.force, -1.0),
+            point_m: ef.point,
+        };
     }
-    (normal, power)
+    sums
+}
+
+/// One roller's pocket-face contacts: normal force, friction power and the force of each face's
+/// contact on the cage.
+#[derive(Debug, Clone, Copy, Default)]
+pub(super) struct PocketSums {
+    pub normal: f64,
+    pub power: f64,
+    pub points: [PointForce; 2],
 }
