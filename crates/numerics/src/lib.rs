@@ -22,6 +22,7 @@ pub mod hash;
 pub mod maximize1d;
 pub mod newton2d;
 pub mod root1d;
+pub mod skyline;
 pub mod step;
 pub mod table;
 pub mod vector_copies;
