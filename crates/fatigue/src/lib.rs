@@ -3,8 +3,12 @@
 //! of stress histories ([`rainflow`]) and reading a history ([`history`]).
 
 pub mod cage;
+pub mod damage;
 pub mod history;
+pub mod mean_stress;
+pub mod plots;
 pub mod rainflow;
+pub mod sn;
 pub mod unit_stresses;
 
 pub use cage::{CageGeometry, Face, FilletPoint, PocketSide, STATIONS, Station};
