@@ -232,18 +232,19 @@ impl SnCurve {
         }
     }
 
-    /// The segment whose line applies at lg N = `lg_n`: its first point in (lg N, lg σ_a) and
-    /// its slope (the first segment on the low-cycle side).
-    fn segment_at(&self, lg_n: f64) -> ((f64, f64), f64) {
-        let n = self.points.len();
-        let i = (1..n - 1)
-            .take_while(|&i| self.points[i].0.log10() <= lg_n)
+    /// Segment `i` (from point `i` to `i + 1`): its first point in (lg N, lg σ_a) and its slope.
+    fn segment(&self, i: usize) -> ((f64, f64), f64) {
+        let (a, b) = (&self.points[i], &self.points[i + 1]);
+        (log_point(a), log_slope(a, b))
+    }
+
+    /// The segment that applies: it starts at the last interior point that `passed` — the
+    /// first segment when none has (the low-cycle side).
+    fn segment_index(&self, passed: impl Fn(&(f64, f64)) -> bool) -> usize {
+        (1..self.points.len() - 1)
+            .take_while(|&i| passed(&self.points[i]))
             .last()
-            .unwrap_or(0);
-        (
-            log_point(&self.points[i]),
-            log_slope(&self.points[i], &self.points[i + 1]),
-        )
+            .unwrap_or(0)
     }
 
     /// σ_a of the base curve at `cycles` (linear in lg N, lg σ_a; beyond the knee flat for
@@ -255,7 +256,7 @@ impl SnCurve {
             let slope = self.slope_below_knee().unwrap_or(0.0);
             return knee_s * 10f64.powf(slope * (lg_n - knee_n.log10()));
         }
-        let ((x0, y0), slope) = self.segment_at(lg_n);
+        let ((x0, y0), slope) = self.segment(self.segment_index(|p| p.0 <= cycles));
         10f64.powf(y0 + slope * (lg_n - x0))
     }
 
@@ -271,21 +272,17 @@ impl SnCurve {
         if amplitude <= 0.0 {
             return f64::INFINITY;
         }
-        let lg_s = (amplitude * self.settings.knock_down()).log10();
+        let base = amplitude * self.settings.knock_down();
+        let lg_s = base.log10();
         let (knee_n, knee_s) = self.knee();
-        if lg_s < knee_s.log10() {
+        if base < knee_s {
             return match self.slope_below_knee() {
                 None => f64::INFINITY,
                 Some(slope) => 10f64.powf(knee_n.log10() + (lg_s - knee_s.log10()) / slope),
             };
         }
-        // the segment whose amplitude range holds σ: σ decreases along the table
-        let i = (1..self.points.len() - 1)
-            .take_while(|&i| self.points[i].1.log10() >= lg_s)
-            .last()
-            .unwrap_or(0);
-        let (x0, y0) = log_point(&self.points[i]);
-        let slope = log_slope(&self.points[i], &self.points[i + 1]);
+        // σ_a decreases along the table
+        let ((x0, y0), slope) = self.segment(self.segment_index(|p| p.1 >= base));
         10f64.powf(x0 + (lg_s - y0) / slope)
     }
 }
