@@ -53,7 +53,7 @@ pub fn sn_diagram(path: &Path, curve: &SnCurve, damage: &DamageBreakdown) -> Res
     let (damaging, harmless): (Vec<_>, Vec<_>) = damage.cycles.iter().partition(|c| c.damage > 0.0);
     let damaging: Vec<(f64, f64)> = damaging.into_iter().map(at).collect();
     let harmless: Vec<(f64, f64)> = harmless.into_iter().map(at).collect();
-    let knock_down = format!("allowable (÷{:.3})", curve.settings.knock_down());
+    let knock_down = format!("allowable (÷{:.3})", curve.settings().knock_down());
     log_log_plot(
         path,
         &Labels {

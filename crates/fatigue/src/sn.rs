@@ -82,11 +82,12 @@ pub enum SnError {
     Settings(String),
 }
 
-/// A fully reversed S–N curve: (N, σ_a [Pa]) points with N increasing and σ_a decreasing.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+/// A fully reversed S–N curve: (N, σ_a [Pa]) points with N increasing and σ_a decreasing (built
+/// only through the checking constructors, so it is not deserialisable).
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct SnCurve {
     points: Vec<(f64, f64)>,
-    pub settings: SnSettings,
+    settings: SnSettings,
 }
 
 /// The first point of `points` (by index) that breaks the rules of an S–N table, and why.
@@ -209,6 +210,11 @@ impl SnCurve {
             }),
             None => Self::new(points),
         }
+    }
+
+    /// The knock-downs and the knee treatment.
+    pub fn settings(&self) -> &SnSettings {
+        &self.settings
     }
 
     /// The table, `(N, σ_a [Pa])`.

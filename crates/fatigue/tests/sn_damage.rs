@@ -46,7 +46,7 @@ fn default_curve_passes_the_seed_point_with_the_aisi_4340_slope() {
     assert_close!(s[3], 480.0 * MPA);
     assert_close!(s[0], 942.63 * MPA, 1e-5);
     assert_close!(s[4], 383.30 * MPA, 1e-5);
-    assert_eq!(curve.settings, SnSettings::default());
+    assert_eq!(curve.settings(), &SnSettings::default());
     // the seed's lg 1.5 shift: 320 MPa allowable at 10⁶ cycles
     assert_close!(curve.allowable_amplitude(1e6), 320.0 * MPA);
 }
