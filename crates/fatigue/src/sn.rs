@@ -212,6 +212,17 @@ impl SnCurve {
         }
     }
 
+    /// The table as CSV text in the form [`Self::from_csv_text`] reads (σ_a in MPa).
+    pub fn to_csv_text(&self) -> String {
+        let rows = self
+            .points
+            .iter()
+            .map(|(n, s)| format!("{n:e},{}\n", s / MPA));
+        std::iter::once("N,sigma_a_MPa\n".to_string())
+            .chain(rows)
+            .collect()
+    }
+
     /// The knock-downs and the knee treatment.
     pub fn settings(&self) -> &SnSettings {
         &self.settings
