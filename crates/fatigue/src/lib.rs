@@ -3,11 +3,15 @@
 //! of stress histories ([`rainflow`]) and reading a history ([`history`]).
 
 pub mod cage;
+pub mod damage;
 pub mod frame;
 pub mod history;
 pub mod loads;
+pub mod mean_stress;
+pub mod plots;
 pub mod rainflow;
 pub mod recorder;
+pub mod sn;
 pub mod unit_stresses;
 
 pub use cage::{CageGeometry, Face, FilletPoint, PocketSide, STATIONS, Station};

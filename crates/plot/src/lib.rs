@@ -1,5 +1,6 @@
 //! Self-contained SVG plots (no fonts or scripts fetched at view time) for rolldyn results:
-//! line plots of one or more series and heat maps of fields on a regular grid.
+//! line plots of one or more series, log–log plots of curves and scattered points, and heat maps
+//! of fields on a regular grid.
 
 use plotters::prelude::*;
 use std::path::Path;
@@ -179,4 +180,78 @@ fn ramp(t: f64) -> RGBColor {
     let f = ((t - ta) / (tb - ta)).clamp(0.0, 1.0);
     let mix = |u: u8, v: u8| (u as f64 + f * (v as f64 - u as f64)).round() as u8;
     RGBColor(mix(a.0, b.0), mix(a.1, b.1), mix(a.2, b.2))
+}
+
+/// Bounds of the positive values widened by a factor 1.25 each way (for a logarithmic axis).
+fn log_bounds(values: impl Iterator<Item = f64>) -> (f64, f64) {
+    let (lo, hi) = bounds(values.filter(|v| *v > 0.0).map(f64::log10));
+    let pad = 1.25f64.log10();
+    (10f64.powf(lo - pad), 10f64.powf(hi + pad))
+}
+
+/// Writes a plot with logarithmic x and y axes to `path` (SVG): `lines` drawn as curves,
+/// `markers` as unconnected points (a scatter); non-positive values are left out.
+pub fn log_log_plot(
+    path: &Path,
+    labels: &Labels,
+    lines: &[Series],
+    markers: &[Series],
+) -> Result<(), PlotError> {
+    let root = SVGBackend::new(path, SIZE).into_drawing_area();
+    root.fill(&WHITE).map_err(|e| error(path, e))?;
+    let all = || lines.iter().chain(markers).flat_map(|s| s.points.iter());
+    let (x0, x1) = log_bounds(all().map(|p| p.0));
+    let (y0, y1) = log_bounds(all().map(|p| p.1));
+    let mut chart = ChartBuilder::on(&root)
+        .caption(labels.title, ("sans-serif", 22))
+        .margin(15)
+        .x_label_area_size(45)
+        .y_label_area_size(70)
+        .build_cartesian_2d((x0..x1).log_scale(), (y0..y1).log_scale())
+        .map_err(|e| error(path, e))?;
+    chart
+        .configure_mesh()
+        .x_label_formatter(&|x| format!("{x:e}"))
+        .y_label_formatter(&|y| format!("{y}"))
+        .x_desc(labels.x)
+        .y_desc(labels.y)
+        .draw()
+        .map_err(|e| error(path, e))?;
+    let positive = |s: &Series| -> Vec<(f64, f64)> {
+        s.points
+            .iter()
+            .copied()
+            .filter(|&(x, y)| x > 0.0 && y > 0.0 && x.is_finite() && y.is_finite())
+            .collect()
+    };
+    for (k, s) in lines.iter().enumerate() {
+        let color = Palette99::pick(k).to_rgba();
+        chart
+            .draw_series(LineSeries::new(positive(s), color.stroke_width(2)))
+            .map_err(|e| error(path, e))?
+            .label(s.label)
+            .legend(move |(x, y)| {
+                PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2))
+            });
+    }
+    for (k, s) in markers.iter().enumerate() {
+        let color = Palette99::pick(lines.len() + k).to_rgba();
+        chart
+            .draw_series(
+                positive(s)
+                    .into_iter()
+                    .map(|p| Circle::new(p, 3, color.filled())),
+            )
+            .map_err(|e| error(path, e))?
+            .label(s.label)
+            .legend(move |(x, y)| Circle::new((x + 10, y), 3, color.filled()));
+    }
+    chart
+        .configure_series_labels()
+        .position(SeriesLabelPosition::UpperRight)
+        .background_style(WHITE.mix(0.8))
+        .border_style(BLACK)
+        .draw()
+        .map_err(|e| error(path, e))?;
+    root.present().map_err(|e| error(path, e))
 }
