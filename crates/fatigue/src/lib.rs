@@ -4,6 +4,7 @@
 
 pub mod cage;
 pub mod history;
+pub mod inclusion;
 pub mod rainflow;
 pub mod unit_stresses;
 
