@@ -188,4 +188,74 @@ mod tests {
         );
         assert_eq!(g.single[0], g.single[1]);
     }
+
+    /// Oblate spheroid a₁ = a₂ = a > a₃ = c: I₁ = I₂ = 2πa²c/(a² − c²)^{3/2} [arccos(c/a)
+    /// − (c/a)(1 − c²/a²)^{1/2}] (Mura 1987 §11, the oblate spheroid).
+    #[test]
+    fn oblate_spheroid_closed_form() {
+        let (a, c) = (5.0, 1.0f64);
+        let g = integrals([a, a, c]);
+        let ratio = c / a;
+        let i1 = 2.0 * PI * a * a * c / (a * a - c * c).powf(1.5)
+            * (ratio.acos() - ratio * (1.0 - ratio * ratio).sqrt());
+        assert!(
+            (g.single[0] / i1 - 1.0).abs() < 1e-13,
+            "{} {i1}",
+            g.single[0]
+        );
+    }
+
+    /// Elliptic cylinder a₃ → ∞ (Mura 1987 §11): with t = a₂/(a₁ + a₂),
+    /// S₁₁₁₁ = [(a₂² + 2a₁a₂)/(a₁ + a₂)² + (1 − 2ν) t] / (2(1 − ν)),
+    /// S₁₁₂₂ = [a₂²/(a₁ + a₂)² − (1 − 2ν) t] / (2(1 − ν)), S₁₁₃₃ = ν t/(1 − ν),
+    /// S₁₂₁₂ = [(a₁² + a₂²)/(2(a₁ + a₂)²) + (1 − 2ν)/2] / (2(1 − ν)), S₃₁₃₁ = a₂/(2(a₁ + a₂)).
+    #[test]
+    fn elliptic_cylinder_limit() {
+        let (a1, a2, nu) = (1.0, 2.5, 0.3);
+        let s = EshelbyTensor::new([a1, a2, 1e9], nu, &QuadratureSettings::default());
+        let sum = a1 + a2;
+        let t = a2 / sum;
+        let k = 1.0 / (2.0 * (1.0 - nu));
+        let expected = [
+            k * ((a2 * a2 + 2.0 * a1 * a2) / (sum * sum) + (1.0 - 2.0 * nu) * t),
+            k * (a2 * a2 / (sum * sum) - (1.0 - 2.0 * nu) * t),
+            nu * t / (1.0 - nu),
+            k * ((a1 * a1 + a2 * a2) / (2.0 * sum * sum) + 0.5 * (1.0 - 2.0 * nu)),
+            a2 / (2.0 * sum),
+        ];
+        let got = [
+            s.normal[0][0],
+            s.normal[0][1],
+            s.normal[0][2],
+            s.shear[0],
+            s.shear[2],
+        ];
+        for i in 0..5 {
+            assert!((got[i] - expected[i]).abs() < 1e-8, "{got:?} {expected:?}");
+        }
+    }
+
+    /// Nearly equal axes give the sphere's values: no division by a difference of axes.
+    #[test]
+    fn nearly_spherical_is_continuous() {
+        let g = integrals([1.0, 1.0 + 1e-9, 1.0 - 1e-9]);
+        for i in 0..3 {
+            assert!((g.single[i] / (4.0 * PI / 3.0) - 1.0).abs() < 1e-8);
+            for j in 0..3 {
+                assert!((g.pair[i][j] * 5.0 / (4.0 * PI) - 1.0).abs() < 1e-8);
+            }
+        }
+    }
+
+    /// Extreme aspect ratio (10⁶): the identities (11.19) still hold to 1e-12.
+    #[test]
+    fn needle_identities() {
+        let a = [1e-6, 2e-6, 1.0];
+        let g = integrals(a);
+        let sum: f64 = g.single.iter().sum();
+        assert!((sum / (4.0 * PI) - 1.0).abs() < 1e-12, "{sum}");
+        let a2 = a.map(|x| x * x);
+        let lhs = 3.0 * a2[2] * g.pair[2][2] + a2[0] * g.pair[2][0] + a2[1] * g.pair[2][1];
+        assert!((lhs / (3.0 * g.single[2]) - 1.0).abs() < 1e-12);
+    }
 }
