@@ -220,6 +220,10 @@ fn debonded_poles_open_in_tension_only() {
     assert!(tension[2].abs() < 1e-3 && stress_at(&bonded, pole, uniaxial(2, 100e6))[2] > 100e6);
     let compression = stress_at(&debonded, pole, uniaxial(2, -100e6));
     assert_eq!(compression, stress_at(&bonded, pole, uniaxial(2, -100e6)));
+    let maps = &debonded.points[4];
+    assert_eq!(maps.point.normal, pole);
+    assert_eq!(maps.contact_pressure(&uniaxial(2, 100e6)), 0.0);
+    assert!((maps.contact_pressure(&uniaxial(2, -100e6)) + compression[2]).abs() < 1e-3);
 }
 
 #[test]

@@ -43,4 +43,11 @@ impl PointMaps {
             bonded
         }
     }
+
+    /// Interface contact pressure −n·σ·n of the bonded solution where it is compressive, 0
+    /// where the interface is open (the quantity of seed 000 Fig. 3.69), Pa.
+    pub fn contact_pressure(&self, remote: &[f64; 6]) -> f64 {
+        let bonded = mandel::apply(&self.bonded, remote);
+        (-normal_traction(&bonded, self.point.normal)).max(0.0)
+    }
 }
