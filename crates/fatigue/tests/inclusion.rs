@@ -310,3 +310,24 @@ fn bonded_interface_conditions_hold_on_the_general_ellipsoid() {
         }
     }
 }
+
+/// The cavity maps of a general ellipsoid leave its surface traction-free (σ_out n = 0) at
+/// every sample point.
+#[test]
+fn cavity_surface_is_traction_free_on_the_general_ellipsoid() {
+    let model = InclusionModel::new(&InclusionSettings::default(), STEEL_E, STEEL_NU).unwrap();
+    let remote = [120e6, -35e6, 210e6, 40e6, -25e6, 60e6];
+    for maps in &model.points {
+        let stress = tensor(&maps.matrix_stress(&remote, Interface::Debonded));
+        let cavity: [f64; 6] =
+            std::array::from_fn(|i| (0..6).map(|k| maps.cavity[i][k] * remote[k]).sum::<f64>());
+        let cavity = tensor(&cavity);
+        let n = maps.point.normal;
+        for i in 0..3 {
+            let traction: f64 = (0..3).map(|j| cavity[i][j] * n[j]).sum();
+            assert!(traction.abs() < 1e-6 * 210e6, "{traction} at {n:?}");
+        }
+        let open = stress == cavity;
+        assert!(open || contract(n, &stress, n) <= 0.0);
+    }
+}
