@@ -323,8 +323,8 @@ fn cavity_surface_is_traction_free_on_the_general_ellipsoid() {
             std::array::from_fn(|i| (0..6).map(|k| maps.cavity[i][k] * remote[k]).sum::<f64>());
         let cavity = tensor(&cavity);
         let n = maps.point.normal;
-        for i in 0..3 {
-            let traction: f64 = (0..3).map(|j| cavity[i][j] * n[j]).sum();
+        for row in &cavity {
+            let traction: f64 = (0..3).map(|j| row[j] * n[j]).sum();
             assert!(traction.abs() < 1e-6 * 210e6, "{traction} at {n:?}");
         }
         let open = stress == cavity;

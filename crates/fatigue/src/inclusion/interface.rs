@@ -3,7 +3,7 @@
 //! the form a ⊗ n across the interface (unit outward normal n), and traction continuity fixes a
 //! (Hill 1961; Mura 1987 §11, the jump conditions at the boundary of an inclusion):
 //!
-//! [u_i,j] = a_i n_j,  a = −N(n) (C : ε*) n,  N = K⁻¹, K_ik = C_ijkl n_j n_l.
+//! ⟦u_i,j⟧ = a_i n_j,  a = −N(n) (C : ε*) n,  N = K⁻¹, K_ik = C_ijkl n_j n_l.
 //!
 //! For the isotropic matrix N_ik = [δ_ik − n_i n_k / (2(1 − ν))] / μ. The matrix stress outside
 //! is σ_out = σ⁰ + C (S ε* + sym(a ⊗ n)): a linear map of σ⁰ at every point of the surface.
