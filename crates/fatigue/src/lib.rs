@@ -6,6 +6,7 @@ pub mod cage;
 pub mod damage;
 pub mod frame;
 pub mod history;
+pub mod inclusion;
 pub mod loads;
 pub mod mean_stress;
 pub mod plots;

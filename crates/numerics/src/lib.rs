@@ -8,6 +8,7 @@
 //! * [`dense_lu`]: dense LU factorisation with partial pivoting for small systems.
 //! * [`brent`]: Brent's root finder for a caller that already holds a sign-change bracket
 //!   and its end values ([`root1d`] searches the bracket itself and can use slopes).
+//! * [`gauss_legendre`]: composite 8-point Gauss–Legendre quadrature.
 //! * [`maximize1d`]: golden-section search and Brent's method for the maximum of a function
 //!   of one variable.
 //! * [`step`]: the ADAMS cubic STEP ramp (SPEC §3.4), with the degenerate span defined.
@@ -18,6 +19,7 @@
 pub mod brent;
 pub mod dense_lu;
 pub mod fastmath;
+pub mod gauss_legendre;
 pub mod hash;
 pub mod maximize1d;
 pub mod newton2d;

@@ -56,31 +56,8 @@ fn graded<K: LineKernel + ?Sized>(k: &K, a: f64, sign: f64) -> f64 {
     total
 }
 
-/// Composite 8-point Gauss–Legendre.
-pub(crate) fn gauss_panels(f: impl Fn(f64) -> f64, a: f64, b: f64, panels: usize) -> f64 {
-    const X: [f64; 4] = [
-        0.183_434_642_495_649_8,
-        0.525_532_409_916_329,
-        0.796_666_477_413_626_7,
-        0.960_289_856_497_536_3,
-    ];
-    const W: [f64; 4] = [
-        0.362_683_783_378_362,
-        0.313_706_645_877_887_3,
-        0.222_381_034_453_374_5,
-        0.101_228_536_290_376_3,
-    ];
-    let h = (b - a) / panels as f64;
-    let mut s = 0.0;
-    for p in 0..panels {
-        let c = a + (p as f64 + 0.5) * h;
-        let r = 0.5 * h;
-        for k in 0..4 {
-            s += W[k] * (f(c - r * X[k]) + f(c + r * X[k]));
-        }
-    }
-    s * 0.5 * h
-}
+/// Composite 8-point Gauss–Legendre (`rolldyn_numerics::gauss_legendre`).
+pub(crate) use rolldyn_numerics::gauss_legendre::integrate as gauss_panels;
 
 /// Sum of kernels (e.g. plate + roller).
 pub struct KernelSum<'a>(pub Vec<&'a dyn LineKernel>);
