@@ -12,7 +12,10 @@ pub mod mean_stress;
 pub mod plots;
 pub mod rainflow;
 pub mod recorder;
+pub mod report;
 pub mod sn;
+pub mod study;
+pub mod superpose;
 pub mod unit_stresses;
 
 pub use cage::{CageGeometry, Face, FilletPoint, PocketSide, STATIONS, Station};

@@ -4,7 +4,8 @@
 //! not an interpolation between two.
 
 use crate::loads::{ContactKind, ContactLoad, LoadSet};
-use rolldyn_dynamics::output::{OutputSink, PointForce, Snapshot};
+use crate::study::RevolutionMaxima;
+use rolldyn_dynamics::output::{OutputSink, PointForce, RevolutionSummary, Snapshot};
 use std::collections::VecDeque;
 use std::f64::consts::TAU;
 
@@ -24,10 +25,12 @@ struct Sample {
     set: LoadSet,
 }
 
-/// An output sink keeping the samples of the last cage revolution (and a little more).
+/// An output sink keeping the samples of the last cage revolution (and a little more) and the
+/// largest contact forces of the revolutions it saw end.
 #[derive(Debug, Default)]
 pub struct CageLoadRecorder {
     samples: VecDeque<Sample>,
+    maxima: Option<RevolutionMaxima>,
 }
 
 /// The frame of the cage: unit vectors `e_x` (through pocket 0), `e_y`, `e_z` (the cage axis)
@@ -133,9 +136,41 @@ impl OutputSink for CageLoadRecorder {
             set: load_set(s),
         });
     }
+
+    fn revolution(&mut self, v: &RevolutionSummary) {
+        let seen = RevolutionMaxima {
+            max_cage_land_force_n: v.max_cage_land_force_n,
+            max_roller_cage_force_n: v.max_roller_cage_force_n,
+            max_roller_raceway_force_n: v
+                .max_inner_contact_force_n
+                .max(v.max_outer_contact_force_n),
+        };
+        self.maxima = Some(match self.maxima {
+            None => seen,
+            Some(m) => RevolutionMaxima {
+                max_cage_land_force_n: m.max_cage_land_force_n.max(seen.max_cage_land_force_n),
+                max_roller_cage_force_n: m
+                    .max_roller_cage_force_n
+                    .max(seen.max_roller_cage_force_n),
+                max_roller_raceway_force_n: m
+                    .max_roller_raceway_force_n
+                    .max(seen.max_roller_raceway_force_n),
+            },
+        });
+    }
 }
 
 impl CageLoadRecorder {
+    /// The largest contact forces of the revolutions that ended while recording (zeros when
+    /// none did: then the recorded samples' own figures are the export's).
+    pub fn maxima(&self) -> RevolutionMaxima {
+        self.maxima.unwrap_or(RevolutionMaxima {
+            max_cage_land_force_n: 0.0,
+            max_roller_cage_force_n: 0.0,
+            max_roller_raceway_force_n: 0.0,
+        })
+    }
+
     /// The 180 load sets of the last cage revolution, or why there are none: the run covered
     /// less than a revolution, or its samples are further apart than 2°.
     pub fn last_revolution(&self) -> Result<Vec<LoadSet>, String> {

@@ -1,0 +1,395 @@
+//! `rolldyn fatigue`: the life of a machined cage from one steady revolution of the dynamics
+//! (seed 000 §2.5; theory §10): load export → unit stresses → stress histories at the fillets →
+//! rainflow → S–N and Miner → life and critical location, and with an inclusion the life at the
+//! critical location with the inclusion's local stresses.
+
+use crate::cage::{CageGeometry, FilletPoint};
+use crate::damage::{DamageBreakdown, MeanStressSettings, life_hours, miner_damage};
+use crate::frame::{FrameSettings, fillet_factors};
+use crate::inclusion::{InclusionModel, InclusionSettings};
+use crate::loads::{CageLoadExport, ContactKind, ExportHeader, FORMAT, VERSION};
+use crate::rainflow::{Cycle, HistoryKind, rainflow};
+use crate::recorder::{CageLoadRecorder, export_output_step};
+use crate::sn::SnCurve;
+use crate::unit_stresses::{Stress, UnitStresses, signed_von_mises};
+use rolldyn_geometry::CylindricalRollerBearing;
+use serde::Serialize;
+
+/// Which cage stress model.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum StressModelKind {
+    /// the embedded beam frame ([`crate::frame`])
+    Frame,
+    /// the gmsh + CalculiX solid model ([`crate::calculix`])
+    Calculix,
+}
+
+/// Knobs of a fatigue evaluation.
+#[derive(Debug, Clone)]
+pub struct FatigueSettings {
+    pub stress_model: StressModelKind,
+    /// cage revolutions simulated and discarded before the recorded one; default 8 (the cage
+    /// speed of the 2002834 model settles within 5)
+    pub settle_revolutions: u32,
+    /// output samples per 2° load set (each set is the nearest sample); default 4
+    pub samples_per_set: f64,
+    /// radius of the window-corner fillet, m; default 0.5 mm (ASSUMED: seed 000 §3.1.1.8 names
+    /// the fillet but not its radius)
+    pub fillet_radius_m: f64,
+    pub frame: FrameSettings,
+    pub sn: SnCurve,
+    pub mean_stress: MeanStressSettings,
+    /// the inclusion at the critical location, if any
+    pub inclusion: Option<InclusionSettings>,
+}
+
+impl Default for FatigueSettings {
+    fn default() -> Self {
+        Self {
+            stress_model: StressModelKind::Frame,
+            settle_revolutions: 8,
+            samples_per_set: 4.0,
+            fillet_radius_m: 0.5e-3,
+            frame: FrameSettings::default(),
+            sn: SnCurve::aisi_4340(),
+            mean_stress: MeanStressSettings::default(),
+            inclusion: None,
+        }
+    }
+}
+
+/// The cage of `bearing` as the stress models see it.
+pub fn cage_geometry(
+    bearing: &CylindricalRollerBearing,
+    fillet_radius_m: f64,
+) -> Result<CageGeometry, String> {
+    let cage = bearing
+        .cage
+        .as_ref()
+        .ok_or("cage fatigue needs a cage ([cage] in the model)")?;
+    let geometry = CageGeometry {
+        pockets: bearing.roller_count,
+        inner_radius: 0.5 * cage.inner_diameter,
+        outer_radius: 0.5 * cage.outer_diameter,
+        width: cage.width,
+        pocket_axial: cage.pocket_axial,
+        pocket_circumferential: cage.pocket_circumferential,
+        bar_contact_radius: 0.5 * cage.bar_contact_diameter,
+        fillet_radius: fillet_radius_m,
+        youngs_modulus: cage.material.youngs_modulus,
+        poisson_ratio: cage.material.poisson_ratio,
+        density: cage.material.density,
+    };
+    let problems = geometry.problems();
+    if problems.is_empty() {
+        Ok(geometry)
+    } else {
+        Err(format!("[cage]: {}", problems.join("; ")))
+    }
+}
+
+/// The largest contact forces of the recorded revolution (seed 000 Table 3.2 columns the
+/// correlations of V-27 use), N.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct RevolutionMaxima {
+    pub max_cage_land_force_n: f64,
+    pub max_roller_cage_force_n: f64,
+    pub max_roller_raceway_force_n: f64,
+}
+
+/// The fatigue of one fillet point.
+#[derive(Debug, Clone, Serialize)]
+pub struct PointFatigue {
+    pub location: String,
+    /// position of the fillet corner in cage coordinates, m
+    pub point_m: [f64; 3],
+    pub max_stress_pa: f64,
+    pub min_stress_pa: f64,
+    pub damage_per_revolution: f64,
+}
+
+/// The answer of a fatigue evaluation (`rolldyn fatigue --json`).
+#[derive(Debug, Clone, Serialize)]
+pub struct FatigueAnswer {
+    pub stress_model: StressModelKind,
+    pub load_sets: usize,
+    pub cage_speed_rpm: f64,
+    /// the fillet stress-concentration factors `[tension, in-plane bending]` (frame model)
+    pub stress_concentration: [f64; 2],
+    pub damage_per_revolution: f64,
+    /// cage revolutions to failure (∞ → null)
+    pub life_revolutions: f64,
+    pub life_hours: f64,
+    /// the fillet with the largest damage (or the largest |stress| when nothing is damaged)
+    pub critical_location: String,
+    pub critical_point_m: [f64; 3],
+    /// largest |signed von Mises| over the fillets and the revolution, Pa
+    pub max_stress_pa: f64,
+    /// allowable amplitude at the knee of the S–N curve over the largest equivalent amplitude at
+    /// the critical location: ≥ 1 means no damage (seed 000 §3.1.1.8 "stress margin")
+    pub endurance_margin: f64,
+    pub maxima: Option<RevolutionMaxima>,
+    pub inclusion_life_revolutions: Option<f64>,
+    pub inclusion_max_stress_pa: Option<f64>,
+    pub inclusion_location: Option<String>,
+    pub points: Vec<PointFatigue>,
+}
+
+/// Everything a fatigue evaluation computed, for the report files.
+pub struct FatigueResult {
+    pub answer: FatigueAnswer,
+    /// stress tensors at the critical location over the revolution
+    pub critical_history: Vec<Stress>,
+    pub critical_cycles: Vec<Cycle>,
+    pub critical_damage: DamageBreakdown,
+    pub cage_angle_deg: Vec<f64>,
+}
+
+/// The signed von Mises history of a tensor history.
+fn signed(history: &[Stress]) -> Vec<f64> {
+    history.iter().map(signed_von_mises).collect()
+}
+
+/// Rainflow and Miner of one periodic history.
+fn damage_of(history: &[f64], settings: &FatigueSettings) -> (Vec<Cycle>, DamageBreakdown) {
+    let cycles = rainflow(history, HistoryKind::Periodic);
+    let damage = miner_damage(&cycles, &settings.sn, &settings.mean_stress);
+    (cycles, damage)
+}
+
+/// The fatigue of the cage from its load export and unit stresses.
+pub fn evaluate(
+    unit: &UnitStresses,
+    export: &CageLoadExport,
+    maxima: Option<RevolutionMaxima>,
+    settings: &FatigueSettings,
+) -> Result<FatigueResult, String> {
+    if !unit.consistent() || unit.cage.pockets != export.header.cage.pockets {
+        return Err("the unit stresses do not belong to the exported cage".into());
+    }
+    let histories = crate::superpose::stress_histories(unit, export);
+    let points = FilletPoint::all(unit.cage.pockets);
+    let mut fatigue = Vec::with_capacity(points.len());
+    let mut worst = (0usize, f64::NEG_INFINITY, f64::NEG_INFINITY);
+    for (i, (p, h)) in points.iter().zip(&histories).enumerate() {
+        let s = signed(h);
+        let (_, d) = damage_of(&s, settings);
+        let max = s.iter().fold(f64::NEG_INFINITY, |a, &b| a.max(b));
+        let min = s.iter().fold(f64::INFINITY, |a, &b| a.min(b));
+        let peak = max.abs().max(min.abs());
+        if (d.damage_per_repeat, peak) > (worst.1, worst.2) {
+            worst = (i, d.damage_per_repeat, peak);
+        }
+        fatigue.push(PointFatigue {
+            location: p.label(),
+            point_m: p.corner(&unit.cage),
+            max_stress_pa: max,
+            min_stress_pa: min,
+            damage_per_revolution: d.damage_per_repeat,
+        });
+    }
+    let critical = worst.0;
+    let critical_signed = signed(&histories[critical]);
+    let (cycles, breakdown) = damage_of(&critical_signed, settings);
+    let max_stress = fatigue
+        .iter()
+        .map(|p| p.max_stress_pa.abs().max(p.min_stress_pa.abs()))
+        .fold(0.0, f64::max);
+    let largest_equivalent = breakdown
+        .cycles
+        .iter()
+        .map(|c| c.equivalent_amplitude_pa)
+        .fold(0.0, f64::max);
+    let (_, knee) = settings.sn.knee();
+    let endurance = knee / settings.sn.settings().knock_down();
+    let cage_speed_rpm = export.header.cage_speed_rpm;
+    let omega = cage_speed_rpm * std::f64::consts::TAU / 60.0;
+    let life = breakdown.life_repeats;
+    let mut answer = FatigueAnswer {
+        stress_model: settings.stress_model,
+        load_sets: export.sets.len(),
+        cage_speed_rpm,
+        stress_concentration: fillet_factors(&unit.cage, &settings.frame),
+        damage_per_revolution: breakdown.damage_per_repeat,
+        life_revolutions: life,
+        life_hours: life_hours(life, omega),
+        critical_location: fatigue[critical].location.clone(),
+        critical_point_m: fatigue[critical].point_m,
+        max_stress_pa: max_stress,
+        endurance_margin: endurance / largest_equivalent,
+        maxima,
+        inclusion_life_revolutions: None,
+        inclusion_max_stress_pa: None,
+        inclusion_location: None,
+        points: fatigue,
+    };
+    if let Some(inclusion) = &settings.inclusion {
+        inclusion_fatigue(
+            &unit.cage,
+            inclusion,
+            &histories[critical],
+            settings,
+            &mut answer,
+        )?;
+    }
+    Ok(FatigueResult {
+        answer,
+        critical_history: histories[critical].clone(),
+        critical_cycles: cycles,
+        critical_damage: breakdown,
+        cage_angle_deg: export.sets.iter().map(|s| s.cage_angle_deg).collect(),
+    })
+}
+
+/// The life at the critical location with the inclusion there: the matrix stress history at
+/// every sample point of the inclusion's surface, counted and damaged like a fillet's.
+fn inclusion_fatigue(
+    cage: &CageGeometry,
+    inclusion: &InclusionSettings,
+    remote: &[Stress],
+    settings: &FatigueSettings,
+    answer: &mut FatigueAnswer,
+) -> Result<(), String> {
+    let model = InclusionModel::new(inclusion, cage.youngs_modulus, cage.poisson_ratio)?;
+    let remote: Vec<[f64; 6]> = remote
+        .iter()
+        .map(|s| model.remote_from_cylindrical(s))
+        .collect();
+    let mut worst: Option<(f64, f64, String)> = None;
+    for (point, history) in model.matrix_stress_histories(&remote) {
+        let s = signed(&history);
+        let (_, d) = damage_of(&s, settings);
+        let peak = s.iter().fold(0.0_f64, |a, &b| a.max(b.abs()));
+        if worst
+            .as_ref()
+            .is_none_or(|w| (d.damage_per_repeat, peak) > (w.0, w.1))
+        {
+            worst = Some((d.damage_per_repeat, peak, format!("{point:?}")));
+        }
+    }
+    if let Some((damage, peak, location)) = worst {
+        answer.inclusion_life_revolutions = Some(1.0 / damage);
+        answer.inclusion_max_stress_pa = Some(peak);
+        answer.inclusion_location = Some(location);
+    }
+    Ok(())
+}
+
+/// The maxima of a load export (the contact forces on the cage).
+pub fn export_maxima(export: &CageLoadExport) -> (f64, f64) {
+    let mut land: f64 = 0.0;
+    let mut bar: f64 = 0.0;
+    for set in &export.sets {
+        let mut per_roller = std::collections::BTreeMap::<usize, f64>::new();
+        let mut land_set = 0.0;
+        for c in &set.contacts {
+            let f = (c.force_n.iter().map(|v| v * v).sum::<f64>()).sqrt();
+            match c.kind {
+                ContactKind::Land => land_set += f,
+                ContactKind::Bar => *per_roller.entry(c.pocket).or_default() += f,
+                ContactKind::PocketEnd => {}
+            }
+        }
+        land = land.max(land_set);
+        bar = per_roller.values().fold(bar, |a, &b| a.max(b));
+    }
+    (land, bar)
+}
+
+/// The header of an export of `cage` at the mean cage speed `cage_speed_rad_s`.
+pub fn export_header(
+    model: &str,
+    cage: &CageGeometry,
+    bar_station_z_m: f64,
+    cage_speed_rad_s: f64,
+) -> ExportHeader {
+    ExportHeader {
+        format: FORMAT.into(),
+        version: VERSION,
+        units: "SI: N, m, s, rad; cage_angle_deg in degrees".into(),
+        model: model.into(),
+        cage: cage.clone(),
+        bar_station_z_m,
+        cage_speed_rpm: cage_speed_rad_s.abs() * 60.0 / std::f64::consts::TAU,
+    }
+}
+
+/// A model's dynamics run to its load export: `settle_revolutions` discarded, then recorded until
+/// the cage has turned a full revolution (at most three epicyclic periods).
+pub fn record_loads(
+    model: &rolldyn_model::Model,
+    overrides: &rolldyn_setup::Overrides,
+    settings: &FatigueSettings,
+) -> Result<(CageLoadExport, RevolutionMaxima, CageGeometry), FatigueError> {
+    let rolldyn_geometry::BearingModel::Cylindrical(bearing) = &model.bearing else {
+        return Err(FatigueError::Input(format!(
+            "{}: cage fatigue needs a complete bearing (bearing.kind = \"cylindrical\")",
+            model.source.file
+        )));
+    };
+    let cage = cage_geometry(bearing, settings.fillet_radius_m)
+        .map_err(|e| FatigueError::Input(format!("{}: {e}", model.source.file)))?;
+    let input = |e: rolldyn_setup::SetupError| FatigueError::Input(e.0);
+    let lubrication = rolldyn_setup::quasi_static::lubrication(model, "fatigue").map_err(input)?;
+    let conditions = rolldyn_setup::conditions(overrides, model).map_err(input)?;
+    let epicyclic = bearing.epicyclic_cage_speed(
+        conditions.inner_speed.speed(0.0),
+        conditions.outer_speed.speed(0.0),
+    );
+    if epicyclic == 0.0 {
+        return Err(FatigueError::Input(
+            "cage fatigue needs a running bearing: the rings do not turn at t = 0".into(),
+        ));
+    }
+    let step = export_output_step(epicyclic, settings.samples_per_set);
+    let prepared = rolldyn_setup::prepare_with(
+        bearing,
+        lubrication,
+        &model.dynamics,
+        conditions,
+        step,
+        None,
+    )
+    .map_err(input)?;
+    let period = std::f64::consts::TAU / epicyclic.abs();
+    let mut sim = prepared.simulation;
+    let numerical = |e: rolldyn_dynamics::DynError| FatigueError::Numerical(e.to_string());
+    let settle = settings.settle_revolutions as f64 * period;
+    sim.run_until(settle, &mut rolldyn_dynamics::output::NullSink, &mut |_| {})
+        .map_err(numerical)?;
+    let mut recorder = CageLoadRecorder::default();
+    let mut end = settle;
+    let sets = loop {
+        end += 0.25 * period;
+        sim.run_until(end, &mut recorder, &mut |_| {})
+            .map_err(numerical)?;
+        match recorder.last_revolution() {
+            Ok(sets) => break sets,
+            Err(e) if end > settle + 3.0 * period => return Err(FatigueError::Numerical(e)),
+            Err(_) => {}
+        }
+    };
+    let turned = sets.last().map_or(0.0, |s| s.time_s) - sets.first().map_or(0.0, |s| s.time_s);
+    let cage_speed = std::f64::consts::TAU * (1.0 - 1.0 / sets.len() as f64) / turned.max(1e-12);
+    let export = CageLoadExport {
+        header: export_header(
+            &model.source.file,
+            &cage,
+            bearing.roller.bar_contact_half_span(),
+            cage_speed,
+        ),
+        sets,
+    };
+    let maxima = recorder.maxima();
+    Ok((export, maxima, cage))
+}
+
+/// Why a fatigue evaluation failed: bad input (exit 2) or a numerical failure (exit 1).
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum FatigueError {
+    #[error("{0}")]
+    Input(String),
+    #[error("{0}")]
+    Numerical(String),
+}
