@@ -186,11 +186,7 @@ impl Station {
                 end_sign(end) * 0.5 * cage.pocket_axial,
             ],
             Station::Land { rim, at_bar } => {
-                let angle = if at_bar {
-                    PI / cage.pockets as f64
-                } else {
-                    0.0
-                };
+                let angle = if at_bar { PI / cage.pockets as f64 } else { 0.0 };
                 let (s, c) = angle.sin_cos();
                 [
                     cage.inner_radius * c,

@@ -48,7 +48,8 @@ impl UnitStresses {
     /// Checks the table sizes against the cage.
     pub fn consistent(&self) -> bool {
         let p = self.points();
-        self.per_unit_force.len() == 3 * STATIONS.len() * p && self.per_unit_spin_squared.len() == p
+        self.per_unit_force.len() == 3 * STATIONS.len() * p
+            && self.per_unit_spin_squared.len() == p
     }
 }
 
