@@ -10,7 +10,7 @@ use crate::inclusion::{InclusionModel, InclusionSettings};
 use crate::loads::{CageLoadExport, ContactKind, ExportHeader, FORMAT, VERSION};
 use crate::rainflow::{Cycle, HistoryKind, rainflow};
 use crate::recorder::{CageLoadRecorder, export_output_step};
-use crate::sn::SnCurve;
+use crate::sn::{BelowKnee, SnCurve, SnSettings};
 use crate::unit_stresses::{Stress, UnitStresses, signed_von_mises};
 use rolldyn_geometry::CylindricalRollerBearing;
 use serde::Serialize;
@@ -121,6 +121,10 @@ pub struct FatigueAnswer {
     /// cage revolutions to failure (∞ → null)
     pub life_revolutions: f64,
     pub life_hours: f64,
+    /// the life with the S–N curve's last slope continued below the knee (no endurance
+    /// limit): finite for any cycling stress, the figure that ranks variants whose cycles all
+    /// lie below the knee, revolutions
+    pub extrapolated_life_revolutions: f64,
     /// the fillet with the largest damage (or the largest |stress| when nothing is damaged)
     pub critical_location: String,
     pub critical_point_m: [f64; 3],
@@ -170,11 +174,25 @@ pub fn evaluate(
     }
     let histories = crate::superpose::stress_histories(unit, export);
     let points = FilletPoint::all(unit.cage.pockets);
+    let extrapolating = FatigueSettings {
+        sn: settings
+            .sn
+            .clone()
+            .with_settings(SnSettings {
+                below_knee: BelowKnee::Extrapolate,
+                ..*settings.sn.settings()
+            })
+            .map_err(|e| e.to_string())?,
+        ..settings.clone()
+    };
+    let mut extrapolated_damage: f64 = 0.0;
     let mut fatigue = Vec::with_capacity(points.len());
     let mut worst = (0usize, f64::NEG_INFINITY, f64::NEG_INFINITY);
     for (i, (p, h)) in points.iter().zip(&histories).enumerate() {
         let s = signed(h);
         let (_, d) = damage_of(&s, settings);
+        let (_, e) = damage_of(&s, &extrapolating);
+        extrapolated_damage = extrapolated_damage.max(e.damage_per_repeat);
         let max = s.iter().fold(f64::NEG_INFINITY, |a, &b| a.max(b));
         let min = s.iter().fold(f64::INFINITY, |a, &b| a.min(b));
         let peak = max.abs().max(min.abs());
@@ -214,6 +232,7 @@ pub fn evaluate(
         damage_per_revolution: breakdown.damage_per_repeat,
         life_revolutions: life,
         life_hours: life_hours(life, omega),
+        extrapolated_life_revolutions: 1.0 / extrapolated_damage,
         critical_location: fatigue[critical].location.clone(),
         critical_point_m: fatigue[critical].point_m,
         max_stress_pa: max_stress,

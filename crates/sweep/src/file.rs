@@ -32,6 +32,9 @@ pub enum Analysis {
     /// Wear over the bearing's life (`rolldyn wear`): `duration` is the life, `period` the
     /// recalculation period.
     Wear,
+    /// Cage fatigue from one steady revolution (`rolldyn fatigue`): `method` is the stress
+    /// model ("frame" or "calculix").
+    Fatigue,
 }
 
 /// One variant: a name and the model keys it overrides (dotted paths, TOML values with units).
@@ -56,7 +59,8 @@ pub struct SweepFile {
     pub discard: Option<String>,
     /// Recalculation period of a `wear` sweep (`"1905h"` or `"auto"`), as written.
     pub period: Option<String>,
-    /// Wear method of a `wear` sweep (`"direct"` or `"averaged"`), as written.
+    /// Wear method of a `wear` sweep (`"direct"` or `"averaged"`) or stress model of a `fatigue`
+    /// sweep (`"frame"` or `"calculix"`), as written.
     pub method: Option<String>,
     pub variants: Vec<Variant>,
 }
@@ -82,11 +86,12 @@ impl SweepFile {
             None | Some("simulate") => Analysis::Simulate,
             Some("skid") => Analysis::Skid,
             Some("wear") => Analysis::Wear,
+            Some("fatigue") => Analysis::Fatigue,
             Some(other) => {
                 return Err(SweepError::new(
                     path,
                     "analysis",
-                    format!("'{other}' is not simulate, skid or wear"),
+                    format!("'{other}' is not simulate, skid, wear or fatigue"),
                 ));
             }
         };

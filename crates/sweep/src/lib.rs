@@ -6,11 +6,11 @@
 //!
 //! ```toml
 //! model = "../2002834.toml"
-//! analysis = "simulate"          # or "skid", "wear"
+//! analysis = "simulate"          # or "skid", "wear", "fatigue"
 //! duration = "5rev"              # simulate: simulated time; wear: the life ("25000h")
 //! discard = "1rev"               # simulate only: revolutions left out of the summary (default 1)
 //! period = "1905h"               # wear only: recalculation period, or "auto" (default 1905h)
-//! method = "direct"             # wear only: or "averaged"
+//! method = "direct"             # wear: or "averaged"; fatigue: "frame" (default) or "calculix"
 //! variants_from = "table-3.1.toml"  # optional: named variants a variant may start from
 //!
 //! [[variant]]

@@ -1,16 +1,84 @@
-//! `rolldyn fatigue rainflow HISTORY.csv`: rainflow cycle counting of a stress history (ASTM
-//! E1049; library: `rolldyn_fatigue`).
+//! `rolldyn fatigue MODEL.toml`: the life of the cage from one steady revolution of the
+//! dynamics (seed 000 §2.5, docs/theory.md §10); `rolldyn fatigue rainflow HISTORY.csv`:
+//! rainflow cycle counting of any stress history (ASTM E1049). Library: `rolldyn_fatigue`.
 
+use super::operating_args::OperatingArgs;
 use crate::failure::Failure;
-use crate::output::print_json;
-use rolldyn_fatigue::{Cycle, HistoryKind, rainflow, read_history_csv};
+use crate::output::{load_model, out_dir, print_json};
+use rolldyn_fatigue::sn::BelowKnee;
+use rolldyn_fatigue::study::{
+    FatigueError, FatigueSettings, StressModelKind, evaluate, record_loads,
+};
+use rolldyn_fatigue::{
+    CageLoadExport, Cycle, HistoryKind, UnitStresses, rainflow, read_history_csv,
+};
+use rolldyn_units::{Length, Quantity};
 use serde::Serialize;
 use std::path::PathBuf;
+use std::time::Instant;
+
+#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum StressArg {
+    /// the embedded beam frame with fillet stress-concentration factors (fast)
+    Frame,
+    /// a gmsh + CalculiX solid model (unit cases cached per cage geometry)
+    Calculix,
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum BelowKneeArg {
+    /// the knee is an endurance limit: cycles below it do no damage
+    NoDamage,
+    /// the last segment's slope continues below the knee
+    Extrapolate,
+    /// Haibach: slope 2k − 1 below the knee
+    Haibach,
+}
 
 #[derive(clap::Args)]
+#[command(args_conflicts_with_subcommands = true, subcommand_negates_reqs = true)]
 pub struct Args {
     #[command(subcommand)]
-    pub command: FatigueCommand,
+    pub command: Option<FatigueCommand>,
+    /// Model file (TOML) with a [cage] and [lubricant]; the embedded 2002834 model when omitted.
+    pub model: Option<PathBuf>,
+    #[command(flatten)]
+    pub operating: OperatingArgs,
+    /// Cage stress model.
+    #[arg(long, value_enum, default_value = "frame")]
+    pub stress: StressArg,
+    /// Cage revolutions simulated and discarded before the recorded one.
+    #[arg(long, default_value_t = 8)]
+    pub revolutions: u32,
+    /// Evaluate the Al₂O₃ inclusion (2 × 3.5 × 5 µm, debonding interface) at the critical
+    /// location too.
+    #[arg(long)]
+    pub inclusion: bool,
+    /// Radius of the window-corner fillet (e.g. 0.5mm).
+    #[arg(long, default_value = "0.5mm")]
+    pub fillet_radius: Quantity<Length>,
+    /// Factor on the S–N curve for the silver plating (seed: 1.5).
+    #[arg(long, default_value_t = 1.5)]
+    pub coating_factor: f64,
+    /// Safety factor on stress (applied to the S–N curve besides the coating factor).
+    #[arg(long, default_value_t = 1.0)]
+    pub safety_factor: f64,
+    /// Cycles below the knee of the S–N curve (10⁷ cycles).
+    #[arg(long, value_enum, default_value = "no-damage")]
+    pub below_knee: BelowKneeArg,
+    /// Read the cage loads from an export (`rolldyn simulate --cage-loads`) instead of running
+    /// the dynamics.
+    #[arg(long)]
+    pub loads: Option<PathBuf>,
+    /// Output folder: the load export, stress history, damage map and plots.
+    #[arg(long)]
+    pub out: Option<PathBuf>,
+    /// Folder of the cached CalculiX unit cases (default `out/calculix-cache`).
+    #[arg(long)]
+    pub cache: Option<PathBuf>,
+    /// Print the result as JSON.
+    #[arg(long)]
+    pub json: bool,
 }
 
 #[derive(clap::Subcommand)]
@@ -36,7 +104,7 @@ pub struct RainflowArgs {
 }
 
 #[derive(Serialize)]
-struct Answer<'a> {
+struct RainflowAnswer<'a> {
     history: String,
     periodic: bool,
     values: usize,
@@ -45,7 +113,164 @@ struct Answer<'a> {
 
 pub fn run(args: Args) -> Result<(), Failure> {
     match args.command {
-        FatigueCommand::Rainflow(a) => run_rainflow(a),
+        Some(FatigueCommand::Rainflow(a)) => run_rainflow(a),
+        None => run_life(args),
+    }
+}
+
+impl Args {
+    fn settings(&self) -> Result<FatigueSettings, Failure> {
+        let defaults = FatigueSettings::default();
+        let sn_settings = rolldyn_fatigue::sn::SnSettings {
+            coating_factor: self.coating_factor,
+            stress_safety_factor: self.safety_factor,
+            below_knee: match self.below_knee {
+                BelowKneeArg::NoDamage => BelowKnee::NoDamage,
+                BelowKneeArg::Extrapolate => BelowKnee::Extrapolate,
+                BelowKneeArg::Haibach => BelowKnee::Haibach,
+            },
+        };
+        let sn = defaults
+            .sn
+            .clone()
+            .with_settings(sn_settings)
+            .map_err(|e| Failure::Input(format!("--coating-factor/--safety-factor: {e}")))?;
+        Ok(FatigueSettings {
+            stress_model: match self.stress {
+                StressArg::Frame => StressModelKind::Frame,
+                StressArg::Calculix => StressModelKind::Calculix,
+            },
+            settle_revolutions: self.revolutions,
+            fillet_radius_m: self.fillet_radius.si(),
+            sn,
+            inclusion: self
+                .inclusion
+                .then(rolldyn_fatigue::inclusion::InclusionSettings::default),
+            ..defaults
+        })
+    }
+}
+
+fn failure(e: FatigueError) -> Failure {
+    match e {
+        FatigueError::Input(m) => Failure::Input(m),
+        FatigueError::Numerical(m) => Failure::Run(m),
+    }
+}
+
+fn run_life(args: Args) -> Result<(), Failure> {
+    let wall = Instant::now();
+    let settings = args.settings()?;
+    let (export, maxima) = match &args.loads {
+        Some(path) => {
+            let export = CageLoadExport::read(path).map_err(Failure::Input)?;
+            (export, None)
+        }
+        None => {
+            let model = load_model(args.model.as_deref())?;
+            let (export, maxima, _) =
+                record_loads(&model, &args.operating.overrides(), &settings).map_err(failure)?;
+            (export, Some(maxima))
+        }
+    };
+    let dynamics_s = wall.elapsed().as_secs_f64();
+    let unit = unit_stresses(&args, &export, &settings)?;
+    let result = evaluate(&unit, &export, maxima, &settings).map_err(Failure::Run)?;
+    let files = match &args.out {
+        Some(dir) => {
+            let dir = out_dir(dir)?;
+            rolldyn_fatigue::report::write_report(&dir, &export, &result, &settings)
+                .map_err(Failure::Run)?
+        }
+        None => Vec::new(),
+    };
+    let answer = Answer {
+        model: export.header.model.clone(),
+        fatigue: &result.answer,
+        dynamics_wall_s: dynamics_s,
+        wall_time_s: wall.elapsed().as_secs_f64(),
+        files: files.iter().map(|f| f.display().to_string()).collect(),
+    };
+    if args.json {
+        return print_json(&answer);
+    }
+    print_answer(&answer);
+    Ok(())
+}
+
+fn unit_stresses(
+    args: &Args,
+    export: &CageLoadExport,
+    settings: &FatigueSettings,
+) -> Result<UnitStresses, Failure> {
+    let cage = &export.header.cage;
+    let z = export.header.bar_station_z_m;
+    match settings.stress_model {
+        StressModelKind::Frame => rolldyn_fatigue::frame::unit_stresses(cage, z, &settings.frame)
+            .map_err(|e| Failure::Input(e.to_string())),
+        StressModelKind::Calculix => {
+            let cache = args
+                .cache
+                .clone()
+                .unwrap_or_else(|| PathBuf::from("out/calculix-cache"));
+            let cache = out_dir(&cache)?;
+            rolldyn_fatigue::calculix::unit_stresses(
+                cage,
+                z,
+                &rolldyn_fatigue::calculix::CalculixSettings::default(),
+                Some(&cache),
+            )
+            .map_err(|e| Failure::Run(e.to_string()))
+        }
+    }
+}
+
+#[derive(Serialize)]
+struct Answer<'a> {
+    model: String,
+    #[serde(flatten)]
+    fatigue: &'a rolldyn_fatigue::study::FatigueAnswer,
+    dynamics_wall_s: f64,
+    wall_time_s: f64,
+    files: Vec<String>,
+}
+
+fn print_answer(a: &Answer) {
+    let f = a.fatigue;
+    println!(
+        "{}: cage fatigue by the {:?} model, {} load sets at {:.0} rpm",
+        a.model, f.stress_model, f.load_sets, f.cage_speed_rpm
+    );
+    println!(
+        "  critical location {}: largest |stress| {:.1} MPa, damage {:.3e} per revolution",
+        f.critical_location,
+        f.max_stress_pa * 1e-6,
+        f.damage_per_revolution
+    );
+    if f.life_revolutions.is_finite() {
+        println!(
+            "  life {:.4e} revolutions = {:.4e} h",
+            f.life_revolutions, f.life_hours
+        );
+    } else {
+        println!("  no cycle above the endurance limit: unlimited life");
+    }
+    println!(
+        "  endurance margin (knee amplitude / largest equivalent amplitude) {:.2}",
+        f.endurance_margin
+    );
+    if let Some(life) = f.inclusion_life_revolutions {
+        println!(
+            "  with the inclusion: life {life:.4e} revolutions, largest matrix stress {:.1} MPa",
+            f.inclusion_max_stress_pa.unwrap_or(f64::NAN) * 1e-6
+        );
+    }
+    println!(
+        "  wall {:.1} s (dynamics {:.1} s)",
+        a.wall_time_s, a.dynamics_wall_s
+    );
+    for file in &a.files {
+        println!("  wrote {file}");
     }
 }
 
@@ -61,7 +286,7 @@ fn run_rainflow(args: RainflowArgs) -> Result<(), Failure> {
     };
     let cycles = rainflow(&values, kind);
     if args.json {
-        return print_json(&Answer {
+        return print_json(&RainflowAnswer {
             history: file,
             periodic: args.periodic,
             values: values.len(),

@@ -21,6 +21,7 @@ use std::path::{Path, PathBuf};
 use std::str::FromStr;
 
 use super::operating_args::OperatingArgs;
+use rolldyn_fatigue::{CageLoadExport, CageLoadRecorder, export_output_step};
 use rolldyn_setup::prepare;
 
 /// How long to simulate: cage revolutions (`20rev`) or a time (`0.2s`, `50ms`).
@@ -112,6 +113,11 @@ pub struct Args {
     /// Folder for time series (CSV + Parquet) and plots (SVG).
     #[arg(long)]
     pub out: Option<PathBuf>,
+    /// Write the cage loads of the last cage revolution (180 load sets, 2° apart) to this
+    /// Parquet file and its JSON header beside it (docs/outputs.md "Cage loads"); the run
+    /// samples the dynamics at least 4 times per set.
+    #[arg(long)]
+    pub cage_loads: Option<PathBuf>,
     /// No progress bar.
     #[arg(long)]
     pub quiet: bool,
@@ -419,20 +425,90 @@ impl OutputSink for FileSink {
     }
 }
 
-/// Forwards to an optional file sink (so the run is the same with or without `--out`).
-struct Sinks(Option<FileSink>);
+/// Forwards to an optional file sink (so the run is the same with or without `--out`) — every
+/// `thin`-th sample of the grid `step`, when the cage-load recorder needs a finer grid — and to
+/// an optional cage-load recorder.
+struct Sinks {
+    files: Option<FileSink>,
+    loads: Option<CageLoadRecorder>,
+    step: f64,
+    thin: u64,
+}
 
 impl OutputSink for Sinks {
     fn sample(&mut self, t: f64, s: &Snapshot) {
-        if let Some(f) = &mut self.0 {
+        if let Some(f) = &mut self.files
+            && ((t / self.step).round() as u64).is_multiple_of(self.thin)
+        {
             f.sample(t, s);
+        }
+        if let Some(r) = &mut self.loads {
+            r.sample(t, s);
         }
     }
     fn revolution(&mut self, v: &RevolutionSummary) {
-        if let Some(f) = &mut self.0 {
+        if let Some(f) = &mut self.files {
             f.revolution(v);
         }
+        if let Some(r) = &mut self.loads {
+            r.revolution(v);
+        }
     }
+}
+
+/// The sampling of a run: the step of the dynamics' output grid and every how many samples the
+/// `--out` tables take one (1 without `--cage-loads`; else the grid is refined to at least four
+/// samples per 2° load set).
+fn sampling(args: &Args, output_step: f64, revolution: Option<f64>) -> Result<(f64, u64), Failure> {
+    let Some(path) = &args.cage_loads else {
+        return Ok((if args.out.is_some() { output_step } else { 0.0 }, 1));
+    };
+    let period = revolution.ok_or_else(|| {
+        Failure::Input(format!(
+            "--cage-loads {}: the rings do not turn at t = 0, there is no cage revolution to record",
+            path.display()
+        ))
+    })?;
+    let fine = export_output_step(std::f64::consts::TAU / period, 4.0);
+    if args.out.is_none() {
+        return Ok((fine, 1));
+    }
+    let thin = (output_step / fine).ceil().max(1.0);
+    Ok((output_step / thin, thin as u64))
+}
+
+/// Writes the load export of the recorded revolution to `path`.
+fn write_cage_loads(
+    path: &Path,
+    model: &rolldyn_model::Model,
+    recorder: &CageLoadRecorder,
+) -> Result<(), Failure> {
+    let rolldyn_geometry::BearingModel::Cylindrical(bearing) = &model.bearing else {
+        return Err(Failure::Input(
+            "--cage-loads needs a complete bearing (bearing.kind = \"cylindrical\")".into(),
+        ));
+    };
+    let fillet = rolldyn_fatigue::study::FatigueSettings::default().fillet_radius_m;
+    let cage = rolldyn_fatigue::study::cage_geometry(bearing, fillet).map_err(Failure::Input)?;
+    let sets = recorder.last_revolution().map_err(|e| {
+        Failure::Run(format!(
+            "--cage-loads: {e}; run at least one cage revolution (--duration)"
+        ))
+    })?;
+    let turned = sets.last().map_or(0.0, |s| s.time_s) - sets.first().map_or(0.0, |s| s.time_s);
+    let speed = std::f64::consts::TAU * (1.0 - 1.0 / sets.len() as f64) / turned.max(1e-12);
+    let export = CageLoadExport {
+        header: rolldyn_fatigue::study::export_header(
+            &model.source.file,
+            &cage,
+            bearing.roller.bar_contact_half_span(),
+            speed,
+        ),
+        sets,
+    };
+    export
+        .write(path)
+        .map_err(|e| Failure::Run(format!("--cage-loads: {e}")))
 }
 
 /// A kind of state component and its share of the steps it limited.
@@ -503,10 +579,16 @@ impl Duration {
 pub fn run(args: Args) -> Result<(), Failure> {
     let model = load_model(args.model.as_deref())?;
     let output_step = checked_output_step(args.output_step)?;
+    // the cage-load export samples on the cage's period, known once the model is prepared
+    let period = match args.cage_loads {
+        Some(_) => prepare(&model, &args.operating.overrides(), 0.0, args.tolerance)?.1,
+        None => None,
+    };
+    let (grid_step, thin) = sampling(&args, output_step, period)?;
     let (mut sim, revolution) = prepare(
         &model,
         &args.operating.overrides(),
-        if args.out.is_some() { output_step } else { 0.0 },
+        grid_step,
         args.tolerance,
     )?;
     if let Some(integrator) = args.integrator {
@@ -525,11 +607,18 @@ pub fn run(args: Args) -> Result<(), Failure> {
         }
         None => None,
     };
-    let mut sinks = Sinks(
-        dir.as_deref()
+    let mut sinks = Sinks {
+        files: dir
+            .as_deref()
             .map(|dir| FileSink::open(dir, kept, args.resume.is_some()))
             .transpose()?,
-    );
+        loads: args
+            .cage_loads
+            .as_ref()
+            .map(|_| CageLoadRecorder::default()),
+        step: grid_step,
+        thin,
+    };
     let bar = progress_bar(args.quiet, t_end);
     let mut report = |t: f64| bar.set_position((1000.0 * t / t_end).min(1000.0) as u64);
     let mut result = Ok(sim.summary());
@@ -538,7 +627,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
         result = sim.run_until(target, &mut sinks, &mut report);
         if let (Some(path), Ok(_)) = (&args.checkpoint, &result) {
             let mut note = Vec::new();
-            if let Some(files) = &mut sinks.0 {
+            if let Some(files) = &mut sinks.files {
                 files.flush().map_err(|e| Failure::Run(e.to_string()))?;
                 note = encode_note(&files.kept());
             }
@@ -546,7 +635,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
         }
     }
     bar.finish_and_clear();
-    let written = match (sinks.0, &dir) {
+    let written = match (sinks.files, &dir) {
         (Some(files), Some(dir)) => files.finish(dir),
         _ => Ok(()),
     };
@@ -560,6 +649,9 @@ pub fn run(args: Args) -> Result<(), Failure> {
         ))
     })?;
     written?;
+    if let (Some(path), Some(recorder)) = (&args.cage_loads, &sinks.loads) {
+        write_cage_loads(path, &model, recorder)?;
+    }
     let limits = step_limits(&sim.step_limits());
     if args.json {
         return print_json(&answer_json(

@@ -137,6 +137,90 @@ fn wear(
     Ok(row)
 }
 
+/// The life of the cage of one variant (`analysis = "fatigue"`): life, damage, stresses and the
+/// revolution's largest contact forces (seed 000 Table 3.2) as its row; the report files go to
+/// `out` (`<sweep out>/variants/<name>-fatigue`).
+fn fatigue(
+    settings: &rolldyn_fatigue::study::FatigueSettings,
+    model: rolldyn_model::Model,
+    out: &std::path::Path,
+    cache: &std::path::Path,
+) -> Result<BTreeMap<String, f64>, String> {
+    use rolldyn_fatigue::study::{StressModelKind, evaluate, record_loads};
+    std::fs::create_dir_all(out).map_err(|e| format!("cannot create {}: {e}", out.display()))?;
+    let (export, maxima, _) =
+        record_loads(&model, &Overrides::default(), settings).map_err(|e| e.to_string())?;
+    let cage = &export.header.cage;
+    let z = export.header.bar_station_z_m;
+    let unit = match settings.stress_model {
+        StressModelKind::Frame => rolldyn_fatigue::frame::unit_stresses(cage, z, &settings.frame)
+            .map_err(|e| e.to_string())?,
+        StressModelKind::Calculix => {
+            std::fs::create_dir_all(cache)
+                .map_err(|e| format!("cannot create {}: {e}", cache.display()))?;
+            rolldyn_fatigue::calculix::unit_stresses(
+                cage,
+                z,
+                &rolldyn_fatigue::calculix::CalculixSettings::default(),
+                Some(cache),
+            )
+            .map_err(|e| e.to_string())?
+        }
+    };
+    let result = evaluate(&unit, &export, Some(maxima), settings)?;
+    rolldyn_fatigue::report::write_report(out, &export, &result, settings)?;
+    let a = &result.answer;
+    let mut row = BTreeMap::new();
+    for (name, v) in [
+        ("life_revolutions", a.life_revolutions),
+        ("life_hours", a.life_hours),
+        ("lg_life_revolutions", a.life_revolutions.log10()),
+        (
+            "extrapolated_life_revolutions",
+            a.extrapolated_life_revolutions,
+        ),
+        (
+            "lg_extrapolated_life_revolutions",
+            a.extrapolated_life_revolutions.log10(),
+        ),
+        ("damage_per_revolution", a.damage_per_revolution),
+        ("max_stress_pa", a.max_stress_pa),
+        ("endurance_margin", a.endurance_margin),
+        ("cage_speed_rpm", a.cage_speed_rpm),
+        ("max_cage_land_force_n", maxima.max_cage_land_force_n),
+        ("max_roller_cage_force_n", maxima.max_roller_cage_force_n),
+        (
+            "max_roller_raceway_force_n",
+            maxima.max_roller_raceway_force_n,
+        ),
+    ] {
+        row.insert(name.to_string(), v);
+    }
+    row.retain(|_, v| v.is_finite());
+    Ok(row)
+}
+
+/// The fatigue settings of a `fatigue` sweep: its `method` names the stress model.
+fn fatigue_settings(sweep: &SweepFile) -> Result<rolldyn_fatigue::study::FatigueSettings, String> {
+    use rolldyn_fatigue::study::{FatigueSettings, StressModelKind};
+    let stress_model = match (sweep.analysis, sweep.method.as_deref()) {
+        (Analysis::Fatigue, Some("calculix")) => StressModelKind::Calculix,
+        (Analysis::Fatigue, None | Some("frame")) | (_, _) => StressModelKind::Frame,
+    };
+    if sweep.analysis == Analysis::Fatigue
+        && let Some(other) = sweep
+            .method
+            .as_deref()
+            .filter(|m| !["frame", "calculix"].contains(m))
+    {
+        return Err(format!("method — '{other}' is not frame or calculix"));
+    }
+    Ok(FatigueSettings {
+        stress_model,
+        ..FatigueSettings::default()
+    })
+}
+
 /// The wear settings of a `wear` sweep: its `duration` is the life, its `period` the period.
 fn wear_settings(sweep: &SweepFile) -> Result<rolldyn_wear::WearSettings, String> {
     use super::wear::PeriodArg;
@@ -186,7 +270,12 @@ fn discarded_revolutions(text: &str) -> Result<u32, String> {
 
 /// The settings of the analysis beyond the sweep file (solver defaults and tolerances) for the
 /// variants' fingerprints.
-fn settings(analysis: Analysis, duration: Duration, wear: &rolldyn_wear::WearSettings) -> String {
+fn settings(
+    analysis: Analysis,
+    duration: Duration,
+    wear: &rolldyn_wear::WearSettings,
+    fatigue: &rolldyn_fatigue::study::FatigueSettings,
+) -> String {
     match analysis {
         Analysis::Wear => format!(
             "{wear:?}; {:?}",
@@ -197,6 +286,11 @@ fn settings(analysis: Analysis, duration: Duration, wear: &rolldyn_wear::WearSet
             rolldyn_dynamics::DynamicsSettings::default()
         ),
         Analysis::Skid => format!("finite cage land; {:?}", QuasiStaticOptions::default()),
+        Analysis::Fatigue => format!(
+            "{:?}; {:?}",
+            fatigue,
+            rolldyn_dynamics::DynamicsSettings::default()
+        ),
     }
 }
 
@@ -204,8 +298,9 @@ pub fn run(args: Args) -> Result<(), Failure> {
     let sweep = SweepFile::load(&args.sweep).map_err(|e| Failure::Input(e.to_string()))?;
     let bad = |e: String| Failure::Input(format!("{}: {e}", args.sweep.display()));
     let wear_settings = wear_settings(&sweep).map_err(bad)?;
+    let fatigue_settings = fatigue_settings(&sweep).map_err(bad)?;
     let duration: Duration = match sweep.analysis {
-        Analysis::Wear => "1rev".parse(),
+        Analysis::Wear | Analysis::Fatigue => "1rev".parse(),
         _ => sweep.duration.as_deref().unwrap_or("5rev").parse(),
     }
     .map_err(|e: String| bad(format!("duration — {e}")))?;
@@ -233,6 +328,8 @@ pub fn run(args: Args) -> Result<(), Failure> {
         .unwrap_or_else(|| PathBuf::from("out").join(stem));
     let analysis = sweep.analysis;
     let wear_settings_ref = &wear_settings;
+    let fatigue_settings_ref = &fatigue_settings;
+    let cache_dir = out_dir.join("calculix-cache");
     let variants_dir = out_dir.join("variants");
     let analyse = move |v: &Variant, model: rolldyn_model::Model| match analysis {
         Analysis::Simulate => simulate(duration, discard, model),
@@ -241,6 +338,12 @@ pub fn run(args: Args) -> Result<(), Failure> {
             wear_settings_ref,
             model,
             &variants_dir.join(format!("{}-wear", v.name)),
+        ),
+        Analysis::Fatigue => fatigue(
+            fatigue_settings_ref,
+            model,
+            &variants_dir.join(format!("{}-fatigue", v.name)),
+            &cache_dir,
         ),
     };
     let done = AtomicUsize::new(0);
@@ -260,7 +363,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
         jobs: args.jobs.count(),
         shard: args.shard,
         resume: args.resume,
-        settings: settings(analysis, duration, &wear_settings),
+        settings: settings(analysis, duration, &wear_settings, &fatigue_settings),
     };
     let outcomes = run_sweep(&sweep, &options, &analyse, &progress)
         .map_err(|e| Failure::Run(e.to_string()))?;
