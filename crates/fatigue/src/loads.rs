@@ -218,3 +218,66 @@ fn read_contacts(table: &Path) -> Result<Vec<(usize, ContactLoad)>, String> {
     }
     Ok(out)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn an_export_reads_back_as_written() {
+        let cage = CageGeometry {
+            pockets: 3,
+            inner_radius: 0.05,
+            outer_radius: 0.06,
+            width: 0.02,
+            pocket_axial: 0.01,
+            pocket_circumferential: 0.01,
+            bar_contact_radius: 0.055,
+            fillet_radius: 5e-4,
+            youngs_modulus: 2e11,
+            poisson_ratio: 0.3,
+            density: 7800.0,
+        };
+        let set = |angle: f64, contacts: Vec<ContactLoad>| LoadSet {
+            cage_angle_deg: angle,
+            time_s: angle * 1e-4,
+            acceleration_m_s2: [1.0, 2.0, 3.0],
+            angular_velocity_rad_s: [0.0, 0.0, 300.0],
+            angular_acceleration_rad_s2: [0.1, 0.2, 0.3],
+            contacts,
+        };
+        let bar = ContactLoad {
+            kind: ContactKind::Bar,
+            pocket: 2,
+            location: 3,
+            force_n: [1.5, -20.0, 0.25],
+            point_m: [0.055, 0.005, 0.004],
+        };
+        let land = ContactLoad {
+            kind: ContactKind::Land,
+            location: 1,
+            ..bar
+        };
+        let export = CageLoadExport {
+            header: ExportHeader {
+                format: FORMAT.into(),
+                version: VERSION,
+                units: "SI".into(),
+                model: "test".into(),
+                cage,
+                bar_station_z_m: 0.004,
+                cage_speed_rpm: 3000.0,
+            },
+            sets: vec![
+                set(0.0, vec![bar, land]),
+                set(2.0, vec![]),
+                set(4.0, vec![bar]),
+            ],
+        };
+        let dir = std::env::temp_dir().join(format!("rolldyn-loads-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("loads.parquet");
+        export.write(&path).unwrap();
+        assert_eq!(CageLoadExport::read(&path).unwrap(), export);
+    }
+}

@@ -5,7 +5,7 @@
 
 use crate::cage::{CageGeometry, FilletPoint};
 use crate::damage::{DamageBreakdown, MeanStressSettings, life_hours, miner_damage};
-use crate::frame::{FrameSettings, fillet_factors};
+use crate::frame::{FilletFactors, FrameSettings, fillet_factors};
 use crate::inclusion::{InclusionModel, InclusionSettings};
 use crate::loads::{CageLoadExport, ContactKind, ExportHeader, FORMAT, VERSION};
 use crate::rainflow::{Cycle, HistoryKind, rainflow};
@@ -115,8 +115,8 @@ pub struct FatigueAnswer {
     pub stress_model: StressModelKind,
     pub load_sets: usize,
     pub cage_speed_rpm: f64,
-    /// the fillet stress-concentration factors `[tension, in-plane bending]` (frame model)
-    pub stress_concentration: [f64; 2],
+    /// the fillet stress-concentration factors of the frame model
+    pub stress_concentration: FilletFactors,
     pub damage_per_revolution: f64,
     /// cage revolutions to failure (∞ → null)
     pub life_revolutions: f64,

@@ -79,6 +79,8 @@ pub struct Overrides {
     pub radial_load: Option<f64>,
     pub load_direction: Option<LoadDirection>,
     pub oil_temperature: Option<f64>,
+    /// inner-ring tilt, rad (overrides misalignment.inner_ring)
+    pub misalignment: Option<f64>,
 }
 
 /// Operating conditions from the model's `[operating]` section and the overrides (oil
@@ -210,7 +212,9 @@ fn conditions_with_temperature_at(
             .cage
             .filter(|_| args.oil_temperature.is_none())),
     };
-    c.misalignment_rad = model.bearing.misalignment().inner_ring_tilt;
+    c.misalignment_rad = args
+        .misalignment
+        .unwrap_or(model.bearing.misalignment().inner_ring_tilt);
     // SPEC §3.6: an input per model (`[dynamics] cage_drag`), none when the file is silent
     c.cage_drag_n_m_s = model.dynamics.cage_drag_n_m_s.unwrap_or(0.0);
     Ok(c)

@@ -161,7 +161,7 @@ fn failure(e: FatigueError) -> Failure {
 fn run_life(args: Args) -> Result<(), Failure> {
     let wall = Instant::now();
     let settings = args.settings()?;
-    let (export, maxima) = match &args.loads {
+    let (mut export, maxima) = match &args.loads {
         Some(path) => {
             let export = CageLoadExport::read(path).map_err(Failure::Input)?;
             (export, None)
@@ -173,6 +173,8 @@ fn run_life(args: Args) -> Result<(), Failure> {
             (export, Some(maxima))
         }
     };
+    // the fillet is a fatigue input, not part of the dynamics' export
+    export.header.cage.fillet_radius = settings.fillet_radius_m;
     let dynamics_s = wall.elapsed().as_secs_f64();
     let unit = unit_stresses(&args, &export, &settings)?;
     let result = evaluate(&unit, &export, maxima, &settings).map_err(Failure::Run)?;

@@ -1,8 +1,8 @@
 //! Command-line overrides of a model's `[operating]` section, shared by the commands that run
-//! the dynamics of one operating point (`simulate`, `bench`).
+//! the dynamics of one operating point (`simulate`, `bench`, `wear`, `fatigue`).
 
 use rolldyn_setup::{LoadDirection, Overrides};
-use rolldyn_units::{AngularSpeed, Force, Quantity, Temperature};
+use rolldyn_units::{Angle, AngularSpeed, Force, Quantity, Temperature};
 
 #[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
 pub enum LoadDirectionArg {
@@ -27,6 +27,9 @@ pub struct OperatingArgs {
     /// Oil temperature of all contacts (overrides operating.temperatures.oil).
     #[arg(long, allow_hyphen_values = true)]
     pub oil_temperature: Option<Quantity<Temperature>>,
+    /// Inner-ring misalignment, e.g. 11arcmin (overrides misalignment.inner_ring).
+    #[arg(long, allow_hyphen_values = true)]
+    pub misalignment: Option<Quantity<Angle>>,
 }
 
 impl OperatingArgs {
@@ -41,6 +44,7 @@ impl OperatingArgs {
                 LoadDirectionArg::Rotating => LoadDirection::Rotating,
             }),
             oil_temperature: self.oil_temperature.map(|q| q.si()),
+            misalignment: self.misalignment.map(|q| q.si()),
         }
     }
 }

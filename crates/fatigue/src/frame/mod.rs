@@ -74,6 +74,10 @@ struct Frame {
     /// per bar: the junction elements at rim 0 and rim 1 (junction node first: end 1 at rim
     /// 0, end 2 at rim 1) — the sections whose stresses are reported
     junctions: Vec<[usize; 2]>,
+    /// per bar and rim: the rim elements beside the junction on the window sides `[minus,
+    /// plus]` with the junction's end (1: end 2 of the element toward lower θ, 0: end 1 of the
+    /// one toward higher θ)
+    rim_beside: Vec<[[(usize, usize); 2]; 2]>,
     /// rim-0 node at angle `2πk/N` (k = 0…N−1), rim-1 likewise
     rim_nodes: [Vec<usize>; 2],
     material: Elastic,
@@ -151,6 +155,7 @@ impl Frame {
             width: cage.bar_width_at(r),
         };
         let mut junctions = Vec::with_capacity(z);
+        let mut rim_beside = Vec::with_capacity(z);
         for (b, &first) in bar_nodes.iter().enumerate() {
             let k = seg * b + seg / 2;
             let chain = [
@@ -182,11 +187,14 @@ impl Frame {
                 ));
             }
             junctions.push([ids[1], ids[4]]);
+            let beside = |rim: usize| [(rim * n + (k + n - 1) % n, 1), (rim * n + k, 0)];
+            rim_beside.push([beside(0), beside(1)]);
         }
         Self {
             positions,
             elements,
             junctions,
+            rim_beside,
             rim_nodes,
             material: Elastic::new(cage.youngs_modulus, cage.poisson_ratio),
             density: cage.density,
@@ -402,38 +410,81 @@ fn inertia_inverse(frame: &Frame, masses: &[f64]) -> [[f64; 3]; 3] {
     inverse
 }
 
-/// The fillet stress-concentration factors `[tension, in-plane bending]`.
-pub fn fillet_factors(cage: &CageGeometry, settings: &FrameSettings) -> [f64; 2] {
-    settings.stress_concentration.unwrap_or_else(|| {
-        let h = 0.5 * cage.pocket_circumferential;
-        let wide = cage.bar_width_at(cage.mean_radius()) + 2.0 * h;
-        let r = cage.fillet_radius.max(1e-6);
+/// Stress-concentration factors `[tension, in-plane bending]` of the window-corner fillet for
+/// the bar's axial stress and for the rim's hoop stress.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct FilletFactors {
+    /// the bar (width `w`) meets the rim that runs on over the window on both sides: a double
+    /// shoulder with `h` = half the window, `D` = the pitch
+    pub bar: [f64; 2],
+    /// the rim (axial width `t`) meets the bar, which spans the window: one side of a double
+    /// shoulder of the narrow width `2t`, `h` = half the window's axial size, `D` = the cage
+    /// width
+    pub rim: [f64; 2],
+}
+
+/// The fillet stress-concentration factors (given, or by Roark Table 17.1, [`scf`]).
+pub fn fillet_factors(cage: &CageGeometry, settings: &FrameSettings) -> FilletFactors {
+    if let Some(given) = settings.stress_concentration {
+        return FilletFactors {
+            bar: given,
+            rim: given,
+        };
+    }
+    let r = cage.fillet_radius.max(1e-6);
+    let pair = |h: f64, wide: f64| {
         [
             shoulder_fillet_kt(ShoulderLoad::Tension, h, wide, r),
             shoulder_fillet_kt(ShoulderLoad::InPlaneBending, h, wide, r),
         ]
-    })
+    };
+    let h_bar = 0.5 * cage.pocket_circumferential;
+    FilletFactors {
+        bar: pair(h_bar, cage.bar_width_at(cage.mean_radius()) + 2.0 * h_bar),
+        rim: pair(0.5 * cage.pocket_axial, cage.width),
+    }
 }
 
-/// The axial stress at fillet point `p` of a bar from its junction resultants: `K_t,tension
-/// (N/A − M_z y/I_z) + K_t,bending M_y z/I_y` at the section corner (shear stresses vanish at
-/// a corner).
-fn fillet_stress(
-    cage: &CageGeometry,
+/// Normal stress at a corner `(y, z)` of a rectangular section from its resultants `[N, V_y,
+/// V_z, T, M_y, M_z]`: `K_t,tension (N/A − M_z y/I_z) + K_t,bending M_y z/I_y` (shear stresses
+/// vanish at a corner; bending about the section's y axis is the in-plane bending of the
+/// cage surface's fillet contour).
+fn corner_stress(
     section: &RectangularSection,
     kt: [f64; 2],
-    p: FilletPoint,
+    (y, z): (f64, f64),
     resultants: &[f64; 6],
-) -> Stress {
+) -> f64 {
     let [n, _, _, _, my, mz] = *resultants;
+    kt[0] * (n / section.area() - mz * y / section.i_z()) + kt[1] * my * z / section.i_y()
+}
+
+/// The stress at fillet point `p`: the bar's axial stress at the corner of its window-edge
+/// section and the rim's hoop stress at the corner of its section at the junction, on the
+/// window side — both normal stresses of the fillet's two legs, each with its factor.
+fn fillet_stress(
+    frame: &Frame,
+    cage: &CageGeometry,
+    kt: FilletFactors,
+    p: FilletPoint,
+    u: &[f64],
+) -> Stress {
     let (y, r) = match p.face {
-        Face::Outer => (0.5 * section.height, cage.outer_radius),
-        Face::Inner => (-0.5 * section.height, cage.inner_radius),
+        Face::Outer => (0.5 * cage.radial_thickness(), cage.outer_radius),
+        Face::Inner => (-0.5 * cage.radial_thickness(), cage.inner_radius),
     };
-    let z = p.side.sign() * 0.5 * cage.bar_width_at(r);
-    let sigma =
-        kt[0] * (n / section.area() - mz * y / section.i_z()) + kt[1] * my * z / section.i_y();
-    [0.0, 0.0, sigma, 0.0, 0.0, 0.0]
+    let bar = &frame.elements[frame.junctions[p.bar][p.rim]];
+    let bar_resultants = frame.junction_resultants(frame.junctions[p.bar][p.rim], p.rim, u);
+    let bar_z = p.side.sign() * 0.5 * cage.bar_width_at(r);
+    let sigma_zz = corner_stress(&bar.section, kt.bar, (y, bar_z), &bar_resultants);
+    let (rim_element, end) =
+        frame.rim_beside[p.bar][p.rim][usize::from(p.side == PocketSide::Plus)];
+    let rim = &frame.elements[rim_element];
+    let rim_resultants = frame.junction_resultants(rim_element, end, u);
+    // rim local z is −(cage axis): the window face is at local −t/2 on rim 0, +t/2 on rim 1
+    let rim_z = if p.rim == 0 { -0.5 } else { 0.5 } * cage.rim_axial();
+    let sigma_tt = corner_stress(&rim.section, kt.rim, (y, rim_z), &rim_resultants);
+    [0.0, sigma_tt, sigma_zz, 0.0, 0.0, 0.0]
 }
 
 /// The unit stress cases of `cage` by the frame model.
@@ -466,7 +517,6 @@ pub fn unit_stresses(
     let inertia_inv = inertia_inverse(&frame, &masses);
     let points = FilletPoint::all(cage.pockets);
     let kt = fillet_factors(cage, settings);
-    let bar_section = frame.elements[frame.junctions[0][0]].section;
     let stresses_of = |mut load: Vec<f64>| -> Vec<Stress> {
         for d in frame.supports() {
             load[d] = 0.0;
@@ -474,11 +524,7 @@ pub fn unit_stresses(
         k.solve_in_place(&mut load);
         points
             .iter()
-            .map(|&p| {
-                let element = frame.junctions[p.bar][p.rim];
-                let res = frame.junction_resultants(element, p.rim, &load);
-                fillet_stress(cage, &bar_section, kt, p, &res)
-            })
+            .map(|&p| fillet_stress(&frame, cage, kt, p, &load))
             .collect()
     };
     let mut per_unit_force = Vec::with_capacity(3 * STATIONS.len() * points.len());

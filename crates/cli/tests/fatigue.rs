@@ -1,0 +1,85 @@
+//! Issue 25: `rolldyn simulate --cage-loads`, `rolldyn fatigue` on the embedded model and on a
+//! load export, with its report files and JSON fields.
+
+mod common;
+
+use common::rolldyn;
+
+fn json(out: &std::process::Output) -> serde_json::Value {
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout).expect("JSON")
+}
+
+#[test]
+fn a_load_export_round_trips_through_fatigue() {
+    let dir = std::env::temp_dir().join(format!("rolldyn-fatigue-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let loads = dir.join("loads.parquet");
+    let loads_arg = loads.display().to_string();
+    let sim = rolldyn(&[
+        "simulate",
+        "--duration",
+        "2rev",
+        "--cage-loads",
+        &loads_arg,
+        "--json",
+        "--quiet",
+    ]);
+    json(&sim);
+    assert!(dir.join("loads.json").exists());
+    let out_dir = dir.join("report");
+    let out_arg = out_dir.display().to_string();
+    let answer = json(&rolldyn(&[
+        "fatigue", "--loads", &loads_arg, "--out", &out_arg, "--json",
+    ]));
+    assert_eq!(answer["load_sets"], 180);
+    assert_eq!(answer["stress_model"], "frame");
+    for key in [
+        "damage_per_revolution",
+        "max_stress_pa",
+        "critical_location",
+        "wall_time_s",
+        "extrapolated_life_revolutions",
+    ] {
+        assert!(!answer[key].is_null(), "{key}: {answer}");
+    }
+    // unlimited life is null in JSON, a finite one a number
+    assert!(answer["life_revolutions"].is_null() || answer["life_revolutions"].is_number());
+    for file in [
+        "cage-loads.parquet",
+        "critical-history.csv",
+        "damage-map.csv",
+        "rainflow-matrix.svg",
+        "sn-diagram.svg",
+        "fillet-stress-map.svg",
+    ] {
+        assert!(out_dir.join(file).exists(), "{file}");
+    }
+}
+
+#[test]
+fn fatigue_runs_the_dynamics_of_the_embedded_model_with_an_inclusion() {
+    let answer = json(&rolldyn(&[
+        "fatigue",
+        "--revolutions",
+        "1",
+        "--inclusion",
+        "--json",
+    ]));
+    assert_eq!(answer["load_sets"], 180);
+    assert!(answer["inclusion_max_stress_pa"].as_f64().unwrap() > 0.0);
+    assert!(answer["max_cage_land_force_n"].is_null());
+    assert!(answer["maxima"]["max_cage_land_force_n"].as_f64().unwrap() >= 0.0);
+}
+
+#[test]
+fn a_missing_load_export_exits_2() {
+    let out = rolldyn(&["fatigue", "--loads", "/nonexistent/loads.parquet"]);
+    assert_eq!(out.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(stderr.contains("/nonexistent/loads.json"), "{stderr}");
+}
