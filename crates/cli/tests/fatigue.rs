@@ -1,18 +1,10 @@
 //! Issue 25: `rolldyn simulate --cage-loads`, `rolldyn fatigue` on the embedded model and on a
 //! load export, with its report files and JSON fields.
 
+#[allow(dead_code)] // example(): these tests use the embedded model
 mod common;
 
-use common::rolldyn;
-
-fn json(out: &std::process::Output) -> serde_json::Value {
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout).expect("JSON")
-}
+use common::{json, rolldyn};
 
 #[test]
 fn a_load_export_round_trips_through_fatigue() {
