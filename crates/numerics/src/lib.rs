@@ -25,6 +25,7 @@ pub mod maximize1d;
 pub mod newton2d;
 pub mod root1d;
 pub mod skyline;
+pub mod statistics;
 pub mod step;
 pub mod table;
 pub mod vector_copies;
