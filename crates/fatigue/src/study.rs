@@ -7,7 +7,7 @@ use crate::cage::{CageGeometry, FilletPoint};
 use crate::damage::{DamageBreakdown, MeanStressSettings, life_hours, miner_damage};
 use crate::frame::{FilletFactors, FrameSettings, fillet_factors};
 use crate::inclusion::{InclusionModel, InclusionSettings};
-use crate::loads::{CageLoadExport, ContactKind, ExportHeader, FORMAT, VERSION};
+use crate::loads::{CageLoadExport, ExportHeader, FORMAT, VERSION};
 use crate::rainflow::{Cycle, HistoryKind, rainflow};
 use crate::recorder::{CageLoadRecorder, export_output_step};
 use crate::sn::{BelowKnee, SnCurve, SnSettings};
@@ -137,6 +137,8 @@ pub struct FatigueAnswer {
     pub inclusion_life_revolutions: Option<f64>,
     pub inclusion_max_stress_pa: Option<f64>,
     pub inclusion_location: Option<String>,
+    /// the endurance margin of the worst point on the inclusion's surface
+    pub inclusion_endurance_margin: Option<f64>,
     pub points: Vec<PointFatigue>,
 }
 
@@ -153,6 +155,21 @@ pub struct FatigueResult {
 /// The signed von Mises history of a tensor history.
 fn signed(history: &[Stress]) -> Vec<f64> {
     history.iter().map(signed_von_mises).collect()
+}
+
+/// The largest equivalent fully reversed amplitude of the counted cycles, Pa.
+fn largest_equivalent_amplitude(damage: &DamageBreakdown) -> f64 {
+    damage
+        .cycles
+        .iter()
+        .map(|c| c.equivalent_amplitude_pa)
+        .fold(0.0, f64::max)
+}
+
+/// The allowable amplitude at the knee of the S–N curve (coating and safety factors applied), Pa.
+fn endurance_amplitude(settings: &FatigueSettings) -> f64 {
+    let (_, knee) = settings.sn.knee();
+    knee / settings.sn.settings().knock_down()
 }
 
 /// Rainflow and Miner of one periodic history.
@@ -214,13 +231,8 @@ pub fn evaluate(
         .iter()
         .map(|p| p.max_stress_pa.abs().max(p.min_stress_pa.abs()))
         .fold(0.0, f64::max);
-    let largest_equivalent = breakdown
-        .cycles
-        .iter()
-        .map(|c| c.equivalent_amplitude_pa)
-        .fold(0.0, f64::max);
-    let (_, knee) = settings.sn.knee();
-    let endurance = knee / settings.sn.settings().knock_down();
+    let largest_equivalent = largest_equivalent_amplitude(&breakdown);
+    let endurance = endurance_amplitude(settings);
     let cage_speed_rpm = export.header.cage_speed_rpm;
     let omega = cage_speed_rpm * std::f64::consts::TAU / 60.0;
     let life = breakdown.life_repeats;
@@ -241,6 +253,7 @@ pub fn evaluate(
         inclusion_life_revolutions: None,
         inclusion_max_stress_pa: None,
         inclusion_location: None,
+        inclusion_endurance_margin: None,
         points: fatigue,
     };
     if let Some(inclusion) = &settings.inclusion {
@@ -276,9 +289,11 @@ fn inclusion_fatigue(
         .map(|s| model.remote_from_cylindrical(s))
         .collect();
     let mut worst: Option<(f64, f64, String)> = None;
+    let mut largest_equivalent: f64 = 0.0;
     for (point, history) in model.matrix_stress_histories(&remote) {
         let s = signed(&history);
         let (_, d) = damage_of(&s, settings);
+        largest_equivalent = largest_equivalent.max(largest_equivalent_amplitude(&d));
         let peak = s.iter().fold(0.0_f64, |a, &b| a.max(b.abs()));
         if worst
             .as_ref()
@@ -291,29 +306,10 @@ fn inclusion_fatigue(
         answer.inclusion_life_revolutions = Some(1.0 / damage);
         answer.inclusion_max_stress_pa = Some(peak);
         answer.inclusion_location = Some(location);
+        answer.inclusion_endurance_margin =
+            Some(endurance_amplitude(settings) / largest_equivalent);
     }
     Ok(())
-}
-
-/// The maxima of a load export (the contact forces on the cage).
-pub fn export_maxima(export: &CageLoadExport) -> (f64, f64) {
-    let mut land: f64 = 0.0;
-    let mut bar: f64 = 0.0;
-    for set in &export.sets {
-        let mut per_roller = std::collections::BTreeMap::<usize, f64>::new();
-        let mut land_set = 0.0;
-        for c in &set.contacts {
-            let f = (c.force_n.iter().map(|v| v * v).sum::<f64>()).sqrt();
-            match c.kind {
-                ContactKind::Land => land_set += f,
-                ContactKind::Bar => *per_roller.entry(c.pocket).or_default() += f,
-                ContactKind::PocketEnd => {}
-            }
-        }
-        land = land.max(land_set);
-        bar = per_roller.values().fold(bar, |a, &b| a.max(b));
-    }
-    (land, bar)
 }
 
 /// The header of an export of `cage` at the mean cage speed `cage_speed_rad_s`.

@@ -263,8 +263,9 @@ fn print_answer(a: &Answer) {
     );
     if let Some(life) = f.inclusion_life_revolutions {
         println!(
-            "  with the inclusion: life {life:.4e} revolutions, largest matrix stress {:.1} MPa",
-            f.inclusion_max_stress_pa.unwrap_or(f64::NAN) * 1e-6
+            "  with the inclusion: life {life:.4e} revolutions, largest matrix stress {:.1} MPa, endurance margin {:.2}",
+            f.inclusion_max_stress_pa.unwrap_or(f64::NAN) * 1e-6,
+            f.inclusion_endurance_margin.unwrap_or(f64::NAN)
         );
     }
     println!(
