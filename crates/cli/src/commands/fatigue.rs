@@ -5,6 +5,9 @@
 use super::operating_args::OperatingArgs;
 use crate::failure::Failure;
 use crate::output::{load_model, out_dir, print_json};
+use rolldyn_fatigue::damage::MeanStressSettings;
+use rolldyn_fatigue::inclusion::{InclusionSettings, Interface};
+use rolldyn_fatigue::mean_stress::MeanStressCorrection;
 use rolldyn_fatigue::sn::BelowKnee;
 use rolldyn_fatigue::study::{
     FatigueError, FatigueSettings, StressModelKind, evaluate, record_loads,
@@ -35,6 +38,24 @@ pub enum BelowKneeArg {
     Haibach,
 }
 
+#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum MeanStressArg {
+    /// the amplitude alone (the seed states no correction)
+    None,
+    Goodman,
+    Gerber,
+    /// Smith–Watson–Topper
+    Swt,
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum InterfaceArg {
+    /// the interface opens where it would carry tension (the seed's contact interface)
+    Debonded,
+    /// perfectly bonded everywhere
+    Bonded,
+}
+
 #[derive(clap::Args)]
 #[command(args_conflicts_with_subcommands = true, subcommand_negates_reqs = true)]
 pub struct Args {
@@ -50,10 +71,13 @@ pub struct Args {
     /// Cage revolutions simulated and discarded before the recorded one.
     #[arg(long, default_value_t = 8)]
     pub revolutions: u32,
-    /// Evaluate the Al₂O₃ inclusion (2 × 3.5 × 5 µm, debonding interface) at the critical
-    /// location too.
-    #[arg(long)]
-    pub inclusion: bool,
+    /// Evaluate the Al₂O₃ inclusion (2 × 3.5 × 5 µm; interface debonded, or `--inclusion=bonded`) at
+    /// the critical location too.
+    #[arg(long, value_enum, num_args = 0..=1, require_equals = true, default_missing_value = "debonded")]
+    pub inclusion: Option<InterfaceArg>,
+    /// Mean-stress correction of the counted cycles.
+    #[arg(long, value_enum, default_value = "none")]
+    pub mean_stress: MeanStressArg,
     /// Radius of the window-corner fillet (e.g. 0.5mm).
     #[arg(long, default_value = "0.5mm")]
     pub fillet_radius: Quantity<Length>,
@@ -68,7 +92,7 @@ pub struct Args {
     pub below_knee: BelowKneeArg,
     /// Read the cage loads from an export (`rolldyn simulate --cage-loads`) instead of running
     /// the dynamics.
-    #[arg(long)]
+    #[arg(long, conflicts_with = "model")]
     pub loads: Option<PathBuf>,
     /// Output folder: the load export, stress history, damage map and plots.
     #[arg(long)]
@@ -143,9 +167,22 @@ impl Args {
             settle_revolutions: self.revolutions,
             fillet_radius_m: self.fillet_radius.si(),
             sn,
-            inclusion: self
-                .inclusion
-                .then(rolldyn_fatigue::inclusion::InclusionSettings::default),
+            inclusion: self.inclusion.map(|interface| InclusionSettings {
+                interface: match interface {
+                    InterfaceArg::Debonded => Interface::Debonded,
+                    InterfaceArg::Bonded => Interface::Bonded,
+                },
+                ..InclusionSettings::default()
+            }),
+            mean_stress: MeanStressSettings {
+                correction: match self.mean_stress {
+                    MeanStressArg::None => MeanStressCorrection::None,
+                    MeanStressArg::Goodman => MeanStressCorrection::Goodman,
+                    MeanStressArg::Gerber => MeanStressCorrection::Gerber,
+                    MeanStressArg::Swt => MeanStressCorrection::SmithWatsonTopper,
+                },
+                ..defaults.mean_stress
+            },
             ..defaults
         })
     }
@@ -162,6 +199,12 @@ fn run_life(args: Args) -> Result<(), Failure> {
     let wall = Instant::now();
     let settings = args.settings()?;
     let (mut export, maxima) = match &args.loads {
+        Some(_) if args.operating.any() => {
+            return Err(Failure::Input(
+                "--loads: the operating point is that of the export; drop the operating overrides"
+                    .into(),
+            ));
+        }
         Some(path) => {
             let export = CageLoadExport::read(path).map_err(Failure::Input)?;
             (export, None)
@@ -262,8 +305,13 @@ fn print_answer(a: &Answer) {
         f.endurance_margin
     );
     if let Some(life) = f.inclusion_life_revolutions {
+        let life = if life.is_finite() {
+            format!("{life:.4e} revolutions")
+        } else {
+            "unlimited".into()
+        };
         println!(
-            "  with the inclusion: life {life:.4e} revolutions, largest matrix stress {:.1} MPa, endurance margin {:.2}",
+            "  with the inclusion: life {life}, largest matrix stress {:.1} MPa, endurance margin {:.2}",
             f.inclusion_max_stress_pa.unwrap_or(f64::NAN) * 1e-6,
             f.inclusion_endurance_margin.unwrap_or(f64::NAN)
         );

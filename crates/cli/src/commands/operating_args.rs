@@ -33,6 +33,16 @@ pub struct OperatingArgs {
 }
 
 impl OperatingArgs {
+    /// Whether any override is given.
+    pub fn any(&self) -> bool {
+        self.speed.is_some()
+            || self.outer_speed.is_some()
+            || self.radial_load.is_some()
+            || self.load_direction.is_some()
+            || self.oil_temperature.is_some()
+            || self.misalignment.is_some()
+    }
+
     /// The overrides in SI.
     pub fn overrides(&self) -> Overrides {
         Overrides {
