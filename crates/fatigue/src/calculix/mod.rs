@@ -53,7 +53,7 @@ pub struct CalculixSettings {
 impl Default for CalculixSettings {
     fn default() -> Self {
         CalculixSettings {
-            mesh_size: 6e-3,
+            mesh_size: 8e-3,
             fillet_mesh_size: 0.6e-3,
             refinement_growth: 2.5e-3,
             patch_radius: 1e-3,
@@ -137,7 +137,8 @@ pub fn solve(
     let script = geometry::geo_script(cage, settings);
     write(&work.path.join("cage.geo"), &script)?;
     run::run_gmsh(&work.path, settings)?;
-    let mesh = mesh::Mesh::parse_inp(&read(&work.path.join("cage.inp"))?)?;
+    let sector = mesh::Mesh::parse_inp(&read(&work.path.join("cage.inp"))?)?;
+    let mesh = mesh::Mesh::cyclic(&sector, cage.pockets)?;
     let mesh_seconds = start.elapsed().as_secs_f64();
     let model = Model::build(mesh, cage, bar_station_z, settings)?;
     write(
