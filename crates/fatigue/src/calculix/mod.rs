@@ -23,10 +23,10 @@ pub use points::fillet_arc_midpoint;
 /// Knobs of the solid model.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct CalculixSettings {
-    /// largest element size away from the fillets, m; default 6 mm: two quadratic tetrahedra
-    /// through the 10 mm radial wall of the reference cage (2002834) carry its bending, and the
-    /// 34 ccx solves of that cage (one factorization each) stay within the 2-minute budget
-    /// (30 600 nodes, 91 s on 2 cores; 5 mm with a 3 mm growth: 45 400 nodes, 203 s)
+    /// largest element size away from the fillets, m; default 8 mm: the fillet refinement
+    /// fills most of the rims and bars of the reference cage (2002834), and the 34 ccx solves
+    /// (one factorization each) stay within the 2-minute budget (35 700 nodes, 101 s on 2
+    /// cores)
     pub mesh_size: f64,
     /// element size at the fillet corners, m; default 0.6 mm: about three quadratic elements
     /// along the quarter arc of a 1 mm fillet
