@@ -78,10 +78,14 @@ fn gap_to_station_surface(station: Station, cage: &CageGeometry, x: [f64; 3]) ->
     }
 }
 
-/// Largest distance of a node from the curved surface it discretizes: the sagitta of an edge
-/// of the coarse size on the bore, with straight mid-side nodes, m.
-pub fn surface_tolerance(cage: &CageGeometry, settings: &CalculixSettings) -> f64 {
-    settings.mesh_size.powi(2) / cage.inner_radius + 1e-9
+/// Largest distance of a node from the surface it discretizes, m: on the bore, 1.5 × the
+/// sagitta `h²/(8 r)` of an edge of the coarse size (mid-side nodes sit on the straight
+/// chords); on the planes, round-off.
+fn surface_tolerance(station: Station, cage: &CageGeometry, settings: &CalculixSettings) -> f64 {
+    match station {
+        Station::Land { .. } => 1.5 * settings.mesh_size.powi(2) / (8.0 * cage.inner_radius),
+        _ => 1e-8 * cage.outer_radius,
+    }
 }
 
 /// The boundary nodes on the station's surface that share its unit force: those within
@@ -95,7 +99,7 @@ pub fn patch(
     settings: &CalculixSettings,
 ) -> Result<Vec<usize>, CalculixError> {
     let point = station.point(cage, bar_station_z);
-    let tolerance = surface_tolerance(cage, settings);
+    let tolerance = surface_tolerance(station, cage, settings);
     let mut on_surface: Vec<(f64, usize)> = (0..mesh.coords.len())
         .filter(|&n| boundary[n])
         .filter(|&n| gap_to_station_surface(station, cage, mesh.coords[n]) < tolerance)

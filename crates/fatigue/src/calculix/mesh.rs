@@ -82,6 +82,60 @@ impl Mesh {
         Ok(mesh)
     }
 
+    /// The whole cage from the mesh of one pitch (the sector between the centre planes of the
+    /// bars at `θ = ∓π/Z`): `pockets` copies rotated by whole pitches, each copy's nodes on
+    /// the `+π/Z` plane merged with the next copy's nodes on its `−π/Z` plane.
+    pub fn cyclic(sector: &Mesh, pockets: usize) -> Result<Mesh, CalculixError> {
+        let used = sector.used_nodes();
+        let half = std::f64::consts::PI / pockets as f64;
+        let (s, c) = half.sin_cos();
+        let on_plane = |sign: f64, n: usize| {
+            let [x, y, _] = sector.coords[n];
+            used[n] && (y * c - sign * x * s).abs() < 1e-9
+        };
+        let minus: Vec<usize> = (0..used.len()).filter(|&n| on_plane(-1.0, n)).collect();
+        // the node of the −π/Z plane that the rotation by a pitch brings onto each node
+        let mut partner = vec![None; used.len()];
+        for n in (0..used.len()).filter(|&n| on_plane(1.0, n)) {
+            let (r, z) = radius_and_z(sector.coords[n]);
+            let m = minus.iter().copied().min_by(|&a, &b| {
+                let gap = |k: usize| {
+                    let (rk, zk) = radius_and_z(sector.coords[k]);
+                    (rk - r).hypot(zk - z)
+                };
+                gap(a).total_cmp(&gap(b))
+            });
+            let m = m.filter(|&m| {
+                let (rm, zm) = radius_and_z(sector.coords[m]);
+                (rm - r).hypot(zm - z) < 1e-7
+            });
+            partner[n] = Some(m.ok_or_else(|| {
+                CalculixError::Results("the cut faces of the sector mesh do not match".into())
+            })?);
+        }
+        let own: Vec<usize> = (0..used.len())
+            .filter(|&n| used[n] && partner[n].is_none())
+            .collect();
+        let mut slot = vec![usize::MAX; used.len()];
+        own.iter().enumerate().for_each(|(k, &n)| slot[n] = k);
+        let global = |copy: usize, n: usize| match partner[n] {
+            Some(m) => ((copy + 1) % pockets) * own.len() + slot[m],
+            None => copy * own.len() + slot[n],
+        };
+        let mut mesh = Mesh::default();
+        for copy in 0..pockets {
+            let (sn, cs) = (2.0 * half * copy as f64).sin_cos();
+            for &n in &own {
+                let [x, y, z] = sector.coords[n];
+                mesh.coords.push([cs * x - sn * y, sn * x + cs * y, z]);
+            }
+            let tets = sector.tets.iter().map(|tet| tet.map(|n| global(copy, n)));
+            mesh.tets.extend(tets);
+        }
+        mesh.ids = (1..=mesh.coords.len()).collect();
+        Ok(mesh)
+    }
+
     /// Whether each node lies on the boundary: it belongs to a face used by one element only.
     pub fn boundary_nodes(&self) -> Vec<bool> {
         let mut count: HashMap<[usize; 3], (usize, [usize; 6])> = HashMap::new();
@@ -153,6 +207,10 @@ impl Mesh {
     }
 }
 
+fn radius_and_z(x: [f64; 3]) -> (f64, f64) {
+    (x[0].hypot(x[1]), x[2])
+}
+
 /// Euclidean distance, m.
 pub fn distance(a: [f64; 3], b: [f64; 3]) -> f64 {
     ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2) + (a[2] - b[2]).powi(2)).sqrt()
@@ -197,6 +255,40 @@ mod tests {
         let m = mesh.nodal_masses(6.0);
         assert!((m.iter().sum::<f64>() - 1.0).abs() < 1e-12);
         assert!((m[0] + 0.05).abs() < 1e-12 && (m[4] - 0.2).abs() < 1e-12);
+    }
+
+    #[test]
+    fn sector_copies_share_the_nodes_of_their_cut_planes() {
+        // four pitches: the cut planes are y = ∓x; node 0 lies on +π/4, node 1 on −π/4
+        let corners = [
+            [1.0, 1.0, 0.0],
+            [1.0, -1.0, 0.0],
+            [2.0, 0.0, 0.0],
+            [1.5, 0.0, 1.0],
+        ];
+        let edges = [(0, 1), (1, 2), (2, 0), (0, 3), (1, 3), (2, 3)];
+        let mut coords = corners.to_vec();
+        for (a, b) in edges {
+            let (p, q) = (corners[a], corners[b]);
+            coords.push([
+                0.5 * (p[0] + q[0]),
+                0.5 * (p[1] + q[1]),
+                0.5 * (p[2] + q[2]),
+            ]);
+        }
+        let sector = Mesh {
+            ids: (1..=10).collect(),
+            coords,
+            tets: vec![[0, 1, 2, 3, 4, 5, 6, 7, 8, 9]],
+        };
+        let cage = Mesh::cyclic(&sector, 4).unwrap();
+        assert_eq!((cage.coords.len(), cage.tets.len()), (36, 4));
+        for (copy, tet) in cage.tets.iter().enumerate() {
+            let next = cage.tets[(copy + 1) % 4];
+            assert_eq!(tet[0], next[1]);
+            let volume = cage.volume(tet);
+            assert!((volume - sector.volume(&sector.tets[0])).abs() < 1e-12);
+        }
     }
 
     #[test]

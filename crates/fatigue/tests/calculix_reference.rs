@@ -1,0 +1,75 @@
+//! The solid model of the reference cage (2002834) at the default mesh: wall time, mesh size,
+//! balance and the fillet stresses of a unit tangential bar force (theory §10.4). Minutes of
+//! gmsh and ccx: run on demand with
+//! `cargo test -p rolldyn-fatigue --test calculix_reference -- --ignored --nocapture`.
+
+use rolldyn_fatigue::calculix::{CalculixSettings, solve};
+use rolldyn_fatigue::{CageGeometry, FilletPoint, STATIONS, Station, signed_von_mises};
+
+#[test]
+#[ignore = "solves the full reference cage with gmsh and ccx (about two minutes)"]
+fn reference_cage_at_the_default_mesh() {
+    let cage = CageGeometry {
+        pockets: 18,
+        inner_radius: 86.75e-3,
+        outer_radius: 97e-3,
+        width: 20e-3,
+        pocket_axial: 11.25e-3,
+        pocket_circumferential: 11.25e-3,
+        bar_contact_radius: 96.25e-3,
+        fillet_radius: 1e-3,
+        youngs_modulus: 211e9,
+        poisson_ratio: 0.3,
+        density: 7850.0,
+    };
+    let settings = CalculixSettings::default();
+    let solution = solve(&cage, 4.4e-3, &settings, None).unwrap();
+    let r = &solution.report;
+    println!("{r:#?}");
+    let ring = cage.density * cage.mean_radius().powi(2);
+    println!(
+        "rim hoop / (rho R^2) = {:.3}",
+        r.rim_hoop_per_spin_squared / ring
+    );
+    let spin = &solution.unit_stresses.per_unit_spin_squared;
+    let scale = spin.iter().flatten().fold(0.0_f64, |m, v| m.max(v.abs()));
+    let mut scatter: f64 = 0.0;
+    for p in FilletPoint::all(cage.pockets) {
+        let first = spin[FilletPoint { bar: 0, ..p }.index()];
+        for (a, b) in spin[p.index()].iter().zip(first) {
+            scatter = scatter.max((a - b).abs() / scale);
+        }
+    }
+    println!(
+        "spin²: largest |σ| {scale:.1} Pa, bar-to-bar scatter {:.1} %",
+        100.0 * scatter
+    );
+    let station = STATIONS
+        .iter()
+        .position(|s| {
+            *s == Station::Bar {
+                side: rolldyn_fatigue::PocketSide::Plus,
+                end: 0,
+            }
+        })
+        .unwrap();
+    let table = &solution.unit_stresses;
+    let mut rows: Vec<(FilletPoint, [f64; 6])> = FilletPoint::all(cage.pockets)
+        .into_iter()
+        .map(|p| (p, *table.unit(p, station, 1, 0)))
+        .collect();
+    let largest = |s: &[f64; 6]| s.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+    rows.sort_by(|a, b| largest(&b.1).total_cmp(&largest(&a.1)));
+    println!("| fillet point | σ_rr | σ_θθ | σ_zz | τ_rθ | τ_θz | τ_zr | signed vM | (kPa per N)");
+    let loaded_bar = rows.iter().filter(|(p, _)| p.bar == 0);
+    for (p, s) in rows.iter().take(12).chain(loaded_bar) {
+        let k: Vec<String> = s.iter().map(|v| format!("{:.1}", v / 1e3)).collect();
+        println!(
+            "| {} | {} | {:.1} |",
+            p.label(),
+            k.join(" | "),
+            signed_von_mises(s) / 1e3
+        );
+    }
+    assert!(r.largest_reaction_ratio < 1e-3);
+}
