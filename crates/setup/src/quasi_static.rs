@@ -208,6 +208,8 @@ pub fn dynamics_start_conditions(
     // the dynamics' drag law, so that the start is the dynamics' own steady state
     qs.drag.viscous_coefficient_n_m_s = Some(conditions.cage_drag_n_m_s);
     qs.friction = muraki_friction(lubrication);
+    // the dynamics' misalignment (a command-line override included), not the model file's
+    qs.misalignment_rad = Some(conditions.misalignment_rad);
     qs
 }
 
