@@ -3,7 +3,7 @@
 
 use rolldyn_dynamics::EndContactRegime;
 use rolldyn_dynamics::V3;
-use rolldyn_dynamics::output::{ContactSnapshot, OutputSink, RollerSnapshot, Snapshot};
+use rolldyn_dynamics::output::{CageLoads, ContactSnapshot, OutputSink, RollerSnapshot, Snapshot};
 use rolldyn_geometry::BearingModel;
 use rolldyn_wear::bearing_data::WearData;
 use rolldyn_wear::recorder::WearRecorder;
@@ -118,6 +118,14 @@ impl Step {
                 rib_regime: &self.regime,
                 pocket_face_force_n: zero,
                 pocket_face_power_w: zero,
+            },
+            cage_loads: CageLoads {
+                axis: [0.0, 0.0, 1.0],
+                acceleration_m_s2: V3::default(),
+                angular_velocity_rad_s: V3::default(),
+                angular_acceleration_rad_s2: V3::default(),
+                pockets: &[],
+                land: Default::default(),
             },
         }
     }
