@@ -291,7 +291,7 @@ impl FilletPoint {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
 
     pub(crate) fn cage_2002834() -> CageGeometry {

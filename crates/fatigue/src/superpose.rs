@@ -128,19 +128,7 @@ mod tests {
     use super::*;
 
     fn cage() -> CageGeometry {
-        CageGeometry {
-            pockets: 18,
-            inner_radius: 86.75e-3,
-            outer_radius: 97.0e-3,
-            width: 20e-3,
-            pocket_axial: 11.25e-3,
-            pocket_circumferential: 11.25e-3,
-            bar_contact_radius: 96.25e-3,
-            fillet_radius: 1e-3,
-            youngs_modulus: 211e9,
-            poisson_ratio: 0.3,
-            density: 7850.0,
-        }
+        crate::cage::tests::cage_2002834()
     }
 
     fn total(loads: &[StationLoad], cage: &CageGeometry) -> [f64; 3] {

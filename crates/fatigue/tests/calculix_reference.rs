@@ -4,24 +4,18 @@
 //! `cargo test -p rolldyn-fatigue --test calculix_reference -- --ignored --nocapture`.
 
 use rolldyn_fatigue::calculix::{CalculixSettings, solve};
-use rolldyn_fatigue::{CageGeometry, FilletPoint, STATIONS, Station, signed_von_mises};
+use rolldyn_fatigue::study::cage_geometry;
+use rolldyn_fatigue::{FilletPoint, STATIONS, Station, signed_von_mises};
 
 #[test]
 #[ignore = "solves the full reference cage with gmsh and ccx (about two minutes)"]
 fn reference_cage_at_the_default_mesh() {
-    let cage = CageGeometry {
-        pockets: 18,
-        inner_radius: 86.75e-3,
-        outer_radius: 97e-3,
-        width: 20e-3,
-        pocket_axial: 11.25e-3,
-        pocket_circumferential: 11.25e-3,
-        bar_contact_radius: 96.25e-3,
-        fillet_radius: 1e-3,
-        youngs_modulus: 211e9,
-        poisson_ratio: 0.3,
-        density: 7850.0,
+    // the embedded 2002834 model's cage with a 1 mm fillet
+    let model = rolldyn_model::parse(rolldyn_model::DEFAULT_MODEL, "2002834.toml").unwrap();
+    let rolldyn_geometry::BearingModel::Cylindrical(bearing) = &model.bearing else {
+        panic!("the embedded model is cylindrical");
     };
+    let cage = cage_geometry(bearing, 1e-3).unwrap();
     let settings = CalculixSettings::default();
     let solution = solve(&cage, 4.4e-3, &settings, None).unwrap();
     let r = &solution.report;
