@@ -5,6 +5,7 @@
 use super::operating_args::OperatingArgs;
 use crate::failure::Failure;
 use crate::output::{load_model, out_dir, print_json};
+use indicatif::{ProgressBar, ProgressDrawTarget};
 use rolldyn_fatigue::damage::MeanStressSettings;
 use rolldyn_fatigue::inclusion::{InclusionSettings, Interface};
 use rolldyn_fatigue::mean_stress::MeanStressCorrection;
@@ -259,13 +260,24 @@ fn unit_stresses(
                 .clone()
                 .unwrap_or_else(|| PathBuf::from("out/calculix-cache"));
             let cache = out_dir(&cache)?;
-            rolldyn_fatigue::calculix::unit_stresses(
+            let spinner = ProgressBar::new_spinner();
+            if args.json {
+                spinner.set_draw_target(ProgressDrawTarget::hidden());
+            }
+            spinner.set_message(format!(
+                "CalculiX unit cases of this cage (from {} if solved before, else gmsh + ccx, about 2 min)",
+                cache.display()
+            ));
+            spinner.enable_steady_tick(std::time::Duration::from_millis(200));
+            let unit = rolldyn_fatigue::calculix::unit_stresses(
                 cage,
                 z,
                 &rolldyn_fatigue::calculix::CalculixSettings::default(),
                 Some(&cache),
             )
-            .map_err(|e| Failure::Run(e.to_string()))
+            .map_err(|e| Failure::Run(e.to_string()));
+            spinner.finish_and_clear();
+            unit
         }
     }
 }
