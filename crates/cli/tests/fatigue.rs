@@ -75,3 +75,26 @@ fn a_missing_load_export_exits_2() {
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(stderr.contains("/nonexistent/loads.json"), "{stderr}");
 }
+
+/// The done-when with the solid model: the embedded model's cage by gmsh + CalculiX
+/// (about two minutes once; the unit cases are then cached) from a short run's load export.
+#[test]
+fn fatigue_by_the_calculix_solid_model() {
+    let dir = std::env::temp_dir().join(format!("rolldyn-fatigue-ccx-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let cache = dir.join("cache").display().to_string();
+    let answer = json(&rolldyn(&[
+        "fatigue",
+        "--revolutions",
+        "1",
+        "--stress",
+        "calculix",
+        "--cache",
+        &cache,
+        "--json",
+    ]));
+    assert_eq!(answer["stress_model"], "calculix");
+    assert_eq!(answer["load_sets"], 180);
+    assert!(answer["max_stress_pa"].as_f64().unwrap() > 0.0);
+    assert!(std::fs::read_dir(&cache).unwrap().count() > 0);
+}
