@@ -45,7 +45,8 @@ enum Command {
     Startup(commands::startup::Args),
     /// Wear of raceways, rollers, cage bars, roller ends and ribs over the bearing's life.
     Wear(commands::wear::Args),
-    /// Cage fatigue tools: rainflow cycle counting of a stress history.
+    /// Cage high-cycle fatigue from one steady revolution of the dynamics (frame or CalculiX
+    /// stresses, rainflow, S–N, Miner, inclusion); `fatigue rainflow` counts a stress history.
     Fatigue(commands::fatigue::Args),
     /// Re-run a seed's validation study and write its tables and plots.
     Study(commands::study::Args),
