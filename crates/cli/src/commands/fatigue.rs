@@ -82,6 +82,10 @@ pub struct Args {
     /// Radius of the window-corner fillet (e.g. 0.5mm).
     #[arg(long, default_value = "0.5mm")]
     pub fillet_radius: Quantity<Length>,
+    /// Stress-concentration factors of the frame model's fillets, `TENSION,BENDING` (default: from
+    /// the fillet radius by Roark's shoulder-fillet charts).
+    #[arg(long, value_parser = parse_factor_pair)]
+    pub stress_concentration: Option<[f64; 2]>,
     /// Factor on the S–N curve for the silver plating (seed: 1.5).
     #[arg(long, default_value_t = 1.5)]
     pub coating_factor: f64,
@@ -166,6 +170,10 @@ impl Args {
                 StressArg::Calculix => StressModelKind::Calculix,
             },
             settle_revolutions: self.revolutions,
+            frame: rolldyn_fatigue::frame::FrameSettings {
+                stress_concentration: self.stress_concentration,
+                ..defaults.frame.clone()
+            },
             fillet_radius_m: self.fillet_radius.si(),
             sn,
             inclusion: self.inclusion.map(|interface| InclusionSettings {
@@ -186,6 +194,21 @@ impl Args {
             },
             ..defaults
         })
+    }
+}
+
+/// `2.5,2.0` → `[2.5, 2.0]`, both at least 1.
+fn parse_factor_pair(text: &str) -> Result<[f64; 2], String> {
+    let values: Vec<f64> = text
+        .split(',')
+        .map(|v| v.trim().parse::<f64>())
+        .collect::<Result<_, _>>()
+        .map_err(|e| format!("'{text}': {e}"))?;
+    match values.as_slice() {
+        &[t, b] if t >= 1.0 && b >= 1.0 && t.is_finite() && b.is_finite() => Ok([t, b]),
+        _ => Err(format!(
+            "'{text}': two factors ≥ 1, tension and bending, e.g. 2.5,2.0"
+        )),
     }
 }
 
