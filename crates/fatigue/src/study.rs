@@ -136,6 +136,8 @@ pub struct FatigueAnswer {
     pub maxima: Option<RevolutionMaxima>,
     pub inclusion_life_revolutions: Option<f64>,
     pub inclusion_max_stress_pa: Option<f64>,
+    /// the worst point on the inclusion's surface, in the ellipsoid axes (by default radial,
+    /// circumferential, axial)
     pub inclusion_location: Option<String>,
     /// the endurance margin of the worst point on the inclusion's surface
     pub inclusion_endurance_margin: Option<f64>,
@@ -299,7 +301,9 @@ fn inclusion_fatigue(
             .as_ref()
             .is_none_or(|w| (d.damage_per_repeat, peak) > (w.0, w.1))
         {
-            worst = Some((d.damage_per_repeat, peak, format!("{point:?}")));
+            let [x, y, z] = point.position.map(|v| v * 1e6);
+            let label = format!("({x:.2}, {y:.2}, {z:.2}) µm in the ellipsoid axes");
+            worst = Some((d.damage_per_repeat, peak, label));
         }
     }
     if let Some((damage, peak, location)) = worst {
