@@ -98,3 +98,16 @@ fn fatigue_by_the_calculix_solid_model() {
     assert!(answer["max_stress_pa"].as_f64().unwrap() > 0.0);
     assert!(std::fs::read_dir(&cache).unwrap().count() > 0);
 }
+
+#[test]
+fn a_bad_sn_curve_file_exits_2_naming_the_line() {
+    let dir = std::env::temp_dir().join(format!("rolldyn-fatigue-sn-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("sn.csv");
+    std::fs::write(&path, "N,sigma_a_MPa\n1e3,600\n1e6,two hundred\n").unwrap();
+    let file = path.display().to_string();
+    let out = rolldyn(&["fatigue", "--revolutions", "1", "--sn-curve", &file]);
+    assert_eq!(out.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(stderr.contains(&format!("{file}: line 3")), "{stderr}");
+}

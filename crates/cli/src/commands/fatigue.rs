@@ -9,7 +9,7 @@ use indicatif::{ProgressBar, ProgressDrawTarget};
 use rolldyn_fatigue::damage::MeanStressSettings;
 use rolldyn_fatigue::inclusion::{InclusionSettings, Interface};
 use rolldyn_fatigue::mean_stress::MeanStressCorrection;
-use rolldyn_fatigue::sn::BelowKnee;
+use rolldyn_fatigue::sn::{BelowKnee, SnCurve};
 use rolldyn_fatigue::study::{
     FatigueError, FatigueSettings, StressModelKind, evaluate, record_loads,
 };
@@ -86,6 +86,10 @@ pub struct Args {
     /// the fillet radius by Roark's shoulder-fillet charts).
     #[arg(long, value_parser = parse_factor_pair)]
     pub stress_concentration: Option<[f64; 2]>,
+    /// The base S–N curve (fully reversed) as CSV rows `N, sigma_a_MPa` (default: AISI 4340
+    /// through the seed's 480 MPa at 10⁶ cycles, docs/theory.md §10.5).
+    #[arg(long)]
+    pub sn_curve: Option<PathBuf>,
     /// Factor on the S–N curve for the silver plating (seed: 1.5).
     #[arg(long, default_value_t = 1.5)]
     pub coating_factor: f64,
@@ -159,9 +163,16 @@ impl Args {
                 BelowKneeArg::Haibach => BelowKnee::Haibach,
             },
         };
-        let sn = defaults
-            .sn
-            .clone()
+        let base = match &self.sn_curve {
+            Some(path) => {
+                let file = path.display().to_string();
+                let text = rolldyn_model::read_input_file(path)
+                    .map_err(|e| Failure::Input(format!("{file}: {e}")))?;
+                SnCurve::from_csv_text(&text).map_err(|e| Failure::Input(format!("{file}: {e}")))?
+            }
+            None => defaults.sn.clone(),
+        };
+        let sn = base
             .with_settings(sn_settings)
             .map_err(|e| Failure::Input(format!("--coating-factor/--safety-factor: {e}")))?;
         Ok(FatigueSettings {
