@@ -11,7 +11,7 @@ use rolldyn_fatigue::inclusion::{InclusionSettings, Interface};
 use rolldyn_fatigue::mean_stress::MeanStressCorrection;
 use rolldyn_fatigue::sn::{BelowKnee, SnCurve};
 use rolldyn_fatigue::study::{
-    FatigueError, FatigueSettings, StressModelKind, evaluate, record_loads,
+    FatigueError, FatigueSettings, RevolutionMaxima, StressModelKind, evaluate, record_loads,
 };
 use rolldyn_fatigue::{
     CageLoadExport, Cycle, HistoryKind, UnitStresses, rainflow, read_history_csv,
@@ -242,7 +242,8 @@ fn run_life(args: Args) -> Result<(), Failure> {
         }
         Some(path) => {
             let export = CageLoadExport::read(path).map_err(Failure::Input)?;
-            (export, None)
+            let maxima = RevolutionMaxima::of_export(&export);
+            (export, Some(maxima))
         }
         None => {
             let model = load_model(args.model.as_deref())?;
