@@ -205,6 +205,9 @@ fn read_contacts(table: &Path) -> Result<Vec<(usize, ContactLoad)>, String> {
         if v.iter().any(|x| !x.is_finite()) {
             return Err(fail(&"a row with a missing number"));
         }
+        if v[..3].iter().any(|x| *x < 0.0 || x.fract() != 0.0) {
+            return Err(fail(&"set, pocket and location must be whole numbers ≥ 0"));
+        }
         out.push((
             v[0] as usize,
             ContactLoad {

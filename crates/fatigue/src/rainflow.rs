@@ -148,44 +148,6 @@ mod tests {
         );
     }
 
-    /// A small deterministic generator (the tests must not depend on a random crate).
-    fn history(seed: u64, n: usize) -> Vec<f64> {
-        let mut s = seed;
-        (0..n)
-            .map(|_| {
-                s = s
-                    .wrapping_mul(6364136223846793005)
-                    .wrapping_add(1442695040888963407);
-                ((s >> 11) as f64 / (1u64 << 53) as f64) * 200.0 - 100.0
-            })
-            .collect()
-    }
-
-    #[test]
-    fn a_period_counts_what_its_repetition_adds() {
-        // counting r repetitions non-periodically, every repetition after the first adds the
-        // periodic count of one period (only the ends' residue differs)
-        for seed in 1..20 {
-            let one = history(seed, 60);
-            let periodic = rainflow(&one, HistoryKind::Periodic);
-            assert!(periodic.iter().all(|c| c.count == 1.0));
-            let full = |reps: usize| -> f64 {
-                let h: Vec<f64> = (0..reps).flat_map(|_| one.iter().copied()).collect();
-                rainflow(&h, HistoryKind::NonPeriodic)
-                    .iter()
-                    .filter(|c| c.count == 1.0)
-                    .map(|c| c.range * c.range)
-                    .sum()
-            };
-            let per_period: f64 = periodic.iter().map(|c| c.range * c.range).sum();
-            let added = full(6) - full(5);
-            assert!(
-                (added / per_period - 1.0).abs() < 1e-9,
-                "seed {seed}: {added} vs {per_period}"
-            );
-        }
-    }
-
     #[test]
     fn a_periodic_sine_with_a_ripple_closes_the_big_and_the_small_cycle() {
         // one period: 0 → 10 → 4 → 6 → −10 → 0 (the ripple 4 ↔ 6 rides on the big swing)

@@ -1,7 +1,8 @@
 //! Rainflow counting against an independent implementation: ASTM E1049-85 §5.4.4's
 //! three-point range-counting procedure written from the standard's text (a different algorithm
 //! from the crate's four-point rule), on pseudo-random histories; and the periodic mode against
-//! that procedure on the history rotated to start and end at its largest value.
+//! that procedure on the history rotated to start and end at its largest value; and the
+//! periodic count against what one more repetition of the period adds.
 
 use rolldyn_fatigue::{Cycle, HistoryKind, rainflow, turning_points};
 
@@ -92,6 +93,31 @@ fn periodic_counts_match_the_procedure_on_the_history_closed_at_its_maximum() {
             histogram(&rainflow(&h, HistoryKind::Periodic)),
             histogram(&astm_three_point(&closed)),
             "seed {seed}: {h:?}"
+        );
+    }
+}
+
+#[test]
+fn a_period_counts_what_its_repetition_adds() {
+    // counting r repetitions non-periodically, every repetition after the first adds the
+    // periodic count of one period (only the ends' residue differs)
+    for seed in 1..20 {
+        let one = random_history(seed, 60);
+        let periodic = rainflow(&one, HistoryKind::Periodic);
+        assert!(periodic.iter().all(|c| c.count == 1.0));
+        let full = |reps: usize| -> f64 {
+            let h: Vec<f64> = (0..reps).flat_map(|_| one.iter().copied()).collect();
+            rainflow(&h, HistoryKind::NonPeriodic)
+                .iter()
+                .filter(|c| c.count == 1.0)
+                .map(|c| c.range * c.range)
+                .sum()
+        };
+        let per_period: f64 = periodic.iter().map(|c| c.range * c.range).sum();
+        let added = full(6) - full(5);
+        assert!(
+            (added / per_period - 1.0).abs() < 1e-9,
+            "seed {seed}: {added} vs {per_period}"
         );
     }
 }

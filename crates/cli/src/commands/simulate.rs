@@ -579,10 +579,20 @@ impl Duration {
 pub fn run(args: Args) -> Result<(), Failure> {
     let model = load_model(args.model.as_deref())?;
     let output_step = checked_output_step(args.output_step)?;
-    // the cage-load export samples on the cage's period, known once the model is prepared
-    let period = match args.cage_loads {
-        Some(_) => prepare(&model, &args.operating.overrides(), 0.0, args.tolerance)?.1,
-        None => None,
+    // the cage-load export samples on the epicyclic cage period at t = 0
+    let period = match (&args.cage_loads, &model.bearing) {
+        (Some(_), rolldyn_geometry::BearingModel::Cylindrical(bearing)) => {
+            let c = rolldyn_setup::conditions(&args.operating.overrides(), &model)?;
+            let w =
+                bearing.epicyclic_cage_speed(c.inner_speed.speed(0.0), c.outer_speed.speed(0.0));
+            (w != 0.0).then(|| std::f64::consts::TAU / w.abs())
+        }
+        (Some(_), _) => {
+            return Err(Failure::Input(
+                "--cage-loads needs a complete bearing (bearing.kind = \"cylindrical\")".into(),
+            ));
+        }
+        (None, _) => None,
     };
     let (grid_step, thin) = sampling(&args, output_step, period)?;
     let (mut sim, revolution) = prepare(
