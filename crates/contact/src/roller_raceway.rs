@@ -140,8 +140,13 @@ impl RollerRacewayContact {
         inner: bool,
         tilt: f64,
     ) -> Result<Self, RollerContactError> {
-        let roller = model.roller();
-        let (ring, is_inner) = model.raceway(inner);
+        let (Some(roller), Some((ring, is_inner))) = (model.roller(), model.raceway(inner)) else {
+            return Err(RollerContactError::Geometry(
+                "the roller–raceway contact study supports cylindrical bearings; for a double-row \
+                 tapered bearing use `rolldyn check|loads|simulate`"
+                    .into(),
+            ));
+        };
         let conformity = if is_inner {
             Conformity::ConvexConvex
         } else {
@@ -170,7 +175,7 @@ impl RollerRacewayContact {
                     poisson_ratio: m2.poisson_ratio,
                 }
             }),
-            BearingModel::RollerRaceway(_) => None,
+            BearingModel::RollerRaceway(_) | BearingModel::Tapered(_) => None,
         };
         if !tilt.is_finite() || tilt.abs() >= 0.1 {
             return Err(RollerContactError::Geometry(format!(

@@ -35,17 +35,34 @@ pub struct Cage {
     pub mass_properties: MassProperties,
 }
 
+/// Mass properties of a ring (diameters `inner` < `outer`, `width`, density `rho`) from which
+/// `window_volume` of pocket material is removed uniformly (its effect on the ratio of inertia to
+/// mass is below 1 % for bar-type cages).
+pub(crate) fn windowed_ring(
+    inner: f64,
+    outer: f64,
+    width: f64,
+    rho: f64,
+    window_volume: f64,
+) -> MassProperties {
+    let (ri, ro) = (0.5 * inner, 0.5 * outer);
+    let ring = MassProperties::hollow_cylinder(ri, ro, width, rho);
+    let ring_volume = std::f64::consts::PI * (ro * ro - ri * ri) * width;
+    ring.scaled((1.0 - window_volume / ring_volume).max(0.0))
+}
+
 impl Cage {
     /// Mass properties of the cage ring with `pockets` windows of the pocket size cut through
-    /// its radial wall; the window material is removed uniformly (its effect on the ratio of
-    /// inertia to mass is below 1 % for bar-type cages).
+    /// its radial wall: [`windowed_ring`].
     pub fn computed_mass_properties(&self, pockets: usize) -> MassProperties {
-        let (ri, ro) = (0.5 * self.inner_diameter, 0.5 * self.outer_diameter);
-        let ring = MassProperties::hollow_cylinder(ri, ro, self.width, self.material.density);
-        let ring_volume = std::f64::consts::PI * (ro * ro - ri * ri) * self.width;
-        let window_volume =
-            pockets as f64 * self.pocket_circumferential * self.pocket_axial * (ro - ri);
-        ring.scaled((1.0 - window_volume / ring_volume).max(0.0))
+        let wall = 0.5 * (self.outer_diameter - self.inner_diameter);
+        windowed_ring(
+            self.inner_diameter,
+            self.outer_diameter,
+            self.width,
+            self.material.density,
+            pockets as f64 * self.pocket_circumferential * self.pocket_axial * wall,
+        )
     }
 
     /// Diameter of the guiding land the cage runs on, from the cage and its floating clearance.

@@ -18,6 +18,7 @@ pub mod plausible;
 pub mod profile;
 mod ring;
 mod roller;
+pub mod tapered;
 mod wear_map;
 
 pub use bearing::{Clearance, CylindricalRollerBearing, Misalignment};
@@ -31,4 +32,8 @@ pub use model::{BearingModel, RollerRacewayPair};
 pub use profile::{Chamfer, Profile, ProfileShape};
 pub use ring::{GuidingLand, Rib, RibFace, RibSide, Ring};
 pub use roller::{EndFace, Roller, SliceStack};
+pub use tapered::{
+    Arrangement, DoubleRowTaperedBearing, LargeRib, LargeRibContact, RacewayLine, Rz, SmallRibFace,
+    TaperedCage, TaperedRibFace, TaperedRoller, TaperedRow, TaperedSliceStack,
+};
 pub use wear_map::{RacewayWearMap, WearAtAngle, angle_bin_centre_rad, angle_bin_of};

@@ -23,13 +23,26 @@ impl MassProperties {
         }
     }
 
-    /// Solid of revolution of radius `r(x)`, `x ∈ [-h, h]`, by composite Simpson rule with
-    /// `n` (even) intervals: m = ρ∫πr², I_ax = ρ∫πr⁴/2, I_tr = ρ∫(πr⁴/4 + πr²x²).
+    /// Solid of revolution of radius `r(x)`, `x ∈ [-h, h]`: [`Self::solid_of_revolution_with_centroid`]
+    /// without the centroid.
     pub fn solid_of_revolution(radius: impl Fn(f64) -> f64, h: f64, rho: f64, n: usize) -> Self {
+        Self::solid_of_revolution_with_centroid(radius, h, rho, n).0
+    }
+
+    /// Solid of revolution of radius `r(x)`, `x ∈ [-h, h]`, by composite Simpson rule with
+    /// `n` (even) intervals: m = ρ∫πr², x_c = ρ∫πr²x / m, I_ax = ρ∫πr⁴/2,
+    /// I_tr = ρ∫(πr⁴/4 + πr²x²) − m x_c² (about the centre of mass). Returns the properties and
+    /// the centroid position x_c.
+    pub fn solid_of_revolution_with_centroid(
+        radius: impl Fn(f64) -> f64,
+        h: f64,
+        rho: f64,
+        n: usize,
+    ) -> (Self, f64) {
         let n = n.max(2) + n % 2;
         let dx = 2.0 * h / n as f64;
         let pi = std::f64::consts::PI;
-        let (mut m, mut ia, mut it) = (0.0, 0.0, 0.0);
+        let (mut m, mut mx, mut ia, mut it) = (0.0, 0.0, 0.0, 0.0);
         for k in 0..=n {
             let x = -h + k as f64 * dx;
             let r = radius(x).max(0.0);
@@ -42,15 +55,19 @@ impl MassProperties {
             };
             let area = pi * r * r;
             m += w * area;
+            mx += w * area * x;
             ia += w * 0.5 * area * r * r;
             it += w * (0.25 * area * r * r + area * x * x);
         }
         let f = rho * dx / 3.0;
-        Self {
-            mass: f * m,
+        let mass = f * m;
+        let centroid = if mass > 0.0 { f * mx / mass } else { 0.0 };
+        let properties = Self {
+            mass,
             axial_inertia: f * ia,
-            transverse_inertia: f * it,
-        }
+            transverse_inertia: f * it - mass * centroid * centroid,
+        };
+        (properties, centroid)
     }
 
     /// Scales all properties by `factor` (e.g. to remove pocket material uniformly).

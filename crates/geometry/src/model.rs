@@ -4,6 +4,7 @@ use crate::bearing::{CylindricalRollerBearing, Misalignment};
 use crate::error::GeometryError;
 use crate::ring::Ring;
 use crate::roller::Roller;
+use crate::tapered::DoubleRowTaperedBearing;
 
 /// A roller on one raceway, for contact studies such as seed 004 (bearing 32206 roller on its
 /// inner raceway), where the rest of the bearing is irrelevant or unknown.
@@ -24,6 +25,7 @@ pub struct RollerRacewayPair {
 pub enum BearingModel {
     Cylindrical(CylindricalRollerBearing),
     RollerRaceway(RollerRacewayPair),
+    Tapered(DoubleRowTaperedBearing),
 }
 
 impl BearingModel {
@@ -31,13 +33,17 @@ impl BearingModel {
         match self {
             Self::Cylindrical(b) => &b.name,
             Self::RollerRaceway(p) => &p.name,
+            Self::Tapered(b) => &b.name,
         }
     }
 
-    pub fn roller(&self) -> &Roller {
+    /// The cylindrical roller (`None` for a tapered bearing, whose roller is a
+    /// [`crate::TaperedRoller`]).
+    pub fn roller(&self) -> Option<&Roller> {
         match self {
-            Self::Cylindrical(b) => &b.roller,
-            Self::RollerRaceway(p) => &p.roller,
+            Self::Cylindrical(b) => Some(&b.roller),
+            Self::RollerRaceway(p) => Some(&p.roller),
+            Self::Tapered(_) => None,
         }
     }
 
@@ -45,16 +51,19 @@ impl BearingModel {
         match self {
             Self::Cylindrical(b) => b.misalignment,
             Self::RollerRaceway(p) => p.misalignment,
+            Self::Tapered(b) => b.misalignment,
         }
     }
 
     /// The raceway a roller contact is evaluated on, and whether it is an inner raceway.
-    /// A bearing offers both (`inner` chooses); a pair offers its only raceway.
-    pub fn raceway(&self, inner: bool) -> (&Ring, bool) {
+    /// A bearing offers both (`inner` chooses); a pair offers its only raceway; a tapered
+    /// bearing has cone and cup lines instead ([`crate::TaperedRow`]): `None`.
+    pub fn raceway(&self, inner: bool) -> Option<(&Ring, bool)> {
         match self {
-            Self::Cylindrical(b) if inner => (&b.inner_ring, true),
-            Self::Cylindrical(b) => (&b.outer_ring, false),
-            Self::RollerRaceway(p) => (&p.raceway, p.raceway_is_inner),
+            Self::Cylindrical(b) if inner => Some((&b.inner_ring, true)),
+            Self::Cylindrical(b) => Some((&b.outer_ring, false)),
+            Self::RollerRaceway(p) => Some((&p.raceway, p.raceway_is_inner)),
+            Self::Tapered(_) => None,
         }
     }
 
@@ -70,6 +79,7 @@ impl BearingModel {
                 p.raceway.validate(key, p.raceway_is_inner)?;
                 p.roller.validate()
             }
+            Self::Tapered(b) => b.validate(),
         }
     }
 }

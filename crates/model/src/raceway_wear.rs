@@ -130,6 +130,7 @@ pub(crate) fn attach(
             };
             vec![(&mut p.raceway, section, key)]
         }
+        BearingModel::Tapered(_) => vec![],
     };
     for (ring, section, key) in &mut rings {
         if let Some(wear) = section.and_then(|s| s.raceway_wear.as_ref()) {

@@ -69,7 +69,11 @@ fn roller_mass_matches_a_cylinder_within_the_chamfer_loss() {
 fn contact_examples_have_the_seed004_profiles() {
     let drop_at = |name: &str, x: f64| {
         let m = load(&examples().join("contact").join(name)).unwrap();
-        m.bearing.roller().profile.drop(x)
+        m.bearing
+            .roller()
+            .expect("a cylindrical roller")
+            .profile
+            .drop(x)
     };
     assert_eq!(drop_at("32206-straight.toml", 3.7e-3), 0.0);
     assert!((drop_at("32206-crowned-3.2um.toml", 3.25e-3) - 3.2e-6).abs() < 1e-12);
@@ -109,7 +113,7 @@ fn johns_gohar_and_polyline_profiles() {
         "kind = \"johns-gohar\"\ndesign_load = \"2 kN\"\nchamfer = { axial = \"0.5 mm\", radial = \"0.5 mm\", radius = \"0.6 mm\" }",
     );
     let m = parse(&jg, "jg.toml").unwrap_or_else(|e| panic!("{e}"));
-    let p = &m.bearing.roller().profile;
+    let p = &m.bearing.roller().expect("a cylindrical roller").profile;
     let (z1, z2, z3) = (p.drop(1e-3), p.drop(2.5e-3), p.drop(3.2e-3));
     assert!(
         0.0 < z1 && z1 < z2 && z2 < z3 && z3 < 20e-6,
@@ -121,7 +125,7 @@ fn johns_gohar_and_polyline_profiles() {
         "kind = \"polyline\"\nx = [\"-3.75 mm\", \"0 mm\", \"3.75 mm\"]\ndrop = [\"4 um\", \"0 um\", \"1 um\"]",
     );
     let m = parse(&poly, "poly.toml").unwrap_or_else(|e| panic!("{e}"));
-    let p = &m.bearing.roller().profile;
+    let p = &m.bearing.roller().expect("a cylindrical roller").profile;
     assert!((p.drop(-1.875e-3) - 2e-6).abs() < 1e-15 && (p.drop(1.875e-3) - 0.5e-6).abs() < 1e-15);
     let bad = base.replace(
         "kind = \"straight\"",

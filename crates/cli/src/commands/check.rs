@@ -80,18 +80,19 @@ pub struct Summary {
 }
 
 pub fn summarise(model: &BearingModel, inner_speed: f64, outer_speed: f64) -> Summary {
-    let roller = model.roller();
     let mut s = Summary {
         name: model.name().to_string(),
-        roller_diameter_m: roller.diameter,
-        roller_length_m: roller.length,
-        effective_contact_length_m: roller.profile.effective_length(),
-        crown_radius_m: roller.profile.crown_radius(),
-        slices: roller.slice_count,
-        roller: Some(roller.mass_properties.into()),
         misalignment_rad: model.misalignment().inner_ring_tilt,
         ..Summary::default()
     };
+    if let Some(roller) = model.roller() {
+        s.roller_diameter_m = roller.diameter;
+        s.roller_length_m = roller.length;
+        s.effective_contact_length_m = roller.profile.effective_length();
+        s.crown_radius_m = roller.profile.crown_radius();
+        s.slices = roller.slice_count;
+        s.roller = Some(roller.mass_properties.into());
+    }
     match model {
         BearingModel::RollerRaceway(p) => {
             s.kind = "roller-raceway";
@@ -125,6 +126,7 @@ pub fn summarise(model: &BearingModel, inner_speed: f64, outer_speed: f64) -> Su
             s.epicyclic_roller_speed_rad_s =
                 Some(b.epicyclic_roller_speed(inner_speed, outer_speed));
         }
+        BearingModel::Tapered(_) => s.kind = "double-row tapered",
     }
     s
 }
