@@ -97,6 +97,7 @@ mod stepper;
 pub mod study;
 mod summary;
 mod summary_columns;
+pub mod tapered;
 mod vec3;
 
 pub use conditions::{

@@ -6,6 +6,9 @@
 
 pub mod quasi_static;
 pub mod speed;
+mod tapered;
+
+pub use tapered::prepare_tapered;
 
 use rolldyn_dynamics::conditions::{ContactTemperatures, InnerRingLoad, OperatingConditions};
 use rolldyn_dynamics::parameters::ContactParameters;
@@ -77,6 +80,8 @@ pub struct Overrides {
     pub speed: Option<f64>,
     pub outer_speed: Option<f64>,
     pub radial_load: Option<f64>,
+    /// axial load on the inner ring along +z, N
+    pub axial_load: Option<f64>,
     pub load_direction: Option<LoadDirection>,
     pub oil_temperature: Option<f64>,
     /// inner-ring tilt, rad (overrides misalignment.inner_ring)
@@ -191,6 +196,11 @@ fn conditions_with_temperature_at(
                 after_n: along(after),
                 at_s,
             },
+        });
+    }
+    if let Some(axial) = args.axial_load.or(op.axial_load) {
+        c.loads.push(InnerRingLoad::Fixed {
+            force_n: [0.0, 0.0, axial],
         });
     }
     if let Some(outer) = args.outer_speed.or(op.outer_speed) {

@@ -333,6 +333,7 @@ fn operating_conditions(case: &Case, switches: &Switches) -> Result<OperatingCon
     let overrides = Overrides {
         speed: Some(case.speed_rad_s),
         radial_load: Some(case.radial_load_n),
+        axial_load: None,
         load_direction: Some(case.load_direction),
         oil_temperature: case.oil_temperature_k,
         ..Overrides::default()

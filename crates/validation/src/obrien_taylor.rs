@@ -84,6 +84,7 @@ pub fn dynamic_point(
     let overrides = Overrides {
         speed: Some(speed_rpm * std::f64::consts::PI / 30.0),
         radial_load: Some(radial_load_n),
+        axial_load: None,
         oil_temperature: Some(temperature_k),
         ..Overrides::default()
     };

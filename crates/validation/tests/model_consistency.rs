@@ -33,6 +33,7 @@ fn quasi_static_row_is_the_dynamics_start() {
     let overrides = Overrides {
         speed: Some(case.speed_rad_s),
         radial_load: Some(case.radial_load_n),
+        axial_load: None,
         load_direction: Some(case.load_direction),
         ..Overrides::default()
     };

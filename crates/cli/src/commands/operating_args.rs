@@ -21,6 +21,9 @@ pub struct OperatingArgs {
     /// Radial load on the inner ring (overrides operating.radial_load).
     #[arg(long, allow_hyphen_values = true)]
     pub radial_load: Option<Quantity<Force>>,
+    /// Axial load on the inner ring along +z (overrides operating.axial_load; tapered bearings).
+    #[arg(long, allow_hyphen_values = true)]
+    pub axial_load: Option<Quantity<Force>>,
     /// Radial load fixed in space or rotating with the inner ring.
     #[arg(long, value_enum)]
     pub load_direction: Option<LoadDirectionArg>,
@@ -38,6 +41,7 @@ impl OperatingArgs {
         self.speed.is_some()
             || self.outer_speed.is_some()
             || self.radial_load.is_some()
+            || self.axial_load.is_some()
             || self.load_direction.is_some()
             || self.oil_temperature.is_some()
             || self.misalignment.is_some()
@@ -49,6 +53,7 @@ impl OperatingArgs {
             speed: self.speed.map(|q| q.si()),
             outer_speed: self.outer_speed.map(|q| q.si()),
             radial_load: self.radial_load.map(|q| q.si()),
+            axial_load: self.axial_load.map(|q| q.si()),
             load_direction: self.load_direction.map(|d| match d {
                 LoadDirectionArg::Fixed => LoadDirection::Fixed,
                 LoadDirectionArg::Rotating => LoadDirection::Rotating,

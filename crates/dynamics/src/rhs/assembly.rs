@@ -5,7 +5,7 @@
 
 use super::Wrench;
 use super::bodies::{CageKin, RollerColumns, cage_spin};
-use crate::layout::{cage, inner_ring, read3, roller, write3};
+use crate::layout::{CAGE_DOF, ROLLER_DOF, cage, inner_ring, read3, roller, write3};
 use crate::model::Model;
 use crate::vec3::{V3, add, axpy, cross, dot, scale};
 
@@ -19,41 +19,62 @@ pub(super) fn roller_equations(
     wrench: &[Wrench],
 ) {
     let inv_mr = 1.0 / model.m_r;
-    for (j, (&(s, c, a, w), wrench)) in rollers.frame.iter().zip(wrench).enumerate() {
+    for (j, (frame, wrench)) in rollers.frame.iter().zip(wrench).enumerate() {
         let b = model.layout.roller(j);
-        let r = y[b + roller::RADIUS];
-        let thd = y[b + roller::ORBITAL_SPEED];
-        let rdot = y[b + roller::RADIAL_VELOCITY];
-        let zd = y[b + roller::AXIAL_VELOCITY];
-        let Wrench {
-            force: f,
-            moment: m,
-        } = *wrench;
-        let f_radial = dot(f, [c, s, 0.0]);
-        let f_tangential = dot(f, [-s, c, 0.0]);
-        dy[b + roller::AZIMUTH] = thd;
-        dy[b + roller::RADIUS] = rdot;
-        dy[b + roller::AXIAL] = zd;
-        write3(dy, b + roller::AXIS, cross(w, a));
-        dy[b + roller::ORBITAL_SPEED] = (f_tangential * inv_mr - 2.0 * rdot * thd) / r;
-        dy[b + roller::RADIAL_VELOCITY] = f_radial * inv_mr + r * thd * thd;
-        dy[b + roller::AXIAL_VELOCITY] = f[2] * inv_mr;
-        write3(dy, b + roller::MOMENTUM, m);
+        roller_rates(
+            &y[b..b + ROLLER_DOF],
+            &mut dy[b..b + ROLLER_DOF],
+            *frame,
+            wrench,
+            inv_mr,
+        );
     }
+}
+
+/// `ẏ` of one roller (its [`ROLLER_DOF`] components `y`, `dy`) from its frame
+/// `(sin θ, cos θ, a, ω)`, its wrench about its centre and `1/m`: the equations of
+/// [`roller_equations`].
+pub(crate) fn roller_rates(
+    y: &[f64],
+    dy: &mut [f64],
+    (s, c, a, w): (f64, f64, V3, V3),
+    wrench: &Wrench,
+    inv_m: f64,
+) {
+    let r = y[roller::RADIUS];
+    let thd = y[roller::ORBITAL_SPEED];
+    let rdot = y[roller::RADIAL_VELOCITY];
+    let zd = y[roller::AXIAL_VELOCITY];
+    let Wrench {
+        force: f,
+        moment: m,
+    } = *wrench;
+    let f_radial = dot(f, [c, s, 0.0]);
+    let f_tangential = dot(f, [-s, c, 0.0]);
+    dy[roller::AZIMUTH] = thd;
+    dy[roller::RADIUS] = rdot;
+    dy[roller::AXIAL] = zd;
+    write3(dy, roller::AXIS, cross(w, a));
+    dy[roller::ORBITAL_SPEED] = (f_tangential * inv_m - 2.0 * rdot * thd) / r;
+    dy[roller::RADIAL_VELOCITY] = f_radial * inv_m + r * thd * thd;
+    dy[roller::AXIAL_VELOCITY] = f[2] * inv_m;
+    write3(dy, roller::MOMENTUM, m);
 }
 
 /// `ẏ` of the cage: `ċ = v`, `φ̇ = ω·a`, `ȧ = ω × a`, `v̇ = F/m`, `L̇ = M`.
 pub(super) fn cage_equations(model: &Model, dy: &mut [f64], kin: &CageKin, wrench: &Wrench) {
     let ci = model.layout.cage();
-    write3(dy, ci + cage::CENTRE, kin.velocity);
-    dy[ci + cage::ANGLE] = cage_spin(kin);
-    write3(dy, ci + cage::AXIS, cross(kin.omega, kin.axis));
-    write3(
-        dy,
-        ci + cage::VELOCITY,
-        scale(wrench.force, 1.0 / model.m_c),
-    );
-    write3(dy, ci + cage::MOMENTUM, wrench.moment);
+    cage_rates(&mut dy[ci..ci + CAGE_DOF], kin, wrench, model.m_c);
+}
+
+/// `ẏ` of one cage (its [`CAGE_DOF`] components `dy`) of mass `m`: the equations of
+/// [`cage_equations`].
+pub(crate) fn cage_rates(dy: &mut [f64], kin: &CageKin, wrench: &Wrench, m: f64) {
+    write3(dy, cage::CENTRE, kin.velocity);
+    dy[cage::ANGLE] = cage_spin(kin);
+    write3(dy, cage::AXIS, cross(kin.omega, kin.axis));
+    write3(dy, cage::VELOCITY, scale(wrench.force, 1.0 / m));
+    write3(dy, cage::MOMENTUM, wrench.moment);
 }
 
 /// `ẏ` of the inner ring under the contact force `f_inner`, the applied load at `t` and

@@ -5,7 +5,7 @@
 use super::axisymmetric_omega;
 use crate::ends::BodyKin;
 use crate::kinematics::RollerKinematics;
-use crate::layout::{cage, inner_ring, read3, roller};
+use crate::layout::{CAGE_DOF, cage, inner_ring, read3, roller};
 use crate::model::Model;
 use crate::vec3::{V3, dot, scale, unit_or};
 use rolldyn_numerics::fastmath;
@@ -37,7 +37,7 @@ impl RingKin {
 
 /// Kinematics of the cage: centre, unit axis, velocity, angular velocity and momentum, and the
 /// sine and cosine of its angle φ.
-pub(super) struct CageKin {
+pub(crate) struct CageKin {
     pub centre: V3,
     pub axis: V3,
     pub velocity: V3,
@@ -90,19 +90,28 @@ pub(super) fn bodies(model: &Model, t: f64, y: &[f64]) -> Bodies {
                 .clearance_at(t)
                 .map_or(0.0, |g| 0.5 * (g - model.clearance)),
     };
-    let ci = lay.cage();
-    let axis = unit_or(read3(y, ci + cage::AXIS), [0.0, 0.0, 1.0]);
-    let momentum = read3(y, ci + cage::MOMENTUM);
-    let (sin_phi, cos_phi) = y[ci + cage::ANGLE].sin_cos();
-    let cage = CageKin {
-        centre: read3(y, ci + cage::CENTRE),
+    let cage = cage_kinematics(
+        &y[lay.cage()..lay.cage() + CAGE_DOF],
+        model.ia_c,
+        model.it_c,
+    );
+    Bodies { inner, outer, cage }
+}
+
+/// Kinematics of a cage from its [`CAGE_DOF`] state components and its axial and transverse
+/// moments of inertia.
+pub(crate) fn cage_kinematics(y: &[f64], ia: f64, it: f64) -> CageKin {
+    let axis = unit_or(read3(y, cage::AXIS), [0.0, 0.0, 1.0]);
+    let momentum = read3(y, cage::MOMENTUM);
+    let (sin_phi, cos_phi) = y[cage::ANGLE].sin_cos();
+    CageKin {
+        centre: read3(y, cage::CENTRE),
         axis,
-        velocity: read3(y, ci + cage::VELOCITY),
-        omega: axisymmetric_omega(momentum, axis, model.ia_c, model.it_c),
+        velocity: read3(y, cage::VELOCITY),
+        omega: axisymmetric_omega(momentum, axis, ia, it),
         sin_phi,
         cos_phi,
-    };
-    Bodies { inner, outer, cage }
+    }
 }
 
 /// Per roller, as struct of arrays for the vector loops of the detection stages.
@@ -187,8 +196,36 @@ pub(super) fn roller_kinematics(
     }
 }
 
+/// One roller's kinematics from its [`crate::layout::ROLLER_DOF`] state components `y` and its
+/// axial and transverse inertia (the scalar form of [`roller_columns`] and
+/// [`roller_kinematics`]), with its frame `(sin θ, cos θ, a, ω)` for [`super::assembly::roller_rates`].
+pub(crate) fn single_roller_kinematics(
+    y: &[f64],
+    ia: f64,
+    it: f64,
+) -> (RollerKinematics, (f64, f64, V3, V3)) {
+    let (s, c) = y[roller::AZIMUTH].sin_cos();
+    let (r, zz) = (y[roller::RADIUS], y[roller::AXIAL]);
+    let a = unit_or(read3(y, roller::AXIS), [0.0, 0.0, 1.0]);
+    let thd = y[roller::ORBITAL_SPEED];
+    let rdot = y[roller::RADIAL_VELOCITY];
+    let w = axisymmetric_omega(read3(y, roller::MOMENTUM), a, ia, it);
+    let kin = RollerKinematics {
+        c: [r * c, r * s, zz],
+        a,
+        v: [
+            rdot * c - r * thd * s,
+            rdot * s + r * thd * c,
+            y[roller::AXIAL_VELOCITY],
+        ],
+        w,
+        orbit: thd,
+    };
+    (kin, (s, c, a, w))
+}
+
 /// Axial component of the cage's angular velocity, `ω_c · a_c` (its spin).
 #[inline]
-pub(super) fn cage_spin(cage: &CageKin) -> f64 {
+pub(crate) fn cage_spin(cage: &CageKin) -> f64 {
     dot(cage.omega, cage.axis)
 }

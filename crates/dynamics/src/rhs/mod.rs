@@ -13,8 +13,8 @@
 //!
 //! Allocation-free: all scratch lives in [`Diagnostics`], allocated once.
 
-mod assembly;
-mod bodies;
+pub(crate) mod assembly;
+pub(crate) mod bodies;
 mod cage;
 mod diagnostics;
 mod raceways;
@@ -32,7 +32,7 @@ use roller_ends::FaceBodies;
 
 /// Force and moment on a body (the moment about its centre), N and N·m.
 #[derive(Debug, Clone, Copy, Default)]
-pub(super) struct Wrench {
+pub(crate) struct Wrench {
     pub force: V3,
     pub moment: V3,
 }

@@ -1,0 +1,474 @@
+//! The right-hand side of the double-row tapered bearing: per roller its slices on cone and cup
+//! (normal along the raceway line's normal in the axial plane through the slice centre), its
+//! large end on the large rib and its small end on the small rib ([`crate::ends`], SPEC §6.7
+//! regime switch), its ends on the pocket faces and its body on the four bar edges of its pocket
+//! (the cage rides on the rollers); then the Newton–Euler equations of every body.
+
+use super::geometry::HalfPlaneLine;
+use super::layout::TaperedLayout;
+use super::model::TaperedModel;
+use crate::ends::{AxialReach, BodyKin, EndGeometry, EndLubrication, FaceGeometry, end_force};
+use crate::integrator::OdeSystem;
+use crate::kinematics::RollerKinematics;
+use crate::layout::{CAGE_DOF, ROLLER_DOF, inner_ring, read3};
+use crate::rhs::Wrench;
+use crate::rhs::assembly::{cage_rates, roller_rates};
+use crate::rhs::bodies::{CageKin, cage_kinematics, single_roller_kinematics};
+use crate::vec3::{V3, add, axpy, cross, dot, norm, perp, power, scale, sub};
+use rolldyn_contact::damping::SliceDamping;
+use rolldyn_lubrication::{ContactGeometry, ContactState, traction};
+
+/// Per-roller results of the last reported evaluation.
+#[derive(Debug, Clone, Default)]
+pub struct RollerReport {
+    /// total normal force on cone and cup, N
+    pub cone: f64,
+    pub cup: f64,
+    /// largest slice force on the cone, N
+    pub cone_slice_max: f64,
+    /// load-weighted sliding speed on cone and cup, m/s
+    pub cone_sliding: f64,
+    pub cup_sliding: f64,
+    /// largest relative slip |v|/u of a loaded slice (both raceways)
+    pub slip: f64,
+    /// large-end ↔ large-rib and small-end ↔ small-rib normal forces, N
+    pub large_rib: f64,
+    pub small_rib: f64,
+    /// large-end ↔ rib: sliding speed, m/s, and whether it ran in EHL (patch inside the overlap)
+    pub rib_sliding: f64,
+    pub rib_ehl: bool,
+    /// roller ↔ cage bars and pocket faces, N
+    pub cage: f64,
+}
+
+/// The system integrated: model, scratch and the report of the last reported evaluation.
+pub struct TaperedSystem<'m> {
+    pub model: &'m TaperedModel,
+    pub layout: TaperedLayout,
+    pub rollers: Vec<RollerReport>,
+    /// net contact force of all rollers on the inner ring, N
+    pub inner_contact_force: V3,
+    wrench: Vec<Wrench>,
+    report: bool,
+}
+
+impl<'m> TaperedSystem<'m> {
+    pub fn new(model: &'m TaperedModel) -> Self {
+        let layout = TaperedLayout { z: model.z };
+        Self {
+            model,
+            layout,
+            rollers: vec![RollerReport::default(); 2 * model.z],
+            inner_contact_force: [0.0; 3],
+            wrench: vec![Wrench::default(); 2 * model.z],
+            report: false,
+        }
+    }
+}
+
+impl OdeSystem for TaperedSystem<'_> {
+    fn rhs(&mut self, t: f64, y: &[f64], dy: &mut [f64]) {
+        self.report = false;
+        evaluate(self, t, y, dy);
+    }
+
+    fn rhs_reported(&mut self, t: f64, y: &[f64], dy: &mut [f64]) {
+        self.report = true;
+        evaluate(self, t, y, dy);
+    }
+}
+
+/// The inner ring (both cones and the spacer) as a body carrying faces.
+fn inner_body(model: &TaperedModel, t: f64, y: &[f64], lay: &TaperedLayout) -> BodyKin {
+    let ii = lay.inner();
+    BodyKin {
+        o: read3(y, ii + inner_ring::CENTRE),
+        v: read3(y, ii + inner_ring::VELOCITY),
+        axis: model.axis_i,
+        omega: scale(model.axis_i, model.conditions.inner_speed.speed(t)),
+    }
+}
+
+/// The cup: fixed, axis z.
+const CUP: BodyKin = BodyKin {
+    o: [0.0; 3],
+    v: [0.0; 3],
+    axis: [0.0, 0.0, 1.0],
+    omega: [0.0; 3],
+};
+
+fn evaluate(sys: &mut TaperedSystem, t: f64, y: &[f64], dy: &mut [f64]) {
+    let model = sys.model;
+    let lay = sys.layout;
+    let inner = inner_body(model, t, y, &lay);
+    let cages: [CageKin; 2] = std::array::from_fn(|k| {
+        let ci = lay.cage(k);
+        cage_kinematics(&y[ci..ci + CAGE_DOF], model.ia_c, model.it_c)
+    });
+    let g = model.conditions.gravity_m_s2;
+    let mut cage_wrench = [0, 1].map(|_| Wrench {
+        force: scale(g, model.m_c),
+        moment: [0.0; 3],
+    });
+    let mut f_inner = [0.0; 3];
+    for j in 0..2 * model.z {
+        let row = j / model.z;
+        let b = lay.roller(j);
+        let (rk, frame) = single_roller_kinematics(&y[b..b + ROLLER_DOF], model.ia_r, model.it_r);
+        let mut report = RollerReport::default();
+        let mut roller = Wrench {
+            force: scale(g, model.m_r),
+            moment: [0.0; 3],
+        };
+        raceways(
+            model,
+            row,
+            &rk,
+            &inner,
+            &mut roller,
+            &mut f_inner,
+            &mut report,
+        );
+        ends(
+            model,
+            row,
+            &rk,
+            &inner,
+            &cages[row],
+            &mut roller,
+            (&mut f_inner, &mut cage_wrench[row]),
+            &mut report,
+        );
+        bars(
+            model,
+            row,
+            j % model.z,
+            &rk,
+            &cages[row],
+            &mut roller,
+            &mut cage_wrench[row],
+            &mut report,
+        );
+        sys.wrench[j] = roller;
+        roller_rates(
+            &y[b..b + ROLLER_DOF],
+            &mut dy[b..b + ROLLER_DOF],
+            frame,
+            &sys.wrench[j],
+            1.0 / model.m_r,
+        );
+        if sys.report {
+            sys.rollers[j] = report;
+        }
+    }
+    for k in 0..2 {
+        let ci = lay.cage(k);
+        cage_rates(
+            &mut dy[ci..ci + CAGE_DOF],
+            &cages[k],
+            &cage_wrench[k],
+            model.m_c,
+        );
+    }
+    if sys.report {
+        sys.inner_contact_force = f_inner;
+    }
+    inner_ring_rates(model, t, y, dy, &lay, f_inner);
+}
+
+/// `ẏ` of the inner ring: free translation under contacts, the applied loads and gravity.
+fn inner_ring_rates(
+    model: &TaperedModel,
+    t: f64,
+    y: &[f64],
+    dy: &mut [f64],
+    lay: &TaperedLayout,
+    f_inner: V3,
+) {
+    let cond = &model.conditions;
+    let acc = axpy(
+        scale(add(f_inner, cond.inner_ring_force(t)), 1.0 / model.m_i),
+        1.0,
+        cond.gravity_m_s2,
+    );
+    let ii = lay.inner();
+    let v = read3(y, ii + inner_ring::VELOCITY);
+    for k in 0..3 {
+        dy[ii + inner_ring::CENTRE + k] = v[k];
+        dy[ii + inner_ring::VELOCITY + k] = acc[k];
+    }
+}
+
+/// Position of a point in a body's half-plane: `(ρ, ζ, e_ρ)`.
+#[inline]
+fn half_plane(body: &BodyKin, p: V3) -> (f64, f64, V3) {
+    let rel = sub(p, body.o);
+    let zeta = dot(rel, body.axis);
+    let radial = axpy(rel, -zeta, body.axis);
+    let rho = norm(radial);
+    (rho, zeta, scale(radial, 1.0 / rho.max(1e-12)))
+}
+
+/// Velocity of the material point `p` of a body.
+#[inline]
+fn body_velocity(body: &BodyKin, p: V3) -> V3 {
+    add(body.v, cross(body.omega, sub(p, body.o)))
+}
+
+/// The slices of one roller on the cone (`race = 0`) and the cup (`race = 1`).
+fn raceways(
+    model: &TaperedModel,
+    row: usize,
+    rk: &RollerKinematics,
+    inner: &BodyKin,
+    roller: &mut Wrench,
+    f_inner: &mut V3,
+    report: &mut RollerReport,
+) {
+    let geo = &model.rows[row];
+    let u = scale(rk.a, geo.sigma);
+    let s = &model.slices;
+    let temps = &model.conditions.temperatures;
+    for (race, (body, line)) in [(inner, &geo.cone), (&CUP, &geo.cup)]
+        .into_iter()
+        .enumerate()
+    {
+        let (mut total, mut sliding) = (0.0, 0.0);
+        for i in 0..s.x.len() {
+            let centre = axpy(rk.c, s.x[i], u);
+            let (rho, zeta, e_rho) = half_plane(body, centre);
+            let delta = s.reach[i] - line.distance(rho, zeta);
+            if delta <= 0.0 {
+                continue;
+            }
+            let n = contact_normal(line, e_rho, body.axis);
+            let p = axpy(centre, -s.reach[i], n);
+            let v_roll = add(rk.v, cross(rk.w, sub(p, rk.c)));
+            let v_ring = body_velocity(body, p);
+            let v_rel = sub(v_roll, v_ring);
+            let elastic = s.k[race][i] * power(delta, s.n[race]);
+            let q = s.damping[race][i].normal_force(elastic, delta, -dot(v_rel, n));
+            if q <= 0.0 {
+                continue;
+            }
+            let vt = perp(v_rel, n);
+            let vs = norm(vt);
+            let frame = [0.0, 0.0, rk.orbit];
+            let mean = scale(
+                add(sub(v_roll, cross(frame, p)), sub(v_ring, cross(frame, p))),
+                0.5,
+            );
+            let u_roll = norm(perp(mean, n));
+            let ring_curvature = line_curvature(model, race, rho);
+            let state = ContactState {
+                normal_force_n: q,
+                geometry: ContactGeometry::Line {
+                    length_m: s.length[i],
+                },
+                reduced_radius_m: 1.0 / (model.half_angle.cos() / s.radius[i] + ring_curvature),
+                reduced_modulus_pa: model.reduced_modulus,
+                rolling_speed_m_s: u_roll,
+                sliding_speed_m_s: vs,
+                temperature_k: if race == 0 {
+                    temps.inner_raceway_k
+                } else {
+                    temps.outer_raceway_k
+                },
+                roughness_ra_m: model.roughness,
+                film_thickness_m: None,
+            };
+            let mu = traction(&state, &model.traction).coefficient.abs();
+            let mut f = scale(n, q);
+            if vs > 0.0 {
+                f = axpy(f, -mu * q / vs, vt);
+            }
+            roller.force = add(roller.force, f);
+            roller.moment = add(roller.moment, cross(sub(p, rk.c), f));
+            if race == 0 {
+                *f_inner = sub(*f_inner, f);
+                report.cone_slice_max = report.cone_slice_max.max(q);
+            }
+            total += q;
+            sliding += q * vs;
+            report.slip = report.slip.max(vs / u_roll.max(1e-3));
+        }
+        let mean_sliding = if total > 0.0 { sliding / total } else { 0.0 };
+        if race == 0 {
+            (report.cone, report.cone_sliding) = (total, mean_sliding);
+        } else {
+            (report.cup, report.cup_sliding) = (total, mean_sliding);
+        }
+    }
+}
+
+/// The 3-D unit normal of a half-plane line at the azimuth of `e_ρ`.
+#[inline]
+fn contact_normal(line: &HalfPlaneLine, e_rho: V3, axis: V3) -> V3 {
+    add(scale(e_rho, line.n_rho), scale(axis, line.n_zeta))
+}
+
+/// Normal curvature of the raceway cone across its generatrix at distance `ρ` from the axis:
+/// `cos α/ρ`, convex (+) on the cone, concave (−) on the cup, 1/m.
+#[inline]
+fn line_curvature(model: &TaperedModel, race: usize, rho: f64) -> f64 {
+    if race == 0 {
+        model.cone_angle.cos() / rho
+    } else {
+        -model.cup_angle.cos() / rho
+    }
+}
+
+/// The roller's ends on the ribs of the cone and on the faces of its pocket.
+#[allow(clippy::too_many_arguments)]
+fn ends(
+    model: &TaperedModel,
+    row: usize,
+    rk: &RollerKinematics,
+    inner: &BodyKin,
+    cage: &CageKin,
+    roller: &mut Wrench,
+    (f_inner, cage_wrench): (&mut V3, &mut Wrench),
+    report: &mut RollerReport,
+) {
+    let geo = &model.rows[row];
+    let p = &model.parameters;
+    let lub = EndLubrication {
+        model: &model.traction,
+        reduced_radius: model.rib_reduced_radius,
+        reduced_modulus: model.reduced_modulus,
+        roughness: model.roughness,
+        temperature_k: model.conditions.temperatures.inner_raceway_k,
+    };
+    let rib_damping = SliceDamping::new(p.end_rib.contact.c_h, p.end_rib.contact.d);
+    let pocket_damping = SliceDamping::new(p.end_pocket.contact.c_h, p.end_pocket.contact.d);
+    let cage_body = cage_body(cage);
+    let contacts: [(&BodyKin, &FaceGeometry, &EndGeometry, bool); 4] = [
+        (inner, &geo.large_rib, &model.large_end, true),
+        (inner, &geo.small_rib, &model.small_end, true),
+        (&cage_body, &geo.pocket_large, &model.large_end, false),
+        (&cage_body, &geo.pocket_small, &model.small_end, false),
+    ];
+    for (k, (body, face, end, on_ring)) in contacts.into_iter().enumerate() {
+        let reach = AxialReach::new(body, end, rk.c, rk.a);
+        if reach.bound(face, end) <= 0.0 {
+            continue;
+        }
+        let (params, damping, lub) = if on_ring {
+            (&p.end_rib, &rib_damping, Some(&lub))
+        } else {
+            (&p.end_pocket, &pocket_damping, None)
+        };
+        let Some(ef) = end_force(face, end, body, &reach, rk, params, damping, lub) else {
+            continue;
+        };
+        roller.force = add(roller.force, ef.force);
+        roller.moment = add(roller.moment, ef.moment);
+        if on_ring {
+            *f_inner = sub(*f_inner, ef.force);
+        } else {
+            cage_wrench.force = sub(cage_wrench.force, ef.force);
+            cage_wrench.moment = add(cage_wrench.moment, ef.body_moment);
+            report.cage += ef.normal;
+        }
+        match k {
+            0 => {
+                report.large_rib = ef.normal;
+                report.rib_sliding = ef.sliding;
+                report.rib_ehl = ef.regime == crate::ends::EndContactRegime::Elastohydrodynamic;
+            }
+            1 => report.small_rib = ef.normal,
+            _ => {}
+        }
+    }
+}
+
+/// The cage as a body carrying faces.
+#[inline]
+fn cage_body(cage: &CageKin) -> BodyKin {
+    BodyKin {
+        o: cage.centre,
+        v: cage.velocity,
+        axis: cage.axis,
+        omega: cage.omega,
+    }
+}
+
+/// Stations along the roller at which the bar edges are tested, as fractions of the half
+/// length from the mid-point (both ends of the roller: alternating yaw, SPEC §1.5).
+const BAR_STATIONS: [f64; 2] = [-0.8, 0.8];
+
+/// The roller against the four bar edges of its pocket (pocket `j` of its row's cage): edges
+/// parallel to the nominal roller axis at `(±w, ±e)` in the pocket's cross-section, `e` the
+/// edge height, `w = √((r + c/2)² − e²)` so that a centred roller clears every edge by `c/2`.
+#[allow(clippy::too_many_arguments)]
+fn bars(
+    model: &TaperedModel,
+    row: usize,
+    j: usize,
+    rk: &RollerKinematics,
+    cage: &CageKin,
+    roller: &mut Wrench,
+    cage_wrench: &mut Wrench,
+    report: &mut RollerReport,
+) {
+    let geo = &model.rows[row];
+    let p = &model.parameters;
+    let pp = &p.roller_cage;
+    let psi = std::f64::consts::TAU * j as f64 / model.z as f64;
+    let (sp, cp) = psi.sin_cos();
+    // cage frame: e_x, e_y rotated by φ; a cage tilt is small, its axis is used as is
+    let e_x = [cage.cos_phi, cage.sin_phi, 0.0];
+    let e_y = [-cage.sin_phi, cage.cos_phi, 0.0];
+    let e_rho = perp(add(scale(e_x, cp), scale(e_y, sp)), cage.axis);
+    let e_rho = scale(e_rho, 1.0 / norm(e_rho));
+    let e_t = cross(cage.axis, e_rho);
+    let u_nom = add(scale(e_rho, geo.u.0), scale(cage.axis, geo.u.1));
+    let e_n = add(
+        scale(e_rho, geo.u.1 * geo.sigma),
+        scale(cage.axis, -geo.u.0 * geo.sigma),
+    );
+    let mid = add(cage.centre, scale(e_rho, geo.mid.0));
+    let u = scale(rk.a, geo.sigma);
+    let half = 0.5 * model.bearing.roller.length;
+    let damping = SliceDamping::new(pp.c_h, pp.d);
+    for &frac in &BAR_STATIONS {
+        let x = frac * half;
+        let r = model.bearing.roller.radius_at(x);
+        let nominal = axpy(mid, x, u_nom);
+        let centre = axpy(rk.c, x - model.x_cm, u);
+        let d = sub(centre, nominal);
+        let (dt, dn) = (dot(d, e_t), dot(d, e_n));
+        let e = p.bar_edge_height * r;
+        let w = ((r + 0.5 * model.bearing.cage.pocket_clearance).powi(2) - e * e).sqrt();
+        for (et, en) in [(w, e), (w, -e), (-w, e), (-w, -e)] {
+            let (gt, gn) = (dt - et, dn - en);
+            let dist = gt.hypot(gn);
+            let delta = r - dist;
+            if delta <= 0.0 {
+                continue;
+            }
+            let n = scale(add(scale(e_t, gt), scale(e_n, gn)), 1.0 / dist);
+            let edge = add(nominal, add(scale(e_t, et), scale(e_n, en)));
+            let v_rel = sub(
+                add(rk.v, cross(rk.w, sub(edge, rk.c))),
+                add(cage.velocity, cross(cage.omega, sub(edge, cage.centre))),
+            );
+            let elastic = 0.5 * pp.k_p * power(delta, pp.exponent);
+            let q = damping.normal_force(elastic, delta, -dot(v_rel, n));
+            if q <= 0.0 {
+                continue;
+            }
+            let vt = perp(v_rel, n);
+            let vs = norm(vt);
+            let mut f = scale(n, q);
+            if vs > 0.0 {
+                f = axpy(f, -pp.friction.coefficient(vs) * q / vs, vt);
+            }
+            roller.force = add(roller.force, f);
+            roller.moment = add(roller.moment, cross(sub(edge, rk.c), f));
+            cage_wrench.force = sub(cage_wrench.force, f);
+            cage_wrench.moment = sub(cage_wrench.moment, cross(sub(edge, cage.centre), f));
+            report.cage += q;
+        }
+    }
+}

@@ -1,0 +1,363 @@
+//! Running the tapered model: the seated start, the integration with samples at a fixed
+//! interval, and the run's summary (seed 000 §3.2.1 observables).
+
+use super::layout::TaperedLayout;
+use super::model::TaperedModel;
+use super::rhs::{RollerReport, TaperedSystem};
+use super::summary::{TaperedSummary, summarise};
+use crate::error::DynError;
+use crate::integrator::{Dopri5, StepError};
+use crate::layout::{CAGE_DOF, INNER_DOF, ROLLER_DOF, cage, inner_ring, read3, roller, write3};
+use crate::rhs::axisymmetric_omega;
+use crate::rosenbrock::{JacobianBlock, RosenbrockW};
+use crate::settings::IntegratorMethod;
+use crate::settings::IntegratorSettings;
+use crate::stepper::Stepper;
+use crate::vec3::{V3, add, axpy, dot, scale};
+
+/// Settings of a tapered run.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TaperedRunSettings {
+    /// simulated time, s
+    pub duration_s: f64,
+    /// interval of the recorded samples, s (default 50 µs: 20 kHz, far above the roller-pass
+    /// frequencies of ≈ 100–150 Hz and their harmonics)
+    pub sample_interval_s: f64,
+    /// the integrator: Dormand–Prince at τ = 10⁻⁵ (1 nm·10 on lengths). Measured on the seed's
+    /// case 1 (20 ms from the seated start): 7070 steps at τ = 10⁻⁵ against 11 270 for the
+    /// Rosenbrock-W method with a block per roller — the step is limited by the accuracy of
+    /// the rollers' tilt and spin oscillations, not by stiffness — and 3× more at τ = 10⁻⁶
+    /// (VALIDATION.md "Tapered dynamics" compares the results of both tolerances).
+    pub integrator: IntegratorSettings,
+}
+
+impl Default for TaperedRunSettings {
+    fn default() -> Self {
+        Self {
+            duration_s: 0.2,
+            sample_interval_s: 5e-5,
+            integrator: IntegratorSettings {
+                tolerance: 1e-5,
+                ..IntegratorSettings::default()
+            },
+        }
+    }
+}
+
+/// One recorded sample.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TaperedSample {
+    pub time_s: f64,
+    /// inner-ring centre, m
+    pub inner_ring: V3,
+    /// cage angle (unwrapped) and spin per row, rad and rad/s
+    pub cage_angle: [f64; 2],
+    pub cage_speed: [f64; 2],
+    /// per row: largest roller load on the cone, N; rollers within 10 % of it
+    pub max_cone_load: [f64; 2],
+    pub rollers_near_max: [usize; 2],
+    /// per row: largest large-end ↔ rib force, N; sum over the row, N
+    pub max_rib_force: [f64; 2],
+    pub total_rib_force: [f64; 2],
+    /// per row: load-weighted sliding speed on cone and cup, m/s
+    pub cone_sliding: [f64; 2],
+    pub cup_sliding: [f64; 2],
+    /// largest relative slip of a loaded slice, both rows
+    pub max_slip: f64,
+    /// roller 0 of each row: large-end and small-end rib forces, N
+    pub tracked_large_rib: [f64; 2],
+    pub tracked_small_rib: [f64; 2],
+    /// share of loaded large-rib contacts running in EHL (patch inside the overlap)
+    pub rib_ehl_share: f64,
+}
+
+/// The result of a run.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TaperedRun {
+    pub samples: Vec<TaperedSample>,
+    pub summary: TaperedSummary,
+    /// accepted steps and right-hand-side evaluations
+    pub steps: u64,
+    pub rhs_evaluations: u64,
+    /// the state component that limited the step most often
+    pub most_limiting: Option<String>,
+}
+
+/// The seated start: rollers on the cone and the large rib at their pocket azimuths, cages and
+/// rollers at the epicyclic speeds (pure rolling; the apex condition makes it pure along the
+/// whole line), the inner ring at the origin.
+pub fn initial_state(model: &TaperedModel) -> Vec<f64> {
+    let lay = TaperedLayout { z: model.z };
+    let mut y = vec![0.0; lay.len()];
+    let w_i = model.conditions.inner_speed.speed(0.0);
+    let w_c = model.epicyclic_cage_speed;
+    // pure rolling on the cone: the roller's spin relative to the cage carries its surface at
+    // the contact (distance ℓ cos β sin β from its axis) with the cone (ℓ cos β sin α_i from the
+    // bearing axis)
+    let spin_ratio = model.cone_angle.sin() / model.half_angle.sin();
+    for j in 0..2 * model.z {
+        let geo = &model.rows[j / model.z];
+        let psi = std::f64::consts::TAU * (j % model.z) as f64 / model.z as f64;
+        let b = lay.roller(j);
+        let (rho, z) = (
+            geo.mid.0 + model.x_cm * geo.u.0,
+            geo.mid.1 + model.x_cm * geo.u.1,
+        );
+        let e_rho = [psi.cos(), psi.sin(), 0.0];
+        let u = add(scale(e_rho, geo.u.0), [0.0, 0.0, geo.u.1]);
+        let spin = -geo.sigma * (w_i - w_c) * spin_ratio;
+        let omega = axpy([0.0, 0.0, w_c], spin, u);
+        let momentum = add(
+            scale(omega, model.it_r),
+            scale(u, (model.ia_r - model.it_r) * dot(u, omega)),
+        );
+        y[b + roller::AZIMUTH] = psi;
+        y[b + roller::RADIUS] = rho;
+        y[b + roller::AXIAL] = z;
+        write3(&mut y, b + roller::AXIS, scale(u, geo.sigma));
+        y[b + roller::ORBITAL_SPEED] = w_c;
+        write3(&mut y, b + roller::MOMENTUM, momentum);
+    }
+    for k in 0..2 {
+        let ci = lay.cage(k);
+        write3(&mut y, ci + cage::CENTRE, [0.0, 0.0, model.rows[k].mid.1]);
+        write3(&mut y, ci + cage::AXIS, [0.0, 0.0, 1.0]);
+        write3(&mut y, ci + cage::MOMENTUM, [0.0, 0.0, model.ia_c * w_c]);
+    }
+    y
+}
+
+/// Error scales of the state (crate docs, "Error control"): lengths 1 mm, velocities the
+/// rolling speed.
+fn error_scales(model: &TaperedModel) -> (Vec<f64>, Vec<f64>) {
+    let lay = TaperedLayout { z: model.z };
+    let r_m = 0.5 * model.bearing.pitch_diameter;
+    let v_ref = (model.conditions.inner_speed.speed(0.0).abs() * r_m).max(1.0);
+    let len = 1e-3;
+    let half_l = 0.5 * model.bearing.roller.length;
+    let rw = 0.5 * model.bearing.roller.mean_diameter;
+    let spin = model.ia_r * v_ref / rw;
+    let (mut s, mut rel) = (vec![len; lay.len()], vec![0.0; lay.len()]);
+    for j in 0..2 * model.z {
+        let b = lay.roller(j);
+        let vals = [
+            (roller::AZIMUTH, len / r_m, 0.0),
+            (roller::AXIS, len / half_l, 0.0),
+            (roller::AXIS + 1, len / half_l, 0.0),
+            (roller::AXIS + 2, len / half_l, 0.0),
+            (roller::ORBITAL_SPEED, v_ref / r_m, 1.0),
+            (roller::RADIAL_VELOCITY, v_ref, 1.0),
+            (roller::AXIAL_VELOCITY, v_ref, 1.0),
+            (roller::MOMENTUM, spin, 1.0),
+            (roller::MOMENTUM + 1, spin, 1.0),
+            (roller::MOMENTUM + 2, spin, 1.0),
+        ];
+        for (k, sc, r) in vals {
+            s[b + k] = sc;
+            rel[b + k] = r;
+        }
+    }
+    let lc = model.ia_c * v_ref / r_m;
+    for k in 0..2 {
+        let ci = lay.cage(k);
+        s[ci + cage::ANGLE] = len / r_m;
+        for i in 0..3 {
+            s[ci + cage::AXIS + i] = len / r_m;
+            (s[ci + cage::VELOCITY + i], rel[ci + cage::VELOCITY + i]) = (v_ref, 1.0);
+            (s[ci + cage::MOMENTUM + i], rel[ci + cage::MOMENTUM + i]) = (lc, 1.0);
+        }
+    }
+    let ii = lay.inner();
+    for i in 0..3 {
+        (
+            s[ii + inner_ring::VELOCITY + i],
+            rel[ii + inner_ring::VELOCITY + i],
+        ) = (v_ref, 1.0);
+    }
+    (s, rel)
+}
+
+/// Runs `model` for `settings.duration_s`, calling `progress(t)` after every sample.
+pub fn run(
+    model: &TaperedModel,
+    settings: &TaperedRunSettings,
+    mut progress: impl FnMut(f64),
+) -> Result<TaperedRun, DynError> {
+    let y0 = initial_state(model);
+    let (scale_v, rel) = error_scales(model);
+    let set = settings.integrator;
+    let mut dp = stepper(model, y0, scale_v, rel, &set);
+    let mut sys = TaperedSystem::new(model);
+    let lay = sys.layout;
+    let mut samples = Vec::new();
+    let mut next = 0.0;
+    let mut ybuf = vec![0.0; lay.len()];
+    while next <= settings.duration_s {
+        while dp.t() < next {
+            dp.step(&mut sys, &set)
+                .map_err(|e| step_error(e, dp.t(), &lay))?;
+            if dp.stats().accepted >= set.max_steps {
+                return Err(DynError::StepBudgetExhausted {
+                    time_s: dp.t(),
+                    steps: dp.stats().accepted,
+                });
+            }
+        }
+        if dp.stats().accepted == 0 {
+            ybuf.copy_from_slice(dp.y());
+            let mut dy = vec![0.0; lay.len()];
+            crate::integrator::OdeSystem::rhs_reported(&mut sys, 0.0, &ybuf, &mut dy);
+        } else {
+            dp.interpolate(next, &mut ybuf);
+        }
+        samples.push(sample(model, &lay, next, &ybuf, &sys.rollers));
+        progress(next);
+        next += settings.sample_interval_s;
+    }
+    let summary = summarise(model, &samples);
+    Ok(TaperedRun {
+        samples,
+        summary,
+        steps: dp.stats().accepted,
+        rhs_evaluations: dp.stats().rhs_evaluations,
+        most_limiting: dp.stats().most_limiting().map(|c| component_name(c, &lay)),
+    })
+}
+
+/// The integrator of `settings.method` at the start state; for Rosenbrock-W the Jacobian
+/// blocks are the rollers (one colour group: no roller's rates depend on another roller), the
+/// two cages (one group) and the inner ring.
+fn stepper(
+    model: &TaperedModel,
+    y: Vec<f64>,
+    scale: Vec<f64>,
+    relative: Vec<f64>,
+    set: &IntegratorSettings,
+) -> Stepper {
+    match set.method {
+        IntegratorMethod::Dopri5 => {
+            Stepper::Dopri5(Dopri5::new(0.0, y, scale, relative, set.initial_step_s))
+        }
+        IntegratorMethod::RosenbrockW => {
+            let lay = TaperedLayout { z: model.z };
+            let block = |start, n| JacobianBlock { start, n };
+            let groups = [
+                (0..2 * model.z)
+                    .map(|j| block(lay.roller(j), ROLLER_DOF))
+                    .collect(),
+                vec![block(lay.cage(0), CAGE_DOF), block(lay.cage(1), CAGE_DOF)],
+                vec![block(lay.inner(), INNER_DOF)],
+            ];
+            Stepper::RosenbrockW(RosenbrockW::new(
+                0.0,
+                y,
+                scale,
+                relative,
+                set.initial_step_s,
+                &groups,
+            ))
+        }
+    }
+}
+
+/// Body and component of state index `c`.
+fn component_name(c: usize, lay: &TaperedLayout) -> String {
+    if c < lay.cage(0) {
+        format!("roller {} component {}", c / ROLLER_DOF, c % ROLLER_DOF)
+    } else if c < lay.inner() {
+        let k = c - lay.cage(0);
+        format!("cage {} component {}", k / CAGE_DOF, k % CAGE_DOF)
+    } else {
+        format!("inner ring component {}", c - lay.inner())
+    }
+}
+
+/// The diagnosis of a failed step: the body and component that limited it.
+fn step_error(e: StepError, t: f64, lay: &TaperedLayout) -> DynError {
+    let name = |c: usize| component_name(c, lay);
+    match e {
+        StepError::Collapse { h, component } => DynError::StepSizeCollapse {
+            time_s: t,
+            step_s: h,
+            component: name(component),
+        },
+        StepError::NonFinite { h, component } => DynError::NonFinite {
+            time_s: t,
+            component: name(component),
+            step_s: h,
+        },
+    }
+}
+
+/// A sample from the interpolated state `y` at `t` and the contact report of the last accepted
+/// step.
+fn sample(
+    model: &TaperedModel,
+    lay: &TaperedLayout,
+    t: f64,
+    y: &[f64],
+    rollers: &[RollerReport],
+) -> TaperedSample {
+    let z = model.z;
+    let mut s = TaperedSample {
+        time_s: t,
+        inner_ring: read3(y, lay.inner() + inner_ring::CENTRE),
+        cage_angle: [0.0; 2],
+        cage_speed: [0.0; 2],
+        max_cone_load: [0.0; 2],
+        rollers_near_max: [0; 2],
+        max_rib_force: [0.0; 2],
+        total_rib_force: [0.0; 2],
+        cone_sliding: [0.0; 2],
+        cup_sliding: [0.0; 2],
+        max_slip: 0.0,
+        tracked_large_rib: [0.0; 2],
+        tracked_small_rib: [0.0; 2],
+        rib_ehl_share: 0.0,
+    };
+    let (mut ribs_loaded, mut ribs_ehl) = (0usize, 0usize);
+    for k in 0..2 {
+        let ci = lay.cage(k);
+        s.cage_angle[k] = y[ci + cage::ANGLE];
+        let axis = read3(y, ci + cage::AXIS);
+        let w = axisymmetric_omega(read3(y, ci + cage::MOMENTUM), axis, model.ia_c, model.it_c);
+        s.cage_speed[k] = dot(w, axis);
+        let row = &rollers[k * z..(k + 1) * z];
+        let max = row.iter().fold(0.0_f64, |m, r| m.max(r.cone));
+        s.max_cone_load[k] = max;
+        s.rollers_near_max[k] = row
+            .iter()
+            .filter(|r| max > 0.0 && r.cone >= 0.9 * max)
+            .count();
+        let (mut load, mut cone_v, mut cup_load, mut cup_v) = (0.0, 0.0, 0.0, 0.0);
+        for r in row {
+            s.max_rib_force[k] = s.max_rib_force[k].max(r.large_rib);
+            s.total_rib_force[k] += r.large_rib;
+            load += r.cone;
+            cone_v += r.cone * r.cone_sliding;
+            cup_load += r.cup;
+            cup_v += r.cup * r.cup_sliding;
+            s.max_slip = s.max_slip.max(r.slip);
+            if r.large_rib > 0.0 {
+                ribs_loaded += 1;
+                ribs_ehl += usize::from(r.rib_ehl);
+            }
+        }
+        s.cone_sliding[k] = if load > 0.0 { cone_v / load } else { 0.0 };
+        s.cup_sliding[k] = if cup_load > 0.0 {
+            cup_v / cup_load
+        } else {
+            0.0
+        };
+    }
+    for k in 0..2 {
+        s.tracked_large_rib[k] = rollers[k * z].large_rib;
+        s.tracked_small_rib[k] = rollers[k * z].small_rib;
+    }
+    s.rib_ehl_share = if ribs_loaded > 0 {
+        ribs_ehl as f64 / ribs_loaded as f64
+    } else {
+        0.0
+    };
+    s
+}
