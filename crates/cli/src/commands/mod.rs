@@ -14,6 +14,7 @@ pub mod oils;
 mod operating_args;
 mod rig_args;
 pub mod simulate;
+pub mod simulate_tapered;
 pub mod skid;
 pub mod startup;
 pub mod study;

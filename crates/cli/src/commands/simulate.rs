@@ -66,7 +66,7 @@ pub enum IntegratorArg {
 }
 
 impl IntegratorArg {
-    fn method(self) -> IntegratorMethod {
+    pub(crate) fn method(self) -> IntegratorMethod {
         match self {
             Self::Dopri5 => IntegratorMethod::Dopri5,
             Self::RosenbrockW => IntegratorMethod::RosenbrockW,
@@ -578,6 +578,9 @@ impl Duration {
 
 pub fn run(args: Args) -> Result<(), Failure> {
     let model = load_model(args.model.as_deref())?;
+    if let rolldyn_geometry::BearingModel::Tapered(_) = &model.bearing {
+        return super::simulate_tapered::run_tapered(&args, &model);
+    }
     let output_step = checked_output_step(args.output_step)?;
     // the cage-load export samples on the epicyclic cage period at t = 0
     let period = match (&args.cage_loads, &model.bearing) {
@@ -759,7 +762,7 @@ fn write_checkpoint(path: &Path, bytes: &[u8]) -> Result<(), Failure> {
         .map_err(|e| Failure::Run(format!("{}: {e}", path.display())))
 }
 
-fn progress_bar(quiet: bool, t_end: f64) -> ProgressBar {
+pub(crate) fn progress_bar(quiet: bool, t_end: f64) -> ProgressBar {
     let bar = ProgressBar::with_draw_target(Some(1000), ProgressDrawTarget::stderr());
     if quiet {
         bar.set_draw_target(ProgressDrawTarget::hidden());
