@@ -372,12 +372,10 @@ pub fn record_loads(
     overrides: &rolldyn_setup::Overrides,
     settings: &FatigueSettings,
 ) -> Result<(CageLoadExport, RevolutionMaxima, CageGeometry), FatigueError> {
-    let rolldyn_geometry::BearingModel::Cylindrical(bearing) = &model.bearing else {
-        return Err(FatigueError::Input(format!(
-            "{}: cage fatigue needs a complete bearing (bearing.kind = \"cylindrical\")",
-            model.source.file
-        )));
-    };
+    let bearing = model
+        .bearing
+        .require_cylindrical("cage fatigue")
+        .map_err(|reason| FatigueError::Input(format!("{}: {reason}", model.source.file)))?;
     let cage = cage_geometry(bearing, settings.fillet_radius_m)
         .map_err(|e| FatigueError::Input(format!("{}: {e}", model.source.file)))?;
     let input = |e: rolldyn_setup::SetupError| FatigueError::Input(e.0);

@@ -67,6 +67,21 @@ impl BearingModel {
         }
     }
 
+    /// The complete cylindrical bearing, or the one-line reason why `command` cannot run this
+    /// model.
+    pub fn require_cylindrical(&self, command: &str) -> Result<&CylindricalRollerBearing, String> {
+        match self {
+            Self::Cylindrical(b) => Ok(b),
+            Self::Tapered(_) => Err(format!(
+                "{command} supports cylindrical bearings; for a double-row tapered bearing use \
+                 `rolldyn check|loads|simulate`"
+            )),
+            Self::RollerRaceway(_) => Err(format!(
+                "{command} needs a complete bearing (bearing.kind = \"cylindrical\")"
+            )),
+        }
+    }
+
     pub fn validate(&self) -> Result<(), GeometryError> {
         match self {
             Self::Cylindrical(b) => b.validate(),

@@ -33,13 +33,17 @@ pub fn check_temperature(key: &str, kelvin: f64) -> Result<(), GeometryError> {
 /// Checks a ring speed [rad/s] given at `key` against the surface-speed bound at the pitch
 /// diameter of `bearing` (no bound for a roller–raceway pair).
 pub fn check_speed(bearing: &BearingModel, key: &str, speed: f64) -> Result<(), GeometryError> {
-    let BearingModel::Cylindrical(b) = bearing else {
-        return speed
-            .is_finite()
-            .then_some(())
-            .ok_or_else(|| GeometryError::new(key, "must be finite"));
+    let pitch_diameter = match bearing {
+        BearingModel::Cylindrical(b) => b.pitch_diameter(),
+        BearingModel::Tapered(b) => b.pitch_diameter,
+        BearingModel::RollerRaceway(_) => {
+            return speed
+                .is_finite()
+                .then_some(())
+                .ok_or_else(|| GeometryError::new(key, "must be finite"));
+        }
     };
-    let limit = MAX_PITCH_SURFACE_SPEED_M_S / (0.5 * b.pitch_diameter());
+    let limit = MAX_PITCH_SURFACE_SPEED_M_S / (0.5 * pitch_diameter);
     if speed.abs() <= limit {
         return Ok(());
     }
@@ -52,7 +56,7 @@ pub fn check_speed(bearing: &BearingModel, key: &str, speed: f64) -> Result<(), 
             speed * rpm,
             limit * rpm,
             MAX_PITCH_SURFACE_SPEED_M_S,
-            b.pitch_diameter() * 1e3
+            pitch_diameter * 1e3
         ),
     ))
 }

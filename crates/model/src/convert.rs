@@ -11,10 +11,10 @@ pub const DEFAULT_SLICES: usize = 30;
 
 type Result<T> = std::result::Result<T, GeometryError>;
 
-struct Materials(BTreeMap<String, Material>);
+pub(crate) struct Materials(BTreeMap<String, Material>);
 
 impl Materials {
-    fn new(sections: &BTreeMap<String, MaterialSection>) -> Result<Self> {
+    pub(crate) fn new(sections: &BTreeMap<String, MaterialSection>) -> Result<Self> {
         let mut map = BTreeMap::new();
         map.insert("bearing-steel".to_string(), Material::bearing_steel());
         for (name, m) in sections {
@@ -43,7 +43,7 @@ impl Materials {
         Ok(Self(map))
     }
 
-    fn get(&self, name: Option<&str>, key: &str) -> Result<Material> {
+    pub(crate) fn get(&self, name: Option<&str>, key: &str) -> Result<Material> {
         let name = name.unwrap_or("bearing-steel");
         self.0.get(name).cloned().ok_or_else(|| {
             let known: Vec<_> = self.0.keys().map(String::as_str).collect();
@@ -55,7 +55,7 @@ impl Materials {
     }
 }
 
-fn mass_properties(
+pub(crate) fn mass_properties(
     computed: MassProperties,
     given: &MassOverride,
     key: &str,
@@ -95,7 +95,7 @@ pub(crate) struct DesignContact {
     pub reduced_radius: f64,
 }
 
-fn profile(
+pub(crate) fn profile(
     section: &ProfileSection,
     half_length: f64,
     key: &str,
@@ -360,6 +360,10 @@ pub(crate) fn build(file: &ModelFile) -> Result<BearingModel> {
     };
     let name = file.bearing.name.clone();
     match file.bearing.kind {
+        ModelKind::DoubleRowTapered => Err(GeometryError::new(
+            "bearing.kind",
+            "a double-row tapered bearing is read by its own schema (docs/model-format.md)",
+        )),
         ModelKind::RollerRaceway => {
             for (present, key) in [
                 (file.cage.is_some(), "cage"),

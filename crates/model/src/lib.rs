@@ -14,6 +14,7 @@ pub mod journal;
 mod operation;
 mod raceway_wear;
 pub mod schema;
+pub mod tapered;
 
 pub use convert::DEFAULT_SLICES;
 pub use dynamics::{CageLandLaw, DynamicsInputs, EndFrictionLaw, EndPairInputs, PairInputs};
@@ -189,35 +190,91 @@ fn located(
 
 /// Parses and validates model text; `file` names it in errors.
 pub fn parse(text: &str, file: &str) -> Result<Model, ModelError> {
+    if declared_kind(text) == Some(schema::ModelKind::DoubleRowTapered) {
+        return parse_tapered(text, file);
+    }
     let document = Document::<schema::ModelFile>::parse(text, file)?;
     let schema = &document.schema;
     let locate = |e: rolldyn_geometry::GeometryError| document.error(&e.key, e.reason);
     let mut bearing = convert::build(schema).map_err(locate)?;
     raceway_wear::attach(&mut bearing, schema, file).map_err(locate)?;
     bearing.validate().map_err(locate)?;
-    let schedules = operation::schedules(schema.operating.as_ref()).map_err(locate)?;
+    let sections = SharedSections {
+        lubricant: schema.lubricant.as_ref(),
+        operating: schema.operating.as_ref(),
+        startup: schema.startup.as_ref(),
+        dynamics: schema.dynamics.as_ref(),
+    };
+    complete(bearing, sections, text, file).map_err(locate)
+}
+
+/// A double-row tapered bearing model (its own tables, docs/model-format.md).
+fn parse_tapered(text: &str, file: &str) -> Result<Model, ModelError> {
+    let document = Document::<tapered::TaperedModelFile>::parse(text, file)?;
+    let schema = &document.schema;
+    let locate = |e: rolldyn_geometry::GeometryError| document.error(&e.key, e.reason);
+    let bearing = BearingModel::Tapered(tapered::build(schema).map_err(locate)?);
+    bearing.validate().map_err(locate)?;
+    let sections = SharedSections {
+        lubricant: schema.lubricant.as_ref(),
+        operating: schema.operating.as_ref(),
+        startup: None,
+        dynamics: schema.dynamics.as_ref(),
+    };
+    complete(bearing, sections, text, file).map_err(locate)
+}
+
+/// `[bearing] kind` of a model text, if it can be read (errors are reported by the full parse).
+fn declared_kind(text: &str) -> Option<schema::ModelKind> {
+    #[derive(serde::Deserialize)]
+    struct Probe {
+        bearing: ProbeBearing,
+    }
+    #[derive(serde::Deserialize)]
+    struct ProbeBearing {
+        kind: schema::ModelKind,
+    }
+    toml::from_str::<Probe>(text).ok().map(|p| p.bearing.kind)
+}
+
+/// The tables every kind of model shares.
+struct SharedSections<'a> {
+    lubricant: Option<&'a schema::LubricantSection>,
+    operating: Option<&'a schema::OperatingSection>,
+    startup: Option<&'a schema::StartupSection>,
+    dynamics: Option<&'a schema::DynamicsSection>,
+}
+
+/// The model of a validated bearing and the shared tables.
+fn complete(
+    bearing: BearingModel,
+    sections: SharedSections,
+    text: &str,
+    file: &str,
+) -> Result<Model, rolldyn_geometry::GeometryError> {
+    let schedules = operation::schedules(sections.operating)?;
     if let (Some(points), BearingModel::Cylindrical(b)) = (&schedules.clearance, &bearing) {
         // the interference limit of `clearance.radial` (0.2 % of D_w) applies at every time
         let limit = -0.002 * b.roller.diameter;
         if let Some(&(t, g)) = points.iter().find(|p| p.1 < limit) {
-            return Err(locate(rolldyn_geometry::GeometryError::new(
+            return Err(rolldyn_geometry::GeometryError::new(
                 "operating.clearance_schedule.radial",
                 format!(
                     "preload {:.4} mm at {t} s exceeds 0.2 % of the roller diameter: an interference, not a preload",
                     -g * 1e3
                 ),
-            )));
+            ));
         }
     }
-    let operating = operation::operating(schema.operating.as_ref()).map_err(locate)?;
-    check_speeds(&bearing, &operating, &schedules).map_err(locate)?;
+    let operating = operation::operating(sections.operating)?;
+    check_speeds(&bearing, &operating, &schedules)?;
     Ok(Model {
         bearing,
-        lubrication: operation::lubrication(schema.lubricant.as_ref(), file).map_err(locate)?,
+        lubrication: operation::lubrication(sections.lubricant, file)?,
         operating,
         schedules,
-        startup: operation::startup(schema.startup.as_ref()).map_err(locate)?,
-        dynamics: dynamics::dynamics(schema.dynamics.as_ref()).map_err(locate)?,
+        startup: operation::startup(sections.startup)?,
+        dynamics: dynamics::dynamics(sections.dynamics)?,
         source: Source {
             file: file.to_string(),
             text: text.to_string(),

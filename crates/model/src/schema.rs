@@ -34,6 +34,8 @@ pub enum ModelKind {
     Cylindrical,
     /// One roller on one raceway (contact studies).
     RollerRaceway,
+    /// A double-row tapered roller bearing: the tables of [`crate::tapered::TaperedModelFile`].
+    DoubleRowTapered,
 }
 
 #[derive(Debug, Deserialize)]

@@ -14,7 +14,6 @@ use rolldyn_dynamics::conditions::{ContactTemperatures, InnerRingLoad, Operating
 use rolldyn_dynamics::parameters::ContactParameters;
 use rolldyn_dynamics::settings::DynamicsSettings;
 use rolldyn_dynamics::{RacewayTraction, Simulation};
-use rolldyn_geometry::BearingModel;
 use rolldyn_model::CageLandLaw;
 
 /// The model cannot be turned into a simulation (missing section, bad override, invalid
@@ -355,15 +354,10 @@ fn bearing_and_oil(
     ),
     SetupError,
 > {
-    let BearingModel::Cylindrical(bearing) = &model.bearing else {
-        return Err(model
-            .source
-            .error(
-                "bearing.kind",
-                "simulate needs a complete bearing (bearing.kind = \"cylindrical\")",
-            )
-            .into());
-    };
+    let bearing = model
+        .bearing
+        .require_cylindrical("simulate")
+        .map_err(|reason| model.source.error("bearing.kind", reason))?;
     let lubrication = quasi_static::lubrication(model, "simulate")?;
     quasi_static::check_traction_oil(model, lubrication)?;
     Ok((bearing, lubrication))

@@ -9,7 +9,6 @@ use crate::report::WearTables;
 use crate::settings::{PeriodControl, WearMethod, WearSettings};
 use crate::surface::PerSurface;
 use crate::worn_model::write_worn_model;
-use rolldyn_geometry::BearingModel;
 use rolldyn_model::Model;
 use rolldyn_setup::Overrides;
 use serde::Serialize;
@@ -88,12 +87,10 @@ pub fn run_wear(
     progress: &mut dyn FnMut(&PeriodRecord),
 ) -> Result<WearAnswer, WearError> {
     let wall = Instant::now();
-    let BearingModel::Cylindrical(bearing) = &model.bearing else {
-        return Err(WearError::Input(format!(
-            "{}: wear needs a complete bearing (bearing.kind = \"cylindrical\")",
-            model.source.file
-        )));
-    };
+    let bearing = model
+        .bearing
+        .require_cylindrical("wear")
+        .map_err(|reason| WearError::Input(format!("{}: {reason}", model.source.file)))?;
     let input = |e: rolldyn_setup::SetupError| WearError::Input(e.0);
     let lubrication = rolldyn_setup::quasi_static::lubrication(model, "wear").map_err(input)?;
     let conditions = rolldyn_setup::conditions(overrides, model).map_err(input)?;

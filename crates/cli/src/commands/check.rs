@@ -2,7 +2,7 @@
 
 use crate::failure::Failure;
 use crate::output::{load_model, print_json};
-use rolldyn_geometry::{BearingModel, MassProperties};
+use rolldyn_geometry::{BearingModel, DoubleRowTaperedBearing, MassProperties};
 use rolldyn_units::{AngularSpeed, Quantity};
 use serde::Serialize;
 use std::path::PathBuf;
@@ -77,6 +77,116 @@ pub struct Summary {
     outer_speed_rad_s: Option<f64>,
     epicyclic_cage_speed_rad_s: Option<f64>,
     epicyclic_roller_speed_rad_s: Option<f64>,
+}
+
+/// Derived dimensions of a double-row tapered bearing (SI units; docs/theory.md "Double-row
+/// tapered bearing geometry").
+#[derive(Serialize)]
+pub struct TaperedSummary {
+    name: String,
+    kind: &'static str,
+    misalignment_rad: f64,
+    arrangement: &'static str,
+    rollers_per_row: usize,
+    pitch_diameter_m: f64,
+    roller_mean_diameter_m: f64,
+    roller_large_diameter_m: f64,
+    roller_small_diameter_m: f64,
+    roller_length_m: f64,
+    roller_half_angle_rad: f64,
+    roller_axis_angle_rad: f64,
+    cone_angle_rad: f64,
+    cup_angle_rad: f64,
+    apex_distance_m: f64,
+    apex_mismatch_m: f64,
+    /// cone and cup contact diameters in the roller mid-length section
+    cone_contact_diameter_m: f64,
+    cup_contact_diameter_m: f64,
+    row_spacing_m: f64,
+    axial_clearance_m: f64,
+    normal_gap_per_row_m: f64,
+    large_rib_height_m: f64,
+    large_rib_undercut_m: f64,
+    large_rib_contact_height_m: f64,
+    /// initial end–rib contact of row 2 (z > 0), bearing coordinates
+    large_rib_contact_r_m: f64,
+    large_rib_contact_z_m: f64,
+    /// angle of the contact on the end sphere from the roller axis
+    large_rib_contact_angle_rad: f64,
+    /// axial distance from the roller mid-point to where the rib face meets the raceway line
+    large_rib_face_base_from_roller_mid_m: f64,
+    end_rib_reduced_curvature_per_m: f64,
+    small_rib_gap_m: f64,
+    slices: usize,
+    roller: Mass,
+    /// roller centre of mass from mid-length, + toward the large end
+    roller_centre_of_mass_offset_m: f64,
+    cage: Mass,
+    cage_pocket_clearance_m: f64,
+    inner_speed_rad_s: f64,
+    epicyclic_cage_speed_rad_s: f64,
+    outer_roller_pass_frequency_hz: f64,
+    inner_roller_pass_frequency_hz: f64,
+}
+
+impl TaperedSummary {
+    pub fn of(b: &DoubleRowTaperedBearing, inner_speed: f64) -> Self {
+        let row = b.row(1);
+        let rib = row.large_rib;
+        let (cone_r, cup_r) = b.contact_radii();
+        let (outer_pass, inner_pass) = b.pass_frequencies(inner_speed);
+        let r = &b.roller;
+        Self {
+            name: b.name.clone(),
+            kind: "double-row tapered",
+            misalignment_rad: b.misalignment.inner_ring_tilt,
+            arrangement: match b.arrangement {
+                rolldyn_geometry::Arrangement::O => "O (back-to-back)",
+                rolldyn_geometry::Arrangement::X => "X (face-to-face)",
+            },
+            rollers_per_row: b.rollers_per_row,
+            pitch_diameter_m: b.pitch_diameter,
+            roller_mean_diameter_m: r.mean_diameter,
+            roller_large_diameter_m: r.large_diameter(),
+            roller_small_diameter_m: r.small_diameter(),
+            roller_length_m: r.length,
+            roller_half_angle_rad: r.half_angle,
+            roller_axis_angle_rad: b.roller_axis_angle(),
+            cone_angle_rad: b.cone_angle(),
+            cup_angle_rad: b.cup_angle(),
+            apex_distance_m: b.apex_distance(),
+            apex_mismatch_m: b.apex_mismatch(),
+            cone_contact_diameter_m: 2.0 * cone_r,
+            cup_contact_diameter_m: 2.0 * cup_r,
+            row_spacing_m: b.row_spacing,
+            axial_clearance_m: b.axial_clearance,
+            normal_gap_per_row_m: b.normal_gap(),
+            large_rib_height_m: b.large_rib.height,
+            large_rib_undercut_m: b.large_rib.undercut,
+            large_rib_contact_height_m: b.large_rib.contact_height(),
+            large_rib_contact_r_m: rib.point.r,
+            large_rib_contact_z_m: rib.point.z,
+            large_rib_contact_angle_rad: rib.normal.dot(-row.roller_axis).clamp(-1.0, 1.0).acos(),
+            large_rib_face_base_from_roller_mid_m: (rib.face_base.z - row.roller_mid.z).abs(),
+            end_rib_reduced_curvature_per_m: 1.0 / r.large_end_sphere_radius
+                - b.large_rib.face.curvature(),
+            small_rib_gap_m: b.small_rib_gap,
+            slices: r.slice_count,
+            roller: r.mass_properties().into(),
+            roller_centre_of_mass_offset_m: r.centre_of_mass_offset(),
+            cage: MassProperties {
+                mass: b.cage.mass,
+                axial_inertia: b.cage.inertia_axial,
+                transverse_inertia: b.cage.inertia_transverse,
+            }
+            .into(),
+            cage_pocket_clearance_m: b.cage.pocket_clearance,
+            inner_speed_rad_s: inner_speed,
+            epicyclic_cage_speed_rad_s: b.epicyclic_cage_speed(inner_speed),
+            outer_roller_pass_frequency_hz: outer_pass,
+            inner_roller_pass_frequency_hz: inner_pass,
+        }
+    }
 }
 
 pub fn summarise(model: &BearingModel, inner_speed: f64, outer_speed: f64) -> Summary {
@@ -228,6 +338,124 @@ pub fn describe(s: &Summary) -> Vec<String> {
     out
 }
 
+/// Human-readable lines of a tapered summary (mm, degrees and arc-minutes, g, rpm, Hz).
+pub fn describe_tapered(t: &TaperedSummary) -> Vec<String> {
+    let mm = |v: f64| format!("{:.4} mm", v * 1e3);
+    let angle = |a: f64| format!("{:.4}° ({:.2}′)", a.to_degrees(), a.to_degrees() * 60.0);
+    let mass = |m: &Mass| {
+        format!(
+            "{:.4} kg, J_axial {:.4e} kg·m², J_transverse {:.4e} kg·m²",
+            m.mass_kg, m.axial_inertia_kg_m2, m.transverse_inertia_kg_m2
+        )
+    };
+    let rpm = |w: f64| {
+        format!(
+            "{:.2} rad/s ({:.1} rpm)",
+            w,
+            w * 30.0 / std::f64::consts::PI
+        )
+    };
+    let mut out = vec![format!("model {} ({}) — valid", t.name, t.kind)];
+    let mut line = |label: &str, value: String| out.push(format!("  {label:<40} {value}"));
+    line("arrangement", t.arrangement.to_string());
+    line("rollers per row", t.rollers_per_row.to_string());
+    line(
+        "roller D_w (mean) / large / small",
+        format!(
+            "{} / {} / {}",
+            mm(t.roller_mean_diameter_m),
+            mm(t.roller_large_diameter_m),
+            mm(t.roller_small_diameter_m)
+        ),
+    );
+    line("roller length", mm(t.roller_length_m));
+    line("roller half-angle β", angle(t.roller_half_angle_rad));
+    line(
+        "roller-axis angle θ_r (apex condition)",
+        angle(t.roller_axis_angle_rad),
+    );
+    line("cone angle α_i = θ_r − β", angle(t.cone_angle_rad));
+    line(
+        "cup angle α_o = θ_r + β (contact angle)",
+        angle(t.cup_angle_rad),
+    );
+    line("roller mid-point → apex", mm(t.apex_distance_m));
+    line(
+        "apex mismatch",
+        format!("{:.3e} mm", t.apex_mismatch_m * 1e3),
+    );
+    line("pitch diameter d_m", mm(t.pitch_diameter_m));
+    line(
+        "cone / cup contact Ø (mid-length)",
+        format!(
+            "{} / {}",
+            mm(t.cone_contact_diameter_m),
+            mm(t.cup_contact_diameter_m)
+        ),
+    );
+    line("row spacing (roller mid-points)", mm(t.row_spacing_m));
+    line("axial clearance", mm(t.axial_clearance_m));
+    line(
+        "normal gap per row ½ c_a sin α_o",
+        mm(t.normal_gap_per_row_m),
+    );
+    line(
+        "large rib height / undercut",
+        format!(
+            "{} / {}",
+            mm(t.large_rib_height_m),
+            mm(t.large_rib_undercut_m)
+        ),
+    );
+    line(
+        "end–rib contact: height, angle on sphere",
+        format!(
+            "{} above the raceway, {}",
+            mm(t.large_rib_contact_height_m),
+            angle(t.large_rib_contact_angle_rad)
+        ),
+    );
+    line(
+        "end–rib contact (row 2): r, z",
+        format!(
+            "{}, {}",
+            mm(t.large_rib_contact_r_m),
+            mm(t.large_rib_contact_z_m)
+        ),
+    );
+    line(
+        "rib foot from roller mid-point (axial)",
+        mm(t.large_rib_face_base_from_roller_mid_m),
+    );
+    line(
+        "end–rib reduced curvature",
+        format!("{:.4} 1/m", t.end_rib_reduced_curvature_per_m),
+    );
+    line("small-rib gap", mm(t.small_rib_gap_m));
+    line("slices per roller", t.slices.to_string());
+    line("roller mass properties", mass(&t.roller));
+    line(
+        "roller centre of mass (from mid-length)",
+        mm(t.roller_centre_of_mass_offset_m),
+    );
+    line("cage mass properties (one row)", mass(&t.cage));
+    line("cage pocket clearance", mm(t.cage_pocket_clearance_m));
+    line(
+        "misalignment",
+        format!("{:.2}′", t.misalignment_rad.to_degrees() * 60.0),
+    );
+    line("inner ring speed (cup fixed)", rpm(t.inner_speed_rad_s));
+    line("epicyclic cage speed", rpm(t.epicyclic_cage_speed_rad_s));
+    line(
+        "roller-pass frequency outer / inner",
+        format!(
+            "{:.2} Hz / {:.2} Hz",
+            t.outer_roller_pass_frequency_hz, t.inner_roller_pass_frequency_hz
+        ),
+    );
+    out
+}
+
 pub fn run(args: Args) -> Result<(), Failure> {
     let model = load_model(args.model.as_deref())?;
     let flags = rolldyn_setup::FlagValues {
@@ -244,6 +472,17 @@ pub fn run(args: Args) -> Result<(), Failure> {
         .outer_speed
         .or(model.operating.outer_speed)
         .unwrap_or(0.0);
+    if let BearingModel::Tapered(b) = &model.bearing {
+        let summary = TaperedSummary::of(b, inner);
+        return if args.json {
+            print_json(&summary)
+        } else {
+            describe_tapered(&summary)
+                .iter()
+                .for_each(|l| println!("{l}"));
+            Ok(())
+        };
+    }
     let summary = summarise(&model.bearing, inner, outer);
     if args.json {
         print_json(&summary)

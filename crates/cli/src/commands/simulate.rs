@@ -483,11 +483,10 @@ fn write_cage_loads(
     model: &rolldyn_model::Model,
     recorder: &CageLoadRecorder,
 ) -> Result<(), Failure> {
-    let rolldyn_geometry::BearingModel::Cylindrical(bearing) = &model.bearing else {
-        return Err(Failure::Input(
-            "--cage-loads needs a complete bearing (bearing.kind = \"cylindrical\")".into(),
-        ));
-    };
+    let bearing = model
+        .bearing
+        .require_cylindrical("--cage-loads")
+        .map_err(Failure::Input)?;
     let fillet = rolldyn_fatigue::study::FatigueSettings::default().fillet_radius_m;
     let cage = rolldyn_fatigue::study::cage_geometry(bearing, fillet).map_err(Failure::Input)?;
     let sets = recorder.last_revolution().map_err(|e| {

@@ -3,7 +3,6 @@
 
 use crate::failure::Failure;
 use crate::output::{load_model, out_dir, print_json, write_csv};
-use rolldyn_geometry::BearingModel;
 use rolldyn_model::{Model, Temperatures};
 use rolldyn_plot::{Labels, Series, line_plot};
 use rolldyn_quasistatic::{
@@ -274,12 +273,10 @@ fn solve_failure(model: &Model, e: rolldyn_quasistatic::QsError) -> Failure {
 /// its table and plot to `--out`.
 pub fn run(args: Args) -> Result<(), Failure> {
     let model = load_model(args.model.as_deref())?;
-    let BearingModel::Cylindrical(bearing) = &model.bearing else {
-        return Err(Failure::Input(format!(
-            "{}: skid needs a complete bearing (bearing.kind = \"cylindrical\")",
-            model.bearing.name()
-        )));
-    };
+    let bearing = model
+        .bearing
+        .require_cylindrical("skid")
+        .map_err(|reason| Failure::Input(format!("{}: {reason}", model.bearing.name())))?;
     check_every_flag_value(&args, &model)?;
     let base = conditions(&args, &model)?;
     let options = QuasiStaticOptions::default();

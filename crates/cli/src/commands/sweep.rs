@@ -74,9 +74,7 @@ fn simulate(
 }
 
 fn skid(model: rolldyn_model::Model) -> Result<BTreeMap<String, f64>, String> {
-    let rolldyn_geometry::BearingModel::Cylindrical(bearing) = &model.bearing else {
-        return Err("skid needs a cylindrical bearing".into());
-    };
+    let bearing = model.bearing.require_cylindrical("skid")?;
     use rolldyn_setup::quasi_static::{
         QuasiStaticOverrides, matching_land_model, quasi_static_conditions,
     };

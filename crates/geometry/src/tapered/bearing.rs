@@ -227,10 +227,7 @@ impl DoubleRowTaperedBearing {
             ));
         }
         if !(self.small_rib_gap > 0.0) {
-            return Err(GeometryError::new(
-                "bearing.small_rib_gap",
-                "must be positive",
-            ));
+            return Err(GeometryError::new("small_rib.gap", "must be positive"));
         }
         if end_contact_angle(&self.roller, self.large_rib.contact_height()).is_none() {
             return Err(GeometryError::new(

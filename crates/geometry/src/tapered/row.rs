@@ -34,6 +34,8 @@ pub struct LargeRibContact {
     pub face_centre: Option<Rz>,
     /// Face band along `tangent` from `point`: (undercut end, rib top), signed distances [m].
     pub band: (f64, f64),
+    /// Where the face tangent at the contact meets the cone raceway line (the rib's foot) [m].
+    pub face_base: Rz,
     /// Centre of the roller's end sphere when seated [m].
     pub end_sphere_centre: Rz,
 }
@@ -191,6 +193,7 @@ fn large_rib_contact(
         tangent: frame.direction(section.vector(phi.sin(), phi.cos())),
         face_centre: face_centre.map(|c| frame.point(c)),
         band: (rib.undercut - h, rib.height - h),
+        face_base: frame.point(point - h * section.vector(phi.sin(), phi.cos())),
         end_sphere_centre: frame.point(centre),
     }
 }

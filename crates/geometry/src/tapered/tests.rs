@@ -258,6 +258,7 @@ fn large_rib_contact_at_mid_height() {
                 rib
             );
             assert!(rib.tangent.dot(row.cone.normal) > 0.0);
+            assert_close(rib.face_base, foot);
             if let Some(c) = rib.face_centre {
                 let r = 1.0 / face.curvature().abs();
                 assert!(((c - rib.point).norm() - r).abs() < 1e-12);
