@@ -196,6 +196,11 @@ fn inner_assembly_mass(b: &DoubleRowTaperedBearing, rows: &[RowGeometry; 2]) -> 
 }
 
 impl TaperedModel {
+    /// The traction model of the raceway and rib contacts.
+    pub fn traction_model(&self) -> &TractionModel {
+        &self.traction
+    }
+
     /// The model of `bearing` under `conditions` with `parameters` and the raceway traction
     /// `traction`.
     pub fn new(

@@ -23,6 +23,10 @@ pub struct TaperedRunSettings {
     /// interval of the recorded samples, s (default 50 µs: 20 kHz, far above the roller-pass
     /// frequencies of ≈ 100–150 Hz and their harmonics)
     pub sample_interval_s: f64,
+    /// initial angular offset of row 1's rollers and cage against row 0's, as a fraction of
+    /// the pocket pitch (default 0: "at the initial moment the windows of the cages were
+    /// opposite each other", seed 000 §3.2.1)
+    pub row1_offset_pitch: f64,
     /// the integrator: Dormand–Prince at τ = 10⁻⁵ (1 nm·10 on lengths). Measured on the seed's
     /// case 1 (20 ms from the seated start): 7070 steps at τ = 10⁻⁵ against 11 270 for the
     /// Rosenbrock-W method with a block per roller — the step is limited by the accuracy of
@@ -36,6 +40,7 @@ impl Default for TaperedRunSettings {
         Self {
             duration_s: 0.2,
             sample_interval_s: 5e-5,
+            row1_offset_pitch: 0.0,
             integrator: IntegratorSettings {
                 tolerance: 1e-5,
                 ..IntegratorSettings::default()
@@ -85,8 +90,9 @@ pub struct TaperedRun {
 
 /// The seated start: rollers on the cone and the large rib at their pocket azimuths, cages and
 /// rollers at the epicyclic speeds (pure rolling; the apex condition makes it pure along the
-/// whole line), the inner ring at the origin.
-pub fn initial_state(model: &TaperedModel) -> Vec<f64> {
+/// whole line), the inner ring at the origin; row 1 turned by `row1_offset_pitch` pitches.
+pub fn initial_state(model: &TaperedModel, row1_offset_pitch: f64) -> Vec<f64> {
+    let pitch = std::f64::consts::TAU / model.z as f64;
     let lay = TaperedLayout { z: model.z };
     let mut y = vec![0.0; lay.len()];
     let w_i = model.conditions.inner_speed.speed(0.0);
@@ -97,7 +103,8 @@ pub fn initial_state(model: &TaperedModel) -> Vec<f64> {
     let spin_ratio = model.cone_angle.sin() / model.half_angle.sin();
     for j in 0..2 * model.z {
         let geo = &model.rows[j / model.z];
-        let psi = std::f64::consts::TAU * (j % model.z) as f64 / model.z as f64;
+        let offset = if j < model.z { 0.0 } else { row1_offset_pitch };
+        let psi = pitch * ((j % model.z) as f64 + offset);
         let b = lay.roller(j);
         let (rho, z) = (
             geo.mid.0 + model.x_cm * geo.u.0,
@@ -121,6 +128,7 @@ pub fn initial_state(model: &TaperedModel) -> Vec<f64> {
     for k in 0..2 {
         let ci = lay.cage(k);
         write3(&mut y, ci + cage::CENTRE, [0.0, 0.0, model.rows[k].mid.1]);
+        y[ci + cage::ANGLE] = if k == 0 { 0.0 } else { row1_offset_pitch * pitch };
         write3(&mut y, ci + cage::AXIS, [0.0, 0.0, 1.0]);
         write3(&mut y, ci + cage::MOMENTUM, [0.0, 0.0, model.ia_c * w_c]);
     }
@@ -183,7 +191,7 @@ pub fn run(
     settings: &TaperedRunSettings,
     mut progress: impl FnMut(f64),
 ) -> Result<TaperedRun, DynError> {
-    let y0 = initial_state(model);
+    let y0 = initial_state(model, settings.row1_offset_pitch);
     let (scale_v, rel) = error_scales(model);
     let set = settings.integrator;
     let mut dp = stepper(model, y0, scale_v, rel, &set);
