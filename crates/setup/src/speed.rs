@@ -3,8 +3,10 @@
 //! (BENCHMARKS.md, "Dynamics"). The goal of the project is ≥ 0.1 for the embedded 2002834 model
 //! over 20 cage revolutions.
 
-use crate::{Overrides, SetupError, prepare};
-use rolldyn_dynamics::output::{NullSink, RunSummary};
+use crate::{Overrides, SetupError, prepare, prepare_tapered};
+use rolldyn_dynamics::output::NullSink;
+use rolldyn_dynamics::tapered::{TaperedRunSettings, run as run_tapered};
+use rolldyn_geometry::BearingModel;
 use std::time::Instant;
 
 /// One timed run: building the simulation, then integrating it without file output.
@@ -22,6 +24,9 @@ pub struct SpeedRun {
     pub steps: u64,
     pub rejected_steps: u64,
     pub rhs_evaluations: u64,
+    /// roller slices in contact evaluations per right-hand side: rollers × slices per roller
+    /// (each against both raceways)
+    pub roller_slices: usize,
 }
 
 impl SpeedRun {
@@ -40,6 +45,12 @@ impl SpeedRun {
     pub fn us_per_rhs(&self) -> f64 {
         1e6 * self.integration_s / self.rhs_evaluations as f64
     }
+
+    /// Integration wall time per right-hand-side evaluation and roller slice, ns: the cost
+    /// that makes bearings of different sizes comparable.
+    pub fn ns_per_roller_slice(&self) -> f64 {
+        1e3 * self.us_per_rhs() / self.roller_slices as f64
+    }
 }
 
 /// Why [`measure_speed`] stopped.
@@ -51,6 +62,24 @@ pub enum SpeedError {
     /// a run stopped (divergence, step-size collapse)
     #[error("run {run}: the simulation stopped: {message}")]
     Run { run: usize, message: String },
+}
+
+impl SpeedError {
+    /// A run's failure; its index is set by [`SpeedError::in_run`].
+    fn run(message: String) -> Self {
+        Self::Run { run: 0, message }
+    }
+
+    /// This error as that of run `index` (1-based).
+    fn in_run(self, index: usize) -> Self {
+        match self {
+            Self::Run { message, .. } => Self::Run {
+                run: index,
+                message,
+            },
+            other => other,
+        }
+    }
 }
 
 /// Result of [`measure_speed`].
@@ -104,48 +133,98 @@ pub fn measure_speed(
         return Err(SetupError("the benchmark needs at least one run".into()).into());
     }
     let mut runs = Vec::with_capacity(repeat);
-    let mut first: Option<RunSummary> = None;
+    let mut first: Option<String> = None;
     let mut deterministic = true;
     for k in 0..repeat {
-        let start = Instant::now();
-        let (mut sim, revolution) = prepare(model, overrides, 0.0, tolerance)?;
-        let setup_s = start.elapsed().as_secs_f64();
-        let t_end = end_time(revolution).map_err(SetupError)?;
-        let summary = sim
-            .run_until(t_end, &mut NullSink, &mut |_| {})
-            .map_err(|e| SpeedError::Run {
-                run: k + 1,
-                message: e.to_string(),
-            })?;
-        let run = SpeedRun {
-            setup_s,
-            integration_s: summary.wall_time_s,
-            simulated_s: summary.simulated_time_s,
-            cage_revolutions: revolution.map_or(0.0, |p| summary.simulated_time_s / p),
-            steps: summary.steps,
-            rejected_steps: summary.rejected_steps,
-            rhs_evaluations: summary.rhs_evaluations,
-        };
+        let (run, fingerprint) =
+            timed_run(model, overrides, tolerance, end_time).map_err(|e| e.in_run(k + 1))?;
         on_run(k, &run);
         runs.push(run);
-        let same_figures = |s: &RunSummary| RunSummary {
-            wall_time_s: 0.0,
-            ..*s
-        };
         match &first {
-            None => first = Some(summary),
-            // Debug formatting prints every f64 with its shortest exact representation
-            // (and NaN as NaN), so equal strings mean equal figures
-            Some(f) => {
-                deterministic &=
-                    format!("{:?}", same_figures(f)) == format!("{:?}", same_figures(&summary));
-            }
+            None => first = Some(fingerprint),
+            Some(f) => deterministic &= *f == fingerprint,
         }
     }
     Ok(SpeedReport {
         runs,
         deterministic,
     })
+}
+
+/// One timed run of `model` from a fresh set-up, and the run's figures but its wall time as
+/// text (Debug formatting prints every f64 with its shortest exact representation, and NaN as
+/// NaN, so equal strings mean equal figures).
+fn timed_run(
+    model: &rolldyn_model::Model,
+    overrides: &Overrides,
+    tolerance: Option<f64>,
+    end_time: &dyn Fn(Option<f64>) -> Result<f64, String>,
+) -> Result<(SpeedRun, String), SpeedError> {
+    if let BearingModel::Tapered(bearing) = &model.bearing {
+        let roller_slices = 2 * bearing.rollers_per_row * bearing.roller.slice_count;
+        return timed_tapered_run(model, overrides, tolerance, end_time, roller_slices);
+    }
+    let start = Instant::now();
+    let (mut sim, revolution) = prepare(model, overrides, 0.0, tolerance)?;
+    let setup_s = start.elapsed().as_secs_f64();
+    let t_end = end_time(revolution).map_err(SetupError)?;
+    let summary = sim
+        .run_until(t_end, &mut NullSink, &mut |_| {})
+        .map_err(|e| SpeedError::run(e.to_string()))?;
+    let slices_per_roller = model.bearing.roller().map_or(1, |r| r.slice_count);
+    let roller_slices = sim.layout().rollers * slices_per_roller;
+    let run = SpeedRun {
+        setup_s,
+        integration_s: summary.wall_time_s,
+        simulated_s: summary.simulated_time_s,
+        cage_revolutions: revolution.map_or(0.0, |p| summary.simulated_time_s / p),
+        steps: summary.steps,
+        rejected_steps: summary.rejected_steps,
+        rhs_evaluations: summary.rhs_evaluations,
+        roller_slices,
+    };
+    let mut figures = summary;
+    figures.wall_time_s = 0.0;
+    Ok((run, format!("{figures:?}")))
+}
+
+/// [`timed_run`] of a double-row tapered bearing: its own dynamics with the default
+/// [`TaperedRunSettings`] (one sample at the end, so no sample recording is timed).
+fn timed_tapered_run(
+    model: &rolldyn_model::Model,
+    overrides: &Overrides,
+    tolerance: Option<f64>,
+    end_time: &dyn Fn(Option<f64>) -> Result<f64, String>,
+    roller_slices: usize,
+) -> Result<(SpeedRun, String), SpeedError> {
+    let start = Instant::now();
+    let tm = prepare_tapered(model, overrides)?;
+    let setup_s = start.elapsed().as_secs_f64();
+    let revolution = std::f64::consts::TAU / tm.epicyclic_cage_speed.abs();
+    let t_end = end_time(Some(revolution)).map_err(SetupError)?;
+    let mut settings = TaperedRunSettings {
+        duration_s: t_end,
+        sample_interval_s: t_end,
+        ..TaperedRunSettings::default()
+    };
+    if let Some(tol) = tolerance {
+        settings.integrator.tolerance = tol;
+    }
+    let wall = Instant::now();
+    let outcome =
+        run_tapered(&tm, &settings, |_| {}).map_err(|e| SpeedError::run(e.to_string()))?;
+    let integration_s = wall.elapsed().as_secs_f64();
+    let run = SpeedRun {
+        setup_s,
+        integration_s,
+        simulated_s: t_end,
+        cage_revolutions: t_end / revolution,
+        steps: outcome.steps,
+        rejected_steps: outcome.rejected_steps,
+        rhs_evaluations: outcome.rhs_evaluations,
+        roller_slices,
+    };
+    Ok((run, format!("{:?}", outcome.samples)))
 }
 
 /// The processor's name (Linux `/proc/cpuinfo`), if it can be read.

@@ -11,7 +11,8 @@ use std::path::PathBuf;
 
 #[derive(clap::Args)]
 pub struct Args {
-    /// Model file (TOML) with [lubricant] and [operating]; the embedded 2002834 model when omitted.
+    /// Model file (TOML) with [lubricant] and [operating], cylindrical or double-row tapered; the
+    /// embedded 2002834 model when omitted.
     pub model: Option<PathBuf>,
     #[command(flatten)]
     pub operating: OperatingArgs,
@@ -44,6 +45,8 @@ struct RunAnswer {
     rejected_steps: u64,
     rhs_evaluations: u64,
     us_per_rhs: f64,
+    roller_slices: usize,
+    ns_per_roller_slice: f64,
 }
 
 impl From<&SpeedRun> for RunAnswer {
@@ -59,6 +62,8 @@ impl From<&SpeedRun> for RunAnswer {
             rejected_steps: r.rejected_steps,
             rhs_evaluations: r.rhs_evaluations,
             us_per_rhs: r.us_per_rhs(),
+            roller_slices: r.roller_slices,
+            ns_per_roller_slice: r.ns_per_roller_slice(),
         }
     }
 }
@@ -106,7 +111,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
         &mut |k, r| {
             if talk {
                 eprintln!(
-                    "run {}: set-up {:.3} s, {:.4} s simulated ({:.1} cage revolutions) in {:.3} s → {:.4} ({} steps, {} rejected, {} RHS, {:.2} µs per RHS)",
+                    "run {}: set-up {:.3} s, {:.4} s simulated ({:.1} cage revolutions) in {:.3} s → {:.4} ({} steps, {} rejected, {} RHS, {:.2} µs per RHS, {:.1} ns per roller slice)",
                     k + 1,
                     r.setup_s,
                     r.simulated_s,
@@ -117,6 +122,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
                     r.rejected_steps,
                     r.rhs_evaluations,
                     r.us_per_rhs(),
+                    r.ns_per_roller_slice(),
                 );
             }
         },

@@ -93,7 +93,7 @@ pub struct Args {
     /// Relative tolerance of the integrator.
     #[arg(long)]
     pub tolerance: Option<f64>,
-    /// Integration method (default: the settings default, dopri5).
+    /// Integration method (default: dopri5 for a cylindrical bearing, rosenbrock-w for a tapered one).
     #[arg(long, value_enum)]
     pub integrator: Option<IntegratorArg>,
     /// Write the state to this file every `--checkpoint-interval` and at the end (the `--out`
@@ -118,9 +118,23 @@ pub struct Args {
     /// samples the dynamics at least 4 times per set.
     #[arg(long)]
     pub cage_loads: Option<PathBuf>,
+    /// Double-row tapered bearing: the initial turn of row 2's rollers and cage against row
+    /// 1's, in pocket pitches (0…1; default 0, the cage windows opposite each other).
+    #[arg(long, value_parser = parse_row_offset)]
+    pub row_offset: Option<f64>,
     /// No progress bar.
     #[arg(long)]
     pub quiet: bool,
+}
+
+/// `--row-offset`: a fraction of the pocket pitch in [0, 1).
+fn parse_row_offset(text: &str) -> Result<f64, String> {
+    match text.parse::<f64>() {
+        Ok(v) if (0.0..1.0).contains(&v) => Ok(v),
+        _ => Err(format!(
+            "'{text}': give a fraction of the pocket pitch in [0, 1), e.g. 0.45"
+        )),
+    }
 }
 
 /// Keeps at most `capacity` points of a history for plotting (halving the density when full),
@@ -580,6 +594,11 @@ pub fn run(args: Args) -> Result<(), Failure> {
     if let rolldyn_geometry::BearingModel::Tapered(_) = &model.bearing {
         return super::simulate_tapered::run_tapered(&args, &model);
     }
+    if args.row_offset.is_some() {
+        return Err(Failure::Input(
+            "--row-offset: only a double-row tapered bearing has a second row".into(),
+        ));
+    }
     let output_step = checked_output_step(args.output_step)?;
     // the cage-load export samples on the epicyclic cage period at t = 0
     let period = match (&args.cage_loads, &model.bearing) {
@@ -614,7 +633,10 @@ pub fn run(args: Args) -> Result<(), Failure> {
     let chunk = checkpoint_interval(&args, revolution)?.unwrap_or(t_end);
     let dir = match &args.out {
         Some(dir) => {
-            check_output_size(&sim, t_end, output_step, revolution, args.max_output)?;
+            let samples = (t_end / output_step).floor() + 1.0;
+            let revolutions = revolution.map_or(0.0, |period| t_end / period);
+            let values = table_values(samples, revolutions, sim.roller_count());
+            check_output_size(values, samples, t_end, output_step, args.max_output)?;
             Some(out_dir(dir)?)
         }
         None => None,
@@ -679,7 +701,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
 
 /// The `--output-step` in seconds: at least the integrator's minimum step (no sample can
 /// resolve less), so never zero.
-fn checked_output_step(step: Quantity<Time>) -> Result<f64, Failure> {
+pub(super) fn checked_output_step(step: Quantity<Time>) -> Result<f64, Failure> {
     let floor = DynamicsSettings::default().integrator.min_step_s;
     match step.si() {
         s if s >= floor => Ok(s),
@@ -730,18 +752,16 @@ fn checkpoint_interval(args: &Args, revolution: Option<f64>) -> Result<Option<f6
     }
 }
 
-/// Refuses (bad input) a run whose tables are estimated ([`estimated_table_bytes`]) to exceed
-/// `--max-output`, before anything is written.
-fn check_output_size(
-    sim: &Simulation,
+/// Refuses (bad input) a run whose tables of `values` numbers in `samples` samples are
+/// estimated ([`estimated_table_bytes`]) to exceed `--max-output`, before anything is written.
+pub(super) fn check_output_size(
+    values: f64,
+    samples: f64,
     t_end: f64,
     output_step: f64,
-    revolution: Option<f64>,
     max_output: ByteSize,
 ) -> Result<(), Failure> {
-    let samples = (t_end / output_step).floor() + 1.0;
-    let revolutions = revolution.map_or(0.0, |period| t_end / period);
-    let size = estimated_table_bytes(table_values(samples, revolutions, sim.roller_count()));
+    let size = estimated_table_bytes(values);
     if size <= max_output {
         return Ok(());
     }

@@ -1,11 +1,12 @@
 //! `rolldyn simulate` on a double-row tapered bearing (seed 000 §3.2.1): the run, its table
 //! and plots with `--out`, the summary.
 
-use super::simulate::{Args, progress_bar};
+use super::simulate::{Args, check_output_size, checked_output_step, progress_bar};
 use crate::failure::Failure;
 use crate::output::{out_dir, print_json};
 use rolldyn_dynamics::tapered::{
-    SAMPLE_COLUMNS, TaperedRun, TaperedRunSettings, TaperedSample, run, sample_row, summary_entries,
+    SAMPLE_COLUMNS, TaperedRun, TaperedRunSettings, TaperedSample, axial_spectrum, run, sample_row,
+    steady_window, summary_entries,
 };
 use rolldyn_output::{Formats, TableWriter};
 use rolldyn_plot::{Labels, Series, line_plot};
@@ -13,15 +14,23 @@ use std::path::Path;
 
 /// Runs the tapered model of `model` as `simulate` asks.
 pub fn run_tapered(args: &Args, model: &rolldyn_model::Model) -> Result<(), Failure> {
+    refuse_cylindrical_only_flags(args)?;
+    let output_step = checked_output_step(args.output_step)?;
     let tm = rolldyn_setup::prepare_tapered(model, &args.operating.overrides())?;
     let revolution = std::f64::consts::TAU / tm.epicyclic_cage_speed.abs();
     let t_end = args
         .duration
         .end_time(Some(revolution))
         .map_err(Failure::Input)?;
+    if args.out.is_some() {
+        let samples = (t_end / output_step).floor() + 1.0;
+        let values = samples * SAMPLE_COLUMNS.len() as f64;
+        check_output_size(values, samples, t_end, output_step, args.max_output)?;
+    }
     let mut settings = TaperedRunSettings {
         duration_s: t_end,
-        sample_interval_s: args.output_step.si(),
+        sample_interval_s: output_step,
+        row1_offset_pitch: args.row_offset.unwrap_or(0.0),
         ..TaperedRunSettings::default()
     };
     if let Some(tol) = args.tolerance {
@@ -68,6 +77,22 @@ pub fn run_tapered(args: &Args, model: &rolldyn_model::Model) -> Result<(), Fail
         println!("  {k:32} {v:.6e}");
     }
     Ok(())
+}
+
+/// Refuses (bad input) the `simulate` flags the tapered dynamics does not have yet: checkpoints
+/// and the cage-load export of the machined cage's fatigue analysis.
+fn refuse_cylindrical_only_flags(args: &Args) -> Result<(), Failure> {
+    let flags = [
+        ("--checkpoint", args.checkpoint.is_some()),
+        ("--resume", args.resume.is_some()),
+        ("--cage-loads", args.cage_loads.is_some()),
+    ];
+    match flags.iter().find(|(_, given)| *given) {
+        Some((flag, _)) => Err(Failure::Input(format!(
+            "{flag}: not available for a double-row tapered bearing (cylindrical bearings only)"
+        ))),
+        None => Ok(()),
+    }
 }
 
 /// `tapered.csv`/`.parquet` and the plots of seed 000 Figs. 3.75–3.81.
@@ -150,11 +175,11 @@ fn write_outputs(dir: &Path, run: &TaperedRun) -> Result<(), Failure> {
                 .collect(),
         ),
     ];
-    for (file, title, y, curves) in plots {
-        let x = if file == "inner_ring_trajectory.svg" {
-            "x, µm"
-        } else {
-            "time, ms"
+    for (file, title, y, curves) in plots.into_iter().chain(analysis_plots(run)) {
+        let x = match file {
+            "inner_ring_trajectory.svg" => "x, µm",
+            "inner_ring_axial_spectrum.svg" => "frequency, Hz",
+            _ => "time, ms",
         };
         line_plot(
             &dir.join(file),
@@ -164,4 +189,72 @@ fn write_outputs(dir: &Path, run: &TaperedRun) -> Result<(), Failure> {
         .map_err(|e| Failure::Run(e.to_string()))?;
     }
     Ok(())
+}
+
+/// A plot: file name, title, y label, curves.
+type Plot = (
+    &'static str,
+    &'static str,
+    &'static str,
+    Vec<(String, Vec<(f64, f64)>)>,
+);
+
+/// The plots of seed 000 §3.2.1's findings: the axial spectrum of the steady window with the
+/// roller-pass frequencies marked, the lag of cage 1 behind cage 0 in pocket pitches, and the
+/// load-weighted sliding on cone and cup.
+fn analysis_plots(run: &TaperedRun) -> [Plot; 3] {
+    let spectrum = axial_spectrum(steady_window(&run.samples));
+    let top = spectrum.iter().map(|p| p.1 * 1e9).fold(0.0, f64::max);
+    let marker = |f: f64| vec![(f, 0.0), (f, top)];
+    let pass = [
+        run.summary.pass_frequency_outer_hz,
+        run.summary.pass_frequency_inner_hz,
+    ];
+    let pitch = std::f64::consts::TAU / run.summary.rollers_per_row as f64;
+    let curve = |f: &dyn Fn(&TaperedSample) -> (f64, f64)| -> Vec<(f64, f64)> {
+        run.samples.iter().map(f).collect()
+    };
+    [
+        (
+            "inner_ring_axial_spectrum.svg",
+            "Inner-ring axial displacement: amplitude spectrum of the steady window",
+            "amplitude, nm",
+            vec![
+                (
+                    "spectrum".into(),
+                    spectrum.iter().map(|&(f, a)| (f, a * 1e9)).collect(),
+                ),
+                (format!("pass, cup {:.1} Hz", pass[0]), marker(pass[0])),
+                (format!("pass, cone {:.1} Hz", pass[1]), marker(pass[1])),
+            ],
+        ),
+        (
+            "cage_lag.svg",
+            "Lag of cage 1 behind cage 0",
+            "lag, pocket pitches",
+            vec![(
+                "cage 1 behind cage 0".into(),
+                curve(&|s| (s.time_s * 1e3, (s.cage_angle[0] - s.cage_angle[1]) / pitch)),
+            )],
+        ),
+        (
+            "sliding.svg",
+            "Load-weighted sliding speed on cone and cup",
+            "sliding speed, m/s",
+            (0..2)
+                .flat_map(|k| {
+                    [
+                        (
+                            format!("row {k} cone"),
+                            curve(&|s| (s.time_s * 1e3, s.cone_sliding[k])),
+                        ),
+                        (
+                            format!("row {k} cup"),
+                            curve(&|s| (s.time_s * 1e3, s.cup_sliding[k])),
+                        ),
+                    ]
+                })
+                .collect(),
+        ),
+    ]
 }

@@ -5,6 +5,7 @@ use super::jobs_args::JobsArgs;
 use super::simulate::Duration;
 use crate::failure::Failure;
 use rolldyn_dynamics::output::NullSink;
+use rolldyn_dynamics::tapered::{TaperedRunSettings, run as run_tapered, summary_entries};
 use rolldyn_quasistatic::QuasiStaticOptions;
 use rolldyn_setup::{Overrides, prepare};
 use rolldyn_sweep::{
@@ -56,6 +57,9 @@ fn simulate(
     discard: Option<u32>,
     model: rolldyn_model::Model,
 ) -> Result<BTreeMap<String, f64>, String> {
+    if let rolldyn_geometry::BearingModel::Tapered(_) = &model.bearing {
+        return simulate_tapered(duration, discard, &model);
+    }
     let (mut sim, revolution) =
         prepare(&model, &Overrides::default(), 0.0, None).map_err(|e| e.to_string())?;
     if let Some(n) = discard {
@@ -70,6 +74,29 @@ fn simulate(
         .into_iter()
         .filter(|(_, v)| v.is_finite())
         .map(|(k, v)| (k.to_string(), v))
+        .collect())
+}
+
+/// [`simulate`] of a double-row tapered bearing: the run summary of its own dynamics, taken
+/// after the `discard` cage revolutions (default: the last 60 % of the run).
+fn simulate_tapered(
+    duration: Duration,
+    discard: Option<u32>,
+    model: &rolldyn_model::Model,
+) -> Result<BTreeMap<String, f64>, String> {
+    let tm =
+        rolldyn_setup::prepare_tapered(model, &Overrides::default()).map_err(|e| e.to_string())?;
+    let revolution = std::f64::consts::TAU / tm.epicyclic_cage_speed.abs();
+    let settings = TaperedRunSettings {
+        duration_s: duration.end_time(Some(revolution))?,
+        steady_from_s: discard.map(|n| f64::from(n) * revolution),
+        ..TaperedRunSettings::default()
+    };
+    let outcome =
+        run_tapered(&tm, &settings, |_| {}).map_err(|e| format!("the simulation stopped: {e}"))?;
+    Ok(summary_entries(&outcome.summary)
+        .into_iter()
+        .filter(|(_, v)| v.is_finite())
         .collect())
 }
 

@@ -28,4 +28,4 @@ pub use layout::TaperedLayout;
 pub use model::{TaperedModel, TaperedParameters};
 pub use rhs::{RollerReport, TaperedSystem};
 pub use run::{TaperedRun, TaperedRunSettings, TaperedSample, initial_state, run};
-pub use summary::{TaperedSummary, spectrum_peaks, summarise};
+pub use summary::{TaperedSummary, axial_spectrum, spectrum_peaks, steady_window, summarise};

@@ -15,6 +15,8 @@ const TRANSIENT_SHARE: f64 = 0.4;
 /// Summary of a run (SI units; speeds rad/s, frequencies Hz).
 #[derive(Debug, Clone, PartialEq)]
 pub struct TaperedSummary {
+    /// rollers (and cage pockets) per row
+    pub rollers_per_row: usize,
     /// start of the steady window, s
     pub steady_from_s: f64,
     /// epicyclic roller-pass frequencies on the cup and on the cone, Hz
@@ -49,11 +51,19 @@ pub struct TaperedSummary {
     pub rib_ehl_share: f64,
 }
 
-/// Summary of `samples`.
-pub fn summarise(model: &TaperedModel, samples: &[TaperedSample]) -> TaperedSummary {
-    let n = samples.len();
-    let start = ((n as f64) * TRANSIENT_SHARE) as usize;
-    let w = &samples[start.min(n.saturating_sub(1))..];
+/// Summary of `samples` from `steady_from_s` (`None`: [`steady_window`]).
+pub fn summarise(
+    model: &TaperedModel,
+    samples: &[TaperedSample],
+    steady_from_s: Option<f64>,
+) -> TaperedSummary {
+    let w = match steady_from_s {
+        Some(t0) => {
+            let start = samples.partition_point(|s| s.time_s < t0);
+            &samples[start.min(samples.len().saturating_sub(1))..]
+        }
+        None => steady_window(samples),
+    };
     let m = w.len().max(1) as f64;
     let (fo, fi) = model
         .bearing
@@ -79,6 +89,7 @@ pub fn summarise(model: &TaperedModel, samples: &[TaperedSample]) -> TaperedSumm
         .count() as f64
         / m;
     TaperedSummary {
+        rollers_per_row: model.z,
         steady_from_s: w.first().map_or(0.0, |s| s.time_s),
         pass_frequency_outer_hz: fo,
         pass_frequency_inner_hz: fi,
@@ -100,11 +111,34 @@ pub fn summarise(model: &TaperedModel, samples: &[TaperedSample]) -> TaperedSumm
     }
 }
 
-/// The `count` largest local maxima of the Hann-windowed amplitude spectrum of the inner ring's
-/// axial displacement (mean removed), scanned over [`SPECTRUM_RANGE_HZ`] — a direct DFT at each
-/// frequency, so the resolution does not depend on the record length (its bandwidth does:
-/// ≈ 2/T).
+/// The samples after the start transient (the last 1 − [`TRANSIENT_SHARE`] of the run), over
+/// which the summary is taken.
+pub fn steady_window(samples: &[TaperedSample]) -> &[TaperedSample] {
+    let n = samples.len();
+    let start = ((n as f64) * TRANSIENT_SHARE) as usize;
+    &samples[start.min(n.saturating_sub(1))..]
+}
+
+/// The `count` largest local maxima of [`axial_spectrum`].
 pub fn spectrum_peaks(w: &[TaperedSample], count: usize) -> Vec<(f64, f64)> {
+    let amp = axial_spectrum(w);
+    if amp.len() < 3 {
+        return Vec::new();
+    }
+    let mut peaks: Vec<(f64, f64)> = (1..amp.len() - 1)
+        .filter(|&i| amp[i].1 > amp[i - 1].1 && amp[i].1 >= amp[i + 1].1)
+        .map(|i| amp[i])
+        .collect();
+    peaks.sort_by(|a, b| b.1.total_cmp(&a.1));
+    peaks.truncate(count);
+    peaks
+}
+
+/// The Hann-windowed amplitude spectrum (frequency Hz, amplitude m) of the inner ring's axial
+/// displacement (mean removed) over [`SPECTRUM_RANGE_HZ`] — a direct DFT at each frequency, so
+/// the resolution does not depend on the record length (its bandwidth does: ≈ 2/T); empty for
+/// fewer than 8 samples.
+pub fn axial_spectrum(w: &[TaperedSample]) -> Vec<(f64, f64)> {
     if w.len() < 8 {
         return Vec::new();
     }
@@ -116,7 +150,7 @@ pub fn spectrum_peaks(w: &[TaperedSample], count: usize) -> Vec<(f64, f64)> {
         .collect();
     let gain: f64 = hann.iter().sum::<f64>();
     let steps = ((SPECTRUM_RANGE_HZ.1 - SPECTRUM_RANGE_HZ.0) / SPECTRUM_STEP_HZ) as usize;
-    let amp: Vec<(f64, f64)> = (0..=steps)
+    (0..=steps)
         .map(|k| {
             let f = SPECTRUM_RANGE_HZ.0 + k as f64 * SPECTRUM_STEP_HZ;
             let (mut re, mut im) = (0.0, 0.0);
@@ -128,12 +162,5 @@ pub fn spectrum_peaks(w: &[TaperedSample], count: usize) -> Vec<(f64, f64)> {
             }
             (f, 2.0 * re.hypot(im) / gain)
         })
-        .collect();
-    let mut peaks: Vec<(f64, f64)> = (1..amp.len() - 1)
-        .filter(|&i| amp[i].1 > amp[i - 1].1 && amp[i].1 >= amp[i + 1].1)
-        .map(|i| amp[i])
-        .collect();
-    peaks.sort_by(|a, b| b.1.total_cmp(&a.1));
-    peaks.truncate(count);
-    peaks
+        .collect()
 }
