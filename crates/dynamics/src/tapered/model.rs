@@ -7,7 +7,9 @@ use crate::ends::EndGeometry;
 use crate::error::DynError;
 use crate::parameters::{EndFriction, PairParameters, RacewayParameters, RollerEndParameters};
 use rolldyn_contact::damping::{SliceDamping, TwoLevelFriction};
-use rolldyn_contact::hertz::{ContactCurvatures, EllipticalMethod, EllipticalStiffness};
+use rolldyn_contact::hertz::{
+    ContactCurvatures, EllipticalMethod, EllipticalStiffness, LineApproachModel, LineContact,
+};
 use rolldyn_contact::slices::SliceLaw;
 use rolldyn_geometry::{DoubleRowTaperedBearing, MassProperties};
 use rolldyn_lubrication::TractionModel;
@@ -22,9 +24,10 @@ pub struct TaperedParameters {
     pub cone: RacewayParameters,
     /// Roller slices ↔ cup raceway: slice law (2.4) with the cup wall, damping as the cone.
     pub cup: RacewayParameters,
-    /// Roller ↔ polyamide cage bar edges: steel line contact on PA66-GF (E' ≈ 1.1·10¹⁰ Pa,
-    /// Palmgren's line law scaled by E'/E'_steel over a 10 mm edge: K = 6.6·10⁷ N/m^1.11),
-    /// μ of the cage (0.06, seed 000 §3.2.1) constant, regularised over 5 mm/s.
+    /// Roller ↔ polyamide cage bar edges: Palmgren's line law rescaled to the reduced modulus
+    /// of steel on the cage material (PA66-GF25 of the example: E' = 6.7·10⁹ Pa) over a 10 mm
+    /// edge (K = 4.0·10⁷ N/m^1.11 for the example), μ of the cage (0.06, seed 000 §3.2.1)
+    /// constant, regularised over 5 mm/s.
     pub roller_cage: PairParameters,
     /// Roller large end ↔ large rib: Hertz point contact of the end sphere on the rib face
     /// (computed from the curvatures), EHL traction while the spot stays inside the face overlap,
@@ -79,7 +82,7 @@ impl TaperedParameters {
                 damping_ramp_m: 1e-6,
             },
             roller_cage: PairParameters {
-                k_p: 6.6e7,
+                k_p: bar_edge_stiffness(b),
                 exponent: 1.11,
                 c_h: 300.0,
                 d: 1e-6,
@@ -111,6 +114,20 @@ impl TaperedParameters {
             bar_edge_height: 0.6,
         }
     }
+}
+
+/// Length of the roller–bar edge contact the bar law is taken over, m.
+const BAR_EDGE_LENGTH: f64 = 10e-3;
+
+/// `K` of `Q = K δ^(10/9)` for a roller on a bar edge: Palmgren's line law rescaled to the
+/// steel–cage reduced modulus over [`BAR_EDGE_LENGTH`] (the force at a 1 m approach).
+fn bar_edge_stiffness(b: &DoubleRowTaperedBearing) -> f64 {
+    let edge = LineContact {
+        reduced_radius: 0.5 * b.roller.mean_diameter,
+        reduced_modulus: pa_steel_modulus(b),
+        length: BAR_EDGE_LENGTH,
+    };
+    edge.force_from_approach(1.0, LineApproachModel::PalmgrenScaled)
 }
 
 /// Reduced modulus E' of steel on the cage material, Pa.
