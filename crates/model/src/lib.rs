@@ -213,6 +213,7 @@ fn parse_tapered(text: &str, file: &str) -> Result<Model, ModelError> {
     let document = Document::<tapered::TaperedModelFile>::parse(text, file)?;
     let schema = &document.schema;
     let locate = |e: rolldyn_geometry::GeometryError| document.error(&e.key, e.reason);
+    tapered::refuse_unread_keys(schema).map_err(locate)?;
     let bearing = BearingModel::Tapered(tapered::build(schema).map_err(locate)?);
     bearing.validate().map_err(locate)?;
     let sections = SharedSections {

@@ -109,6 +109,35 @@ pub struct TaperedCageSection {
 
 type Result<T> = std::result::Result<T, GeometryError>;
 
+/// Refuses the keys of the shared tables that the tapered dynamics does not read (it runs with
+/// the cup fixed, its contact parameters fixed, docs/theory.md §12.2), so that none is
+/// silently ignored.
+pub(crate) fn refuse_unread_keys(file: &TaperedModelFile) -> Result<()> {
+    let unread = |key: &str, reason: &str| Err(GeometryError::new(key, reason.to_string()));
+    if file.dynamics.is_some() {
+        return unread(
+            "dynamics",
+            "a double-row tapered model takes no [dynamics] table: its contact parameters are fixed (docs/theory.md §12.2)",
+        );
+    }
+    let Some(op) = &file.operating else {
+        return Ok(());
+    };
+    if op.outer_speed.is_some_and(|w| w.si() != 0.0) {
+        return unread(
+            "operating.outer_speed",
+            "the tapered dynamics runs with the cup fixed: give 0 rpm or leave it out",
+        );
+    }
+    if op.clearance_schedule.is_some() {
+        return unread(
+            "operating.clearance_schedule",
+            "a double-row tapered bearing has an axial clearance (bearing.axial_clearance), not a radial clearance schedule",
+        );
+    }
+    Ok(())
+}
+
 /// Builds the bearing a tapered model file describes.
 pub(crate) fn build(file: &TaperedModelFile) -> Result<DoubleRowTaperedBearing> {
     let materials = Materials::new(&file.materials)?;

@@ -5,14 +5,21 @@ use std::path::Path;
 
 const ARCMIN: f64 = std::f64::consts::PI / 10_800.0;
 
+/// The example's path: its oil file is named relative to it.
+fn example_path() -> String {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../examples/tapered-cassette.toml")
+        .display()
+        .to_string()
+}
+
 fn example_text() -> String {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/tapered-cassette.toml");
-    std::fs::read_to_string(path).unwrap()
+    std::fs::read_to_string(example_path()).unwrap()
 }
 
 #[test]
 fn the_cassette_example_reads_as_the_seed_bearing() {
-    let model = parse(&example_text(), "tapered-cassette.toml").unwrap_or_else(|e| panic!("{e}"));
+    let model = parse(&example_text(), &example_path()).unwrap_or_else(|e| panic!("{e}"));
     let BearingModel::Tapered(b) = &model.bearing else {
         panic!("not a tapered bearing");
     };
@@ -27,7 +34,10 @@ fn the_cassette_example_reads_as_the_seed_bearing() {
     assert_eq!(model.operating.axial_load, Some(0.0));
     let w = model.operating.inner_speed.unwrap();
     assert!((w - 663.0 * std::f64::consts::PI / 30.0).abs() < 1e-12);
-    assert_eq!(model.lubrication.unwrap().oil.name, "vg220-mineral");
+    assert_eq!(
+        model.lubrication.unwrap().oil.name,
+        "vg220-mineral-grease-base"
+    );
 }
 
 /// Bad input names the file, the line and the key.
@@ -71,5 +81,23 @@ fn errors_point_at_the_key() {
         if key != "large_rib.face_radius" {
             assert!(e.position.is_some(), "{shown}");
         }
+    }
+}
+
+#[test]
+fn keys_the_tapered_dynamics_does_not_read_are_refused() {
+    let cases = [
+        (
+            format!("{}\n[dynamics]\ncage_drag = 0.001\n", example_text()),
+            "dynamics",
+        ),
+        (
+            example_text().replace("outer_speed = \"0 rpm\"", "outer_speed = \"100 rpm\""),
+            "operating.outer_speed",
+        ),
+    ];
+    for (text, key) in cases {
+        let e = parse(&text, &example_path()).unwrap_err().to_string();
+        assert!(e.contains(key), "{e}");
     }
 }
