@@ -128,7 +128,11 @@ pub fn initial_state(model: &TaperedModel, row1_offset_pitch: f64) -> Vec<f64> {
     for k in 0..2 {
         let ci = lay.cage(k);
         write3(&mut y, ci + cage::CENTRE, [0.0, 0.0, model.rows[k].mid.1]);
-        y[ci + cage::ANGLE] = if k == 0 { 0.0 } else { row1_offset_pitch * pitch };
+        y[ci + cage::ANGLE] = if k == 0 {
+            0.0
+        } else {
+            row1_offset_pitch * pitch
+        };
         write3(&mut y, ci + cage::AXIS, [0.0, 0.0, 1.0]);
         write3(&mut y, ci + cage::MOMENTUM, [0.0, 0.0, model.ia_c * w_c]);
     }
