@@ -32,7 +32,9 @@ mod summary;
 mod tests;
 
 pub use case::{TaperedLoadCase, TiltCondition};
-pub use results::{TaperedLoads, TaperedRollerLoad, TaperedRowLoads, TaperedSumChecks};
+pub use results::{
+    ROLLER_COLUMNS, TaperedLoads, TaperedRollerLoad, TaperedRowLoads, TaperedSumChecks, roller_row,
+};
 pub use settings::TaperedLoadSettings;
 
 use crate::QsError;

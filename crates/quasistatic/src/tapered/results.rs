@@ -97,3 +97,35 @@ pub struct TaperedLoads {
     /// Balance checks.
     pub checks: TaperedSumChecks,
 }
+
+/// Columns of the per-roller table ([`roller_row`]).
+pub const ROLLER_COLUMNS: [&str; 11] = [
+    "row",
+    "roller",
+    "azimuth_deg",
+    "cone_n",
+    "cup_n",
+    "rib_n",
+    "centrifugal_n",
+    "cone_slice_max_n",
+    "cup_slice_max_n",
+    "lift_um",
+    "tilt_arcmin",
+];
+
+/// One roller as a row of [`ROLLER_COLUMNS`] (engineering units: °, µm, ′).
+pub fn roller_row(r: &TaperedRollerLoad) -> [f64; 11] {
+    [
+        r.row as f64,
+        r.index as f64,
+        r.azimuth_rad.to_degrees(),
+        r.cone_n,
+        r.cup_n,
+        r.rib_n,
+        r.centrifugal_n,
+        r.cone_slice_max_n,
+        r.cup_slice_max_n,
+        r.lift_m * 1e6,
+        r.tilt_rad.to_degrees() * 60.0,
+    ]
+}
