@@ -34,6 +34,10 @@ pub struct Args {
     /// e.g. 2000Nm (the tilt is then solved; excludes --misalignment).
     #[arg(long, allow_hyphen_values = true)]
     pub moment: Option<Quantity<Moment>>,
+    /// Angular offset of row 1's rollers against row 0's as a fraction of the roller pitch,
+    /// 0 ≤ f < 1 (0: a roller of each row on the load line; 0.5: the dynamics' settled state).
+    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
+    pub row_offset: f64,
     /// Print the result as JSON.
     #[arg(long)]
     pub json: bool,
@@ -61,12 +65,20 @@ pub fn run(args: Args) -> Result<(), Failure> {
         )));
     };
     let case = load_case(&args, &model)?;
-    let result = solve_tapered_loads(bearing, &case, &TaperedLoadSettings::default()).map_err(
-        |e| match e {
-            QsError::NotConverged { .. } => Failure::Run(e.to_string()),
-            _ => Failure::Input(e.to_string()),
-        },
-    )?;
+    if !(0.0..1.0).contains(&args.row_offset) {
+        return Err(Failure::Input(format!(
+            "--row-offset: {} must lie in [0, 1) roller pitches",
+            args.row_offset
+        )));
+    }
+    let settings = TaperedLoadSettings {
+        row1_offset_pitch: args.row_offset,
+        ..TaperedLoadSettings::default()
+    };
+    let result = solve_tapered_loads(bearing, &case, &settings).map_err(|e| match e {
+        QsError::NotConverged { .. } => Failure::Run(e.to_string()),
+        _ => Failure::Input(e.to_string()),
+    })?;
     if let Some(dir) = &args.out {
         write_outputs(&out_dir(dir)?, &result)?;
     }
