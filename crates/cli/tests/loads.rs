@@ -59,6 +59,10 @@ fn bad_input_exits_2_in_one_line() {
             vec!["loads", tapered.as_str(), "--radial-load=-1N"],
             "--radial-load",
         ),
+        (
+            vec!["loads", tapered.as_str(), "--row-offset", "1.5"],
+            "--row-offset",
+        ),
     ] {
         let out = rolldyn(&args);
         let stderr = String::from_utf8_lossy(&out.stderr);
