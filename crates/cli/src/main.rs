@@ -35,6 +35,9 @@ enum Command {
     Film(commands::film::Args),
     /// Quasi-static roller and cage skidding; sweeps over speed or load.
     Skid(commands::skid::Args),
+    /// Quasi-static load distribution of a double-row tapered bearing (radial, axial load,
+    /// tilting moment or misalignment): roller, rib loads and load zones per row.
+    Loads(commands::loads::Args),
     /// Time-domain 6-DOF dynamics of a cylindrical roller bearing.
     Simulate(commands::simulate::Args),
     /// Run a table of model variants in parallel (any model key can vary).
@@ -82,6 +85,7 @@ fn main() -> ExitCode {
         Command::Startup(args) => commands::startup::run(args),
         Command::Wear(args) => commands::wear::run(args),
         Command::Fatigue(args) => commands::fatigue::run(args),
+        Command::Loads(args) => commands::loads::run(args),
         Command::Simulate(args) => commands::simulate::run(args),
         Command::Skid(args) => commands::skid::run(args),
         Command::Oils(args) => commands::oils::run(args),

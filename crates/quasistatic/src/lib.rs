@@ -21,6 +21,7 @@
 //! | [`options`] / [`conditions`] | [`QuasiStaticOptions`], [`QuasiStaticConditions`] | §5.6 |
 //! | [`mod@sweep`] | deterministic sweeps over speed, load, misalignment | |
 //! | [`studies`] | O'Brien–Taylor (V-06) and intershaft (V-18) studies | V-06, V-18 |
+//! | [`tapered`] | load distribution of the double-row tapered bearing (5 DOF, slices, rib) | §1.6 (c), §2.1 |
 //!
 //! ```no_run
 //! use rolldyn_quasistatic::*;
@@ -43,6 +44,7 @@ mod error;
 pub mod friction;
 pub mod kinematics;
 pub mod load_distribution;
+pub mod load_integral;
 mod model;
 pub mod operating_geometry;
 pub mod options;
@@ -50,6 +52,7 @@ pub mod results;
 pub mod roller_equilibrium;
 pub mod studies;
 pub mod sweep;
+pub mod tapered;
 
 pub use cage_land::{
     CageLandInput, CageLandOutput, ContactLand, FiniteLand, QuasiStaticLandModel, ShortBearing,

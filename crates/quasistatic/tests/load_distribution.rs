@@ -84,22 +84,9 @@ fn zero_clearance_matches_stribeck() {
     assert_eq!(ld.load_zone_half_angle_rad, PI);
 }
 
-/// Sjoväll / Harris load integral J_r(ε) = (1/2π)∫[1 − (1 − cos ψ)/(2ε)]^n cos ψ dψ over the
-/// load zone (Simpson, 4000 intervals).
+/// Sjoväll / Harris load integral J_r(ε) with this file's exponent.
 fn j_r(eps: f64) -> f64 {
-    let psi_l = (1.0 - 2.0 * eps).clamp(-1.0, 1.0).acos();
-    let n_int = 4000;
-    let h = 2.0 * psi_l / n_int as f64;
-    let f = |p: f64| {
-        let x = 1.0 - (1.0 - p.cos()) / (2.0 * eps);
-        if x > 0.0 { x.powf(N) * p.cos() } else { 0.0 }
-    };
-    let mut s = f(-psi_l) + f(psi_l);
-    for k in 1..n_int {
-        let w = if k % 2 == 1 { 4.0 } else { 2.0 };
-        s += w * f(-psi_l + k as f64 * h);
-    }
-    s * h / 3.0 / (2.0 * PI)
+    rolldyn_quasistatic::load_integral::radial_load_integral(eps, N)
 }
 
 #[test]

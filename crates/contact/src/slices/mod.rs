@@ -6,6 +6,7 @@
 //!   slice forces, total force, moment and their Jacobian for an approach/tilt pair.
 //! * [`solve`] — inverse problems: approach for a given force and tilt (1-D), approach and tilt
 //!   for a given force and moment (2-D Newton on the analytic Jacobian).
+//! * [`tapered`] — the cone and cup laws of the double-row tapered bearing.
 //!
 //! Units: SI in the API (m, N, rad). The empirical seed formulas are evaluated internally in
 //! their seed units (N, mm, MPa; ⚠ F-15) and converted.
@@ -13,10 +14,12 @@
 pub mod law;
 pub mod roller;
 pub mod solve;
+pub mod tapered;
 
 pub use law::{PowerForm, SliceLaw, seed_eq_2_3_approach, seed_eq_2_4_approach};
 pub use roller::{SliceLoad, SlicedRoller};
 pub use solve::{SliceSolution, SolveOptions};
+pub use tapered::tapered_raceway_laws;
 
 use std::fmt;
 

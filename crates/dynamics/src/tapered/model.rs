@@ -10,7 +10,7 @@ use rolldyn_contact::damping::{SliceDamping, TwoLevelFriction};
 use rolldyn_contact::hertz::{
     ContactCurvatures, EllipticalMethod, EllipticalStiffness, LineApproachModel, LineContact,
 };
-use rolldyn_contact::slices::SliceLaw;
+use rolldyn_contact::slices::tapered_raceway_laws;
 use rolldyn_geometry::{DoubleRowTaperedBearing, MassProperties};
 use rolldyn_lubrication::TractionModel;
 
@@ -49,10 +49,8 @@ pub struct TaperedParameters {
 impl TaperedParameters {
     /// Defaults for `b` (see the field docs).
     pub fn for_bearing(b: &DoubleRowTaperedBearing) -> Self {
-        let steel = &b.roller.material;
-        let dm = b.pitch_diameter;
         let damping = 1500.0;
-        let cup_wall = 0.5 * (b.outside_diameter - (dm + b.roller.mean_diameter));
+        let [cone_law, cup_law] = tapered_raceway_laws(b);
         let rib_k = end_rib_stiffness(b);
         let boundary = |mu: f64| TwoLevelFriction {
             mu_static: mu,
@@ -62,22 +60,12 @@ impl TaperedParameters {
         };
         Self {
             cone: RacewayParameters {
-                law: SliceLaw::InnerRing {
-                    pitch_diameter: dm,
-                    youngs_modulus: steel.youngs_modulus,
-                    poisson_ratio: steel.poisson_ratio,
-                },
+                law: cone_law,
                 damping_n_s_m: damping,
                 damping_ramp_m: 1e-6,
             },
             cup: RacewayParameters {
-                law: SliceLaw::OuterRing {
-                    ring_wall_thickness: cup_wall,
-                    outside_diameter: b.outside_diameter,
-                    pitch_diameter: dm,
-                    youngs_modulus: steel.youngs_modulus,
-                    poisson_ratio: steel.poisson_ratio,
-                },
+                law: cup_law,
                 damping_n_s_m: damping,
                 damping_ramp_m: 1e-6,
             },
@@ -238,12 +226,7 @@ impl TaperedModel {
         let total: f64 = stack.length.iter().sum();
         let mut slices = TaperedSlices {
             x: stack.position.iter().map(|x| x - x_cm).collect(),
-            reach: stack
-                .radius
-                .iter()
-                .zip(&stack.drop)
-                .map(|(r, d)| r * beta.cos() - d)
-                .collect(),
+            reach: roller.generatrix_reach(&stack),
             length: stack.length.clone(),
             radius: stack.radius.clone(),
             k: [Vec::new(), Vec::new()],

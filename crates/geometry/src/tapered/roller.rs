@@ -123,6 +123,19 @@ impl TaperedRoller {
         stack
     }
 
+    /// Per slice of `stack`, the perpendicular distance from the slice's axis point to the
+    /// generatrix, `r cos β` less the profile drop [m]: a raceway line at a smaller distance
+    /// from that axis point than this penetrates the slice by the difference.
+    pub fn generatrix_reach(&self, stack: &TaperedSliceStack) -> Vec<f64> {
+        let cos_beta = self.half_angle.cos();
+        stack
+            .radius
+            .iter()
+            .zip(&stack.drop)
+            .map(|(r, d)| r * cos_beta - d)
+            .collect()
+    }
+
     /// Mass and inertias about the centre of mass of the body incl. the end cap and chamfers.
     pub fn mass_properties(&self) -> MassProperties {
         self.mass_and_centroid().0
