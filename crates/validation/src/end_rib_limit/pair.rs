@@ -138,15 +138,17 @@ impl TangentFrame {
         h
     }
 
+    /// Distance of a point from the roller axis (through the end-sphere centre), m.
+    fn from_roller_axis(&self, point: P3) -> f64 {
+        let w = point.minus(self.p.along(self.n, self.sphere_radius));
+        let along_axis = w.dot(self.axis);
+        (w.dot(w) - along_axis * along_axis).max(0.0).sqrt()
+    }
+
     /// Whether the end-sphere point over `(u, v)` lies inside the chamfer edge.
     fn on_end_face(&self, u: f64, v: f64) -> bool {
-        let centre = self.p.along(self.n, self.sphere_radius);
-        let w = self
-            .foot(u, v)
-            .along(self.n, self.sphere_height(u, v))
-            .minus(centre);
-        let along_axis = w.dot(self.axis);
-        (w.dot(w) - along_axis * along_axis).sqrt() <= self.face_radius
+        let point = self.foot(u, v).along(self.n, self.sphere_height(u, v));
+        self.from_roller_axis(point) <= self.face_radius
     }
 
     /// Whether the rib-face point over `(u, v)` lies in the band between undercut and rib top
@@ -304,12 +306,10 @@ fn inside_flag(frame: &TangentFrame, u: f64, v: f64) -> f64 {
 /// Distance from the contact point to the nearest edge of the projection: rib band ends and
 /// the end face's chamfer edge (measured from the roller axis, as the dynamics' margin), m.
 fn contact_margin(frame: &TangentFrame) -> f64 {
-    let centre = frame.p.along(frame.n, frame.sphere_radius);
-    let w = frame.p.minus(centre);
-    let along_axis = w.dot(frame.axis);
-    let from_axis = (w.dot(w) - along_axis * along_axis).sqrt();
     let (below, above) = frame.rib.band;
-    (frame.face_radius - from_axis).min(-below).min(above)
+    (frame.face_radius - frame.from_roller_axis(frame.p))
+        .min(-below)
+        .min(above)
 }
 
 /// A grid that surely contains the projection: the rib band along `u`, the end face's
