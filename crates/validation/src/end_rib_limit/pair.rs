@@ -139,7 +139,7 @@ impl TangentFrame {
     }
 
     /// Distance of a point from the roller axis (through the end-sphere centre), m.
-    fn from_roller_axis(&self, point: P3) -> f64 {
+    fn distance_to_roller_axis(&self, point: P3) -> f64 {
         let w = point.minus(self.p.along(self.n, self.sphere_radius));
         let along_axis = w.dot(self.axis);
         (w.dot(w) - along_axis * along_axis).max(0.0).sqrt()
@@ -148,7 +148,7 @@ impl TangentFrame {
     /// Whether the end-sphere point over `(u, v)` lies inside the chamfer edge.
     fn on_end_face(&self, u: f64, v: f64) -> bool {
         let point = self.foot(u, v).along(self.n, self.sphere_height(u, v));
-        self.from_roller_axis(point) <= self.face_radius
+        self.distance_to_roller_axis(point) <= self.face_radius
     }
 
     /// Whether the rib-face point over `(u, v)` lies in the band between undercut and rib top
@@ -307,7 +307,7 @@ fn inside_flag(frame: &TangentFrame, u: f64, v: f64) -> f64 {
 /// the end face's chamfer edge (measured from the roller axis, as the dynamics' margin), m.
 fn contact_margin(frame: &TangentFrame) -> f64 {
     let (below, above) = frame.rib.band;
-    (frame.face_radius - frame.from_roller_axis(frame.p))
+    (frame.face_radius - frame.distance_to_roller_axis(frame.p))
         .min(-below)
         .min(above)
 }
