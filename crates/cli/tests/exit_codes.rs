@@ -176,3 +176,41 @@ fn fatigue_rainflow_counts_a_csv_and_names_a_bad_line() {
     assert_eq!(code, 2, "{line}");
     assert!(line.contains(&file) && line.contains("line 3"), "{line}");
 }
+
+#[test]
+fn end_rib_limit_study_exits_2_on_a_cylindrical_model_a_missing_file_or_a_bad_cell() {
+    let cylindrical = common::example("2002834.toml");
+    let tapered = common::example("tapered-cassette.toml");
+    let out = std::env::temp_dir().join(format!("rolldyn-exit-{}-erl", std::process::id()));
+    let out = out.to_str().unwrap();
+    for (args, expected) in [
+        (
+            vec!["study", "end-rib-limit", &cylindrical, "--out", out],
+            "double-row tapered",
+        ),
+        (
+            vec!["study", "end-rib-limit", "no-such-model.toml", "--out", out],
+            "not found",
+        ),
+        (
+            vec![
+                "study",
+                "end-rib-limit",
+                &tapered,
+                "--out",
+                out,
+                "--cell",
+                "2mm",
+            ],
+            "--cell",
+        ),
+        (
+            vec!["study", "seed004", &tapered, "--out", out],
+            "is read by",
+        ),
+    ] {
+        let (code, line) = run(&args);
+        assert_eq!(code, 2, "{args:?}: {line}");
+        assert!(line.contains(expected), "{args:?}: {line}");
+    }
+}

@@ -505,6 +505,13 @@ pub(crate) struct EndLubrication<'a> {
     pub temperature_k: f64,
 }
 
+/// Approach at which the Hertz spot of the end-contact film criterion, radius `√(R δ)`, grows to
+/// `margin` (the distance of the contact point from the nearest edge of the face overlap): film
+/// friction below it, boundary friction from it on (SPEC §6.7), `δ = margin²/R`, m.
+pub fn film_limit_approach(reduced_radius: f64, margin: f64) -> f64 {
+    margin * margin / reduced_radius
+}
+
 /// Force of one roller end on one face (`None` without contact). `reach` is the roller's
 /// [`AxialReach`] on `body`, computed once for all faces of that body.
 #[allow(clippy::too_many_arguments)]
@@ -545,8 +552,7 @@ pub(crate) fn end_force(
     };
     let (mu, regime) = match (params.friction, lub) {
         (EndFriction::Ehl, Some(l)) if l.reduced_radius.is_finite() => {
-            let spot = (l.reduced_radius * dp.delta).sqrt();
-            if dp.margin > spot {
+            if dp.margin > 0.0 && dp.delta < film_limit_approach(l.reduced_radius, dp.margin) {
                 let state = ContactState {
                     normal_force_n: q,
                     geometry: ContactGeometry::Circular,

@@ -118,6 +118,17 @@ pub struct Field<'a> {
 
 /// Writes a heat map of `field` (blue = 0 … red = max) to `path` (SVG).
 pub fn heat_map(path: &Path, labels: &Labels, field: &Field) -> Result<(), PlotError> {
+    heat_map_outlined(path, labels, field, &[])
+}
+
+/// [`heat_map`] with the line segments `outline` (e.g. the boundary of a region, in the
+/// field's coordinates) drawn over it in black.
+pub fn heat_map_outlined(
+    path: &Path,
+    labels: &Labels,
+    field: &Field,
+    outline: &[[(f64, f64); 2]],
+) -> Result<(), PlotError> {
     let root = SVGBackend::new(path, SIZE).into_drawing_area();
     root.fill(&WHITE).map_err(|e| error(path, e))?;
     let (x0, x1, y0, y1) = field.extent;
@@ -158,6 +169,13 @@ pub fn heat_map(path: &Path, labels: &Labels, field: &Field) -> Result<(), PlotE
             let (xa, ya) = (x0 + i as f64 * dx, y0 + j as f64 * dy);
             Rectangle::new([(xa, ya), (xa + dx, ya + dy)], color.filled())
         }))
+        .map_err(|e| error(path, e))?;
+    chart
+        .draw_series(
+            outline
+                .iter()
+                .map(|segment| PathElement::new(segment.to_vec(), BLACK.stroke_width(2))),
+        )
         .map_err(|e| error(path, e))?;
     root.present().map_err(|e| error(path, e))
 }

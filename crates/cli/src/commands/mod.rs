@@ -5,6 +5,7 @@ pub mod check;
 pub mod contact;
 pub mod demo;
 pub mod ehl_line;
+pub mod end_rib_limit;
 pub mod fatigue;
 pub mod film;
 mod jobs_args;

@@ -8,6 +8,7 @@ use rolldyn_geometry::BearingModel;
 use rolldyn_plot::{Labels, Series, line_plot};
 use rolldyn_quasistatic::QuasiStaticOptions;
 use rolldyn_quasistatic::studies::{self, NviTraction, StudyRow};
+use rolldyn_units::{Length, Quantity};
 use rolldyn_validation::rib_shape::{self, POSITION_BIN_M, POSITION_BINS, RibShapeRow};
 use rolldyn_validation::seed004::{self, LOADS_N, PROFILES, TILTS_ARCMIN};
 use std::path::{Path, PathBuf};
@@ -23,23 +24,43 @@ pub enum Study {
     /// where the roller end touches the rib and how fast it slides there (6-DOF dynamics of the
     /// variants of examples/2002834/rib-shape.toml; run from the workspace root).
     RibShape,
+    /// Seed 000 §3.2.2: limit force of the roller large end on the cone's large rib against
+    /// the reduced curvature (Boussinesq patch reaching the projection of the faces), with the
+    /// pressure fields of Figs. 3.84–3.87; MODEL defaults to examples/tapered-cassette.toml.
+    EndRibLimit,
 }
 
 #[derive(clap::Args)]
 pub struct Args {
     #[arg(value_enum)]
     pub study: Study,
+    /// Model file of `end-rib-limit` (a double-row tapered bearing).
+    pub model: Option<PathBuf>,
     /// Folder for CSV tables and SVG plots.
     #[arg(long, default_value = "docs/validation")]
     pub out: PathBuf,
     /// Cage revolutions per variant for `rib-shape` (the first is discarded as start transient).
     #[arg(long, default_value_t = 4.0)]
     pub revolutions: f64,
+    /// Print JSON instead of the tables (`end-rib-limit`).
+    #[arg(long)]
+    pub json: bool,
+    /// Square cell size of the tangent-plane grid of `end-rib-limit`, e.g. `0.025mm`.
+    #[arg(long, default_value = "0.05mm")]
+    pub cell: Quantity<Length>,
 }
 
 pub fn run(args: Args) -> Result<(), Failure> {
+    if args.model.is_some() && !matches!(args.study, Study::EndRibLimit) {
+        return Err(Failure::Input(
+            "a model file is read by `study end-rib-limit` only".into(),
+        ));
+    }
     let dir = out_dir(&args.out)?;
     match args.study {
+        Study::EndRibLimit => {
+            super::end_rib_limit::run(args.model.as_deref(), &dir, args.json, args.cell.si())
+        }
         Study::Seed004 => seed004_study(&dir),
         Study::Skidding => skidding_study(&dir),
         Study::RibShape => rib_shape_study(&dir, args.revolutions),

@@ -25,7 +25,7 @@ mod summary;
 
 pub use columns::{SAMPLE_COLUMNS, sample_row, summary_entries};
 pub use layout::TaperedLayout;
-pub use model::{TaperedModel, TaperedParameters};
+pub use model::{TaperedModel, TaperedParameters, end_rib_film_limit_force};
 pub use rhs::{RollerReport, TaperedSystem};
 pub use run::{TaperedRun, TaperedRunSettings, TaperedSample, initial_state, run};
 pub use summary::{TaperedSummary, axial_spectrum, spectrum_peaks, steady_window, summarise};

@@ -3,7 +3,7 @@
 
 use super::geometry::{RowGeometry, row_geometry};
 use crate::conditions::OperatingConditions;
-use crate::ends::EndGeometry;
+use crate::ends::{EndGeometry, film_limit_approach};
 use crate::error::DynError;
 use crate::parameters::{EndFriction, PairParameters, RacewayParameters, RollerEndParameters};
 use rolldyn_contact::damping::{SliceDamping, TwoLevelFriction};
@@ -139,6 +139,25 @@ fn end_rib_stiffness(b: &DoubleRowTaperedBearing) -> f64 {
         .unwrap_or(f64::NAN)
 }
 
+/// Reduced radius of the end–rib pair in the axial section, `1/(1/R_end − κ_rib)` (seed 000
+/// §3.2.2), m: the radius of the film criterion's Hertz spot.
+fn end_rib_reduced_radius(b: &DoubleRowTaperedBearing) -> f64 {
+    1.0 / (1.0 / b.roller.large_end_sphere_radius - b.large_rib.face.curvature())
+}
+
+/// Normal force at which the dynamics switches the seated roller's large-end contact from film
+/// to boundary friction when the contact point lies `margin` from the nearest edge of the face
+/// overlap: the Hertz law `Q = K δ^{3/2}` of [`TaperedParameters::end_rib`] at the approach of
+/// [`film_limit_approach`] (SPEC §6.7), N.
+pub fn end_rib_film_limit_force(b: &DoubleRowTaperedBearing, margin: f64) -> f64 {
+    let stiffness = EllipticalStiffness {
+        k: end_rib_stiffness(b),
+    };
+    stiffness
+        .force(film_limit_approach(end_rib_reduced_radius(b), margin))
+        .0
+}
+
 /// The slices of one roller and their per-raceway constants.
 #[derive(Debug, Clone)]
 pub(crate) struct TaperedSlices {
@@ -267,9 +286,7 @@ impl TaperedModel {
         let epicyclic = bearing.epicyclic_cage_speed(conditions.inner_speed.speed(0.0));
         let reduced_modulus =
             2.0 / (roller.material.compliance() + bearing.inner_material.compliance());
-        // axial-section reduced curvature 1/R_end − κ_rib (seed 000 §3.2.2)
-        let rib_reduced_radius =
-            1.0 / (1.0 / roller.large_end_sphere_radius - bearing.large_rib.face.curvature());
+        let rib_reduced_radius = end_rib_reduced_radius(bearing);
         Ok(Self {
             z: bearing.rollers_per_row,
             m_i: inner_assembly_mass(bearing, &rows),
