@@ -500,6 +500,10 @@ pub(crate) struct EndLubrication<'a> {
     pub model: &'a TractionModel,
     /// reduced radius of the end/face pair (∞ = conformal or edge: no film model), m
     pub reduced_radius: f64,
+    /// radius `R` of the film criterion's spot `√(R δ)` toward the nearest face edge
+    /// ([`film_limit_approach`]): the reduced radius for a circular spot, `b²/δ` of the Hertz
+    /// ellipse for an elliptical one, m
+    pub film_limit_radius: f64,
     pub reduced_modulus: f64,
     pub roughness: [f64; 2],
     pub temperature_k: f64,
@@ -552,7 +556,7 @@ pub(crate) fn end_force(
     };
     let (mu, regime) = match (params.friction, lub) {
         (EndFriction::Ehl, Some(l)) if l.reduced_radius.is_finite() => {
-            if dp.margin > 0.0 && dp.delta < film_limit_approach(l.reduced_radius, dp.margin) {
+            if dp.margin > 0.0 && dp.delta < film_limit_approach(l.film_limit_radius, dp.margin) {
                 let state = ContactState {
                     normal_force_n: q,
                     geometry: ContactGeometry::Circular,

@@ -49,6 +49,7 @@ pub(super) fn face_bodies<'a>(model: &'a Model, bodies: &Bodies) -> FaceBodies<'
             lubrication: EndLubrication {
                 model: traction,
                 reduced_radius: ends.rib_reduced_radius,
+                film_limit_radius: ends.rib_reduced_radius,
                 reduced_modulus: ends.rib_reduced_modulus,
                 roughness: ends.rib_roughness,
                 temperature_k,

@@ -9,6 +9,7 @@ use crate::parameters::{EndFriction, PairParameters, RacewayParameters, RollerEn
 use rolldyn_contact::damping::{SliceDamping, TwoLevelFriction};
 use rolldyn_contact::hertz::{
     ContactCurvatures, EllipticalMethod, EllipticalStiffness, LineApproachModel, LineContact,
+    elliptical_contact,
 };
 use rolldyn_contact::slices::tapered_raceway_laws;
 use rolldyn_geometry::{DoubleRowTaperedBearing, MassProperties};
@@ -123,26 +124,73 @@ fn pa_steel_modulus(b: &DoubleRowTaperedBearing) -> f64 {
     2.0 / (b.roller.material.compliance() + b.cage.material.compliance())
 }
 
-/// Hertz `K` of the large-end sphere on the rib: sphere `1/R_s` both ways against the rib's
-/// axial-section curvature (0, −1/R concave, +1/R convex), its circumferential curvature neglected (the rib
-/// face stands nearly normal to the roller axis, ≈ 1 m⁻¹ against 1.56 m⁻¹).
-fn end_rib_stiffness(b: &DoubleRowTaperedBearing) -> f64 {
+/// Principal curvatures of the large-end sphere (`1/R_s` both ways) and the rib face at the
+/// seated contact: the axial-section curvature of the face (0, −1/R concave, +1/R convex) and its
+/// circumferential curvature ([`rolldyn_geometry::tapered::LargeRibContact::circumferential_curvature`]:
+/// −1.38 m⁻¹ for the example, so the contact conforms around the circumference, 0.19 m⁻¹
+/// against 1.56 m⁻¹ in the axial section).
+fn end_rib_curvatures(b: &DoubleRowTaperedBearing) -> ContactCurvatures {
     let r_s = b.roller.large_end_sphere_radius;
-    let curv = ContactCurvatures {
+    ContactCurvatures {
         body1: (1.0 / r_s, 1.0 / r_s),
-        body2: (-b.large_rib.face.curvature(), 0.0),
+        body2: (
+            -b.large_rib.face.curvature(),
+            b.row(0).large_rib.circumferential_curvature(),
+        ),
         angle: 0.0,
-    };
-    let e_red = 2.0 / (b.roller.material.compliance() + b.inner_material.compliance());
-    EllipticalStiffness::new(&curv, e_red, EllipticalMethod::Exact)
-        .map(|s| s.k)
-        .unwrap_or(f64::NAN)
+    }
+}
+
+/// Reduced modulus of roller and cone, Pa.
+fn end_rib_modulus(b: &DoubleRowTaperedBearing) -> f64 {
+    2.0 / (b.roller.material.compliance() + b.inner_material.compliance())
+}
+
+/// Hertz `K` of `Q = K δ^{3/2}` for the large-end sphere on the rib ([`end_rib_curvatures`]).
+fn end_rib_stiffness(b: &DoubleRowTaperedBearing) -> f64 {
+    EllipticalStiffness::new(
+        &end_rib_curvatures(b),
+        end_rib_modulus(b),
+        EllipticalMethod::Exact,
+    )
+    .map(|s| s.k)
+    .unwrap_or(f64::NAN)
 }
 
 /// Reduced radius of the end–rib pair in the axial section, `1/(1/R_end − κ_rib)` (seed 000
-/// §3.2.2), m: the radius of the film criterion's Hertz spot.
+/// §3.2.2), m: the radius of the point-contact film.
 fn end_rib_reduced_radius(b: &DoubleRowTaperedBearing) -> f64 {
     1.0 / (1.0 / b.roller.large_end_sphere_radius - b.large_rib.face.curvature())
+}
+
+/// Radius `R` of the film criterion's spot `√(R δ)` (SPEC §6.7: film friction while the patch
+/// stays inside the mutual projection of end face and rib band). The Hertz ellipse of
+/// [`end_rib_curvatures`] has its semi-minor axis `b` in the axial section, where the nearest
+/// edges are (margin `m_b`: chamfer edge, undercut or rib top), and its semi-major axis `a`
+/// around the circumference, bounded by the half-chord `m_a = √(R_face² − d_c²)` of the end
+/// face's disk through the contact (`d_c` its distance from the roller axis). Scaled to the
+/// margin the dynamics measures, the spot reaches an edge when `δ = m_b²/R` with
+/// `R = max(b², a² (m_b/m_a)²)/δ` at the seated contact; `a²/δ` and `b²/δ` do not depend on the
+/// load (`a, b ∝ Q^{1/3}`, `δ ∝ Q^{2/3}`), so they are taken at 1 kN, m.
+fn end_rib_film_limit_radius(b: &DoubleRowTaperedBearing) -> f64 {
+    let Ok(spot) = elliptical_contact(
+        &end_rib_curvatures(b),
+        end_rib_modulus(b),
+        1e3,
+        EllipticalMethod::Exact,
+    ) else {
+        return f64::NAN;
+    };
+    let row = b.row(0);
+    let rib = row.large_rib;
+    let (w, axis) = (rib.point - rib.end_sphere_centre, row.roller_axis);
+    let d_c = (w.r * axis.z - w.z * axis.r).abs();
+    let face = b.roller.large_end_face_radius();
+    let m_b = (face - d_c).min(-rib.band.0).min(rib.band.1);
+    let m_a = (face * face - d_c * d_c).max(0.0).sqrt();
+    let minor = spot.semi_minor.powi(2);
+    let major = (spot.semi_major * m_b / m_a).powi(2);
+    minor.max(major) / spot.approach
 }
 
 /// Normal force at which the dynamics switches the seated roller's large-end contact from film
@@ -154,7 +202,7 @@ pub fn end_rib_film_limit_force(b: &DoubleRowTaperedBearing, margin: f64) -> f64
         k: end_rib_stiffness(b),
     };
     stiffness
-        .force(film_limit_approach(end_rib_reduced_radius(b), margin))
+        .force(film_limit_approach(end_rib_film_limit_radius(b), margin))
         .0
 }
 
@@ -206,6 +254,8 @@ pub struct TaperedModel {
     pub(crate) cup_angle: f64,
     /// EHL data of the end–rib pair: reduced radius, m
     pub(crate) rib_reduced_radius: f64,
+    /// radius of the film criterion's spot, [`end_rib_film_limit_radius`], m
+    pub(crate) rib_film_limit_radius: f64,
     /// epicyclic cage speed at t = 0, rad/s
     pub epicyclic_cage_speed: f64,
     pub(crate) bearing: DoubleRowTaperedBearing,
@@ -287,6 +337,7 @@ impl TaperedModel {
         let reduced_modulus =
             2.0 / (roller.material.compliance() + bearing.inner_material.compliance());
         let rib_reduced_radius = end_rib_reduced_radius(bearing);
+        let rib_film_limit_radius = end_rib_film_limit_radius(bearing);
         Ok(Self {
             z: bearing.rollers_per_row,
             m_i: inner_assembly_mass(bearing, &rows),
@@ -311,6 +362,7 @@ impl TaperedModel {
             cone_angle: bearing.cone_angle(),
             cup_angle: bearing.cup_angle(),
             rib_reduced_radius,
+            rib_film_limit_radius,
             epicyclic_cage_speed: epicyclic,
             bearing: bearing.clone(),
         })

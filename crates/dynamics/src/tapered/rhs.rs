@@ -335,6 +335,7 @@ fn ends(
     let lub = EndLubrication {
         model: &model.traction,
         reduced_radius: model.rib_reduced_radius,
+        film_limit_radius: model.rib_film_limit_radius,
         reduced_modulus: model.reduced_modulus,
         roughness: model.roughness,
         temperature_k: model.conditions.temperatures.inner_raceway_k,

@@ -40,6 +40,17 @@ pub struct LargeRibContact {
     pub end_sphere_centre: Rz,
 }
 
+impl LargeRibContact {
+    /// Normal curvature of the rib face along its parallel circle at the contact, by Meusnier's
+    /// theorem `κ = n_r / r` (the face is a surface of revolution about the bearing axis),
+    /// signed convex > 0 toward the roller as in the contact crate's curvatures, 1/m. For the
+    /// example's cone rib −1.38 m⁻¹: the rib wraps the end sphere around the circumference
+    /// (seed 000 §3.2.2 gives only the axial-section curvatures).
+    pub fn circumferential_curvature(&self) -> f64 {
+        self.normal.r / self.point.r
+    }
+}
+
 /// The small (retaining) rib face: a plane normal to the roller axis.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SmallRibFace {

@@ -166,7 +166,7 @@ impl TangentFrame {
     /// convex > 0 as in [`ContactCurvatures`], 1/m.
     fn rib_circumferential_curvature(&self) -> f64 {
         match self.surface {
-            RibSurface::Revolution => self.rib.normal.r / self.rib.point.r,
+            RibSurface::Revolution => self.rib.circumferential_curvature(),
             RibSurface::AxialProfile => 0.0,
         }
     }
