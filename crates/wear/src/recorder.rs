@@ -18,16 +18,16 @@ use std::f64::consts::{PI, TAU};
 /// Samples of one contact kind for the averaged method: the equivalent-force sums, the
 /// force-weighted shape of the load over the wear lines and the contact-time-weighted ln Λ.
 #[derive(Debug, Clone)]
-struct AveragedSums {
-    contact: AveragedContact,
+pub(crate) struct AveragedSums {
+    pub(crate) contact: AveragedContact,
     line_share: Vec<f64>,
     ln_lambda_time: f64,
     lambda_time: f64,
-    boundary_time: f64,
+    pub(crate) boundary_time: f64,
 }
 
 impl AveragedSums {
-    fn new(lines: usize, exponent: f64) -> Self {
+    pub(crate) fn new(lines: usize, exponent: f64) -> Self {
         Self {
             contact: AveragedContact::new(exponent),
             line_share: vec![0.0; lines],
@@ -37,7 +37,15 @@ impl AveragedSums {
         }
     }
 
-    fn add(&mut self, force: f64, speed: f64, dt: f64, lambda: f64, boundary: bool, lines: &[f64]) {
+    pub(crate) fn add(
+        &mut self,
+        force: f64,
+        speed: f64,
+        dt: f64,
+        lambda: f64,
+        boundary: bool,
+        lines: &[f64],
+    ) {
         let loaded = force > 0.0; // false for NaN too
         if !loaded {
             return;
@@ -55,17 +63,17 @@ impl AveragedSums {
     }
 
     /// Mean Λ over the contact time (geometric mean; NaN without film samples).
-    fn mean_lambda(&self) -> f64 {
+    pub(crate) fn mean_lambda(&self) -> f64 {
         (self.ln_lambda_time / self.lambda_time).exp()
     }
 
     /// Whether boundary friction held for most of the contact time.
-    fn mostly_boundary(&self) -> bool {
+    pub(crate) fn mostly_boundary(&self) -> bool {
         self.boundary_time > 0.5 * self.contact.contact_time()
     }
 
     /// The equivalent force spread over the lines in the recorded load shape.
-    fn equivalent_line_forces(&self) -> Vec<f64> {
+    pub(crate) fn equivalent_line_forces(&self) -> Vec<f64> {
         let total: f64 = self.line_share.iter().sum();
         let qe = self.contact.equivalent_force();
         self.line_share
