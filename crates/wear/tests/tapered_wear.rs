@@ -62,16 +62,17 @@ fn print_window(label: &str, w: &WindowRates) {
         d.rib_force_max_n,
         d.cage_speed_rad_s
     );
+    let line = w.direct.max_pressure_line();
     for (method, r) in [("direct", &w.direct), ("averaged", &w.averaged)] {
-        let line = r.max_pressure_line();
         println!(
             "  {method}: end/rib in contact {:.3e}/{:.3e} m/s, surface {:.3e}/{:.3e} m/s; cone \
-             line {} (max pressure) in contact {:.3e} m/s",
+             line {} (max pressure {:.3e} Pa) in contact {:.3e} m/s",
             r.end_in_contact,
             r.rib_in_contact,
             r.roller_end,
             r.rib,
             line + 1,
+            r.cone_pressure_pa[line],
             r.cone_in_contact[line]
         );
         let fmt = |v: &[f64]| {
@@ -191,4 +192,29 @@ fn v25_misalignment_4_arcmin() {
     })
     .unwrap();
     print_life("4′, 11 429 h", &life);
+}
+
+#[test]
+fn one_period_writes_the_tables_and_plots() {
+    let settings = TaperedWearSettings {
+        settle_s: 2e-4,
+        window_s: 4e-4,
+        life_s: 1000.0 * HOUR,
+        period_s: 1000.0 * HOUR,
+        ..TaperedWearSettings::default()
+    };
+    let life = run_tapered_life(&cassette(&Overrides::default()), &settings, &mut |_| {}).unwrap();
+    assert_eq!(life.periods.len(), 1);
+    let wear = &life.periods[0].wear;
+    assert_eq!(wear.roller.len(), 9);
+    assert!(wear.large_end > 0.0 && wear.large_rib > 0.0);
+    let dir = std::env::temp_dir().join(format!("rolldyn-tapered-wear-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let plots = rolldyn_wear::tapered::write_tapered_report(&dir, &life, settings.method).unwrap();
+    assert_eq!(plots.len(), 5);
+    let windows = std::fs::read_to_string(dir.join("tapered-windows.csv")).unwrap();
+    assert_eq!(windows.lines().count(), 3, "{windows}");
+    let lines = std::fs::read_to_string(dir.join("tapered-lines.csv")).unwrap();
+    assert_eq!(lines.lines().count(), 10);
+    std::fs::remove_dir_all(&dir).unwrap();
 }

@@ -21,3 +21,4 @@ pub mod study;
 pub mod sweep;
 pub mod traction;
 pub mod wear;
+mod wear_tapered;

@@ -6,10 +6,11 @@
 //!
 //! - [`settings`]: the knobs and their defaults;
 //! - [`recorder`]: the dynamics' contact record → direct and averaged rates;
-//! - [`life`]: the life loop with a fixed period.
+//! - [`life`]: the life loop with a fixed period; [`report`]: its tables and plots.
 
 pub mod life;
 pub mod recorder;
+pub mod report;
 pub mod settings;
 
 pub use life::{
@@ -17,4 +18,5 @@ pub use life::{
     worn_further,
 };
 pub use recorder::{TaperedDiagnostics, TaperedRates, TaperedWearData, TaperedWearRecorder};
+pub use report::write_tapered_report;
 pub use settings::TaperedWearSettings;

@@ -94,16 +94,19 @@ pub struct TaperedRates {
     pub rib: f64,
     /// rates while in contact, k p̄ v / H: cone lines, large end, rib (seed 000 Table 3.7)
     pub cone_in_contact: Vec<f64>,
+    /// mean pressure on the cone lines while in contact, Pa
+    pub cone_pressure_pa: Vec<f64>,
     pub end_in_contact: f64,
     pub rib_in_contact: f64,
 }
 
 impl TaperedRates {
     /// The line of the cone with the highest mean pressure while in contact (seed 000 §3.2.3:
-    /// line 3 of its 9) — the largest in-contact rate.
+    /// line 3 of its 9).
     pub fn max_pressure_line(&self) -> usize {
-        (0..self.cone_in_contact.len())
-            .max_by(|&a, &b| self.cone_in_contact[a].total_cmp(&self.cone_in_contact[b]))
+        let p = &self.cone_pressure_pa;
+        (0..p.len())
+            .max_by(|&a, &b| p[a].total_cmp(&p[b]))
             .unwrap_or(0)
     }
 }
@@ -136,6 +139,8 @@ struct RingSums {
     /// Σ k p̄ v dt / H_ring while loaded, m; Σ dt loaded, s (per line, all rollers)
     in_contact: Vec<f64>,
     contact_time: Vec<f64>,
+    /// Σ p̄ dt while loaded, Pa·s
+    pressure_time: Vec<f64>,
     /// Σ dt × (reduced radius, ring radius) while loaded, for the averaged patches
     geometry_time: Vec<[f64; 2]>,
     averaged: AveragedSums,
@@ -148,6 +153,7 @@ impl RingSums {
             surface: vec![0.0; lines],
             in_contact: vec![0.0; lines],
             contact_time: vec![0.0; lines],
+            pressure_time: vec![0.0; lines],
             geometry_time: vec![[0.0; 2]; lines],
             averaged: AveragedSums::new(lines, exponent),
             halves: std::array::from_fn(|_| AveragedSums::new(lines, exponent)),
@@ -263,6 +269,7 @@ impl<'a> TaperedWearRecorder<'a> {
             let ring = &mut self.rings[race];
             ring.in_contact[s] += kpv / h_ring * dt;
             ring.contact_time[s] += dt;
+            ring.pressure_time[s] += patch.mean_pressure_pa * dt;
             ring.geometry_time[s][0] += c.reduced_radius_m[s] * dt;
             ring.geometry_time[s][1] += c.ring_radius_m[s] * dt;
             let on_ring = kpv / h_ring * self.exposure(patch, c.ring_radius_m[s]);
@@ -326,9 +333,8 @@ impl<'a> TaperedWearRecorder<'a> {
     fn direct(&self) -> TaperedRates {
         let t = self.recorded_s;
         let per_time = |v: &[f64], f: f64| v.iter().map(|x| f * x / t).collect::<Vec<_>>();
-        let in_contact = |r: &RingSums| {
-            r.in_contact
-                .iter()
+        let per_contact_time = |sums: &[f64], r: &RingSums| {
+            sums.iter()
                 .zip(&r.contact_time)
                 .map(|(x, tc)| if *tc > 0.0 { x / tc } else { 0.0 })
                 .collect()
@@ -347,7 +353,8 @@ impl<'a> TaperedWearRecorder<'a> {
             cup: per_time(&self.rings[1].surface, 1.0 / ROWS),
             roller_end: rib.end_surface / t,
             rib: rib.rib_surface / (ROWS * t),
-            cone_in_contact: in_contact(&self.rings[0]),
+            cone_in_contact: per_contact_time(&self.rings[0].in_contact, &self.rings[0]),
+            cone_pressure_pa: per_contact_time(&self.rings[0].pressure_time, &self.rings[0]),
             end_in_contact: per_contact(rib.end_in_contact),
             rib_in_contact: per_contact(rib.rib_in_contact),
         }
@@ -364,6 +371,7 @@ impl<'a> TaperedWearRecorder<'a> {
             cone: vec![0.0; lines],
             cup: vec![0.0; lines],
             cone_in_contact: vec![0.0; lines],
+            cone_pressure_pa: vec![0.0; lines],
             ..TaperedRates::default()
         };
         for race in 0..2 {
@@ -394,6 +402,7 @@ impl<'a> TaperedWearRecorder<'a> {
                 if race == 0 {
                     rates.cone[s] = on_ring;
                     rates.cone_in_contact[s] = kpv / h_ring;
+                    rates.cone_pressure_pa[s] = patch.mean_pressure_pa;
                 } else {
                     rates.cup[s] = on_ring;
                 }
