@@ -149,7 +149,7 @@ fn a_short_window_wears_every_surface_by_both_methods() {
 }
 
 #[test]
-#[ignore = "validation run: about 2 minutes of wall time"]
+#[ignore = "validation run: 2 dynamics windows, about 10 minutes of wall time"]
 fn v23_v24_initial_rates() {
     let settings = TaperedWearSettings::default();
     for (label, overrides) in [
@@ -161,26 +161,46 @@ fn v23_v24_initial_rates() {
     }
 }
 
-#[test]
-#[ignore = "validation run: about 20 minutes of wall time"]
-fn v24_period_stability() {
-    for period_h in [3810.0, 1905.0] {
-        let settings = TaperedWearSettings {
-            period_s: period_h * HOUR,
-            life_s: 11_430.0 * HOUR,
-            method: WearMethod::Averaged,
-            ..TaperedWearSettings::default()
-        };
-        let life = run_tapered_life(&cassette(&at_387_rpm()), &settings, &mut |p| {
-            println!("period {} done at {:.0} h", p.index, p.time_h)
-        })
-        .unwrap();
-        print_life(&format!("period {period_h} h"), &life);
-    }
+/// Writes the tables and plots of `life` into docs/validation/tapered-wear/`name`.
+fn write_report(name: &str, life: &TaperedLife, method: WearMethod) {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../docs/validation/tapered-wear")
+        .join(name);
+    std::fs::create_dir_all(&dir).unwrap();
+    rolldyn_wear::tapered::write_tapered_report(&dir, life, method).unwrap();
+}
+
+/// V-24 stability: the averaged method (seed 000 §3.2.3 continues with it) at 387 rpm with a
+/// fixed period, 11 430 h.
+fn v24_period(period_h: f64) {
+    let settings = TaperedWearSettings {
+        period_s: period_h * HOUR,
+        life_s: 11_430.0 * HOUR,
+        method: WearMethod::Averaged,
+        ..TaperedWearSettings::default()
+    };
+    let life = run_tapered_life(&cassette(&at_387_rpm()), &settings, &mut |p| {
+        println!("period {} done at {:.0} h", p.index, p.time_h)
+    })
+    .unwrap();
+    print_life(&format!("period {period_h} h"), &life);
+    write_report(&format!("v24-period-{period_h}h"), &life, settings.method);
 }
 
 #[test]
-#[ignore = "validation run: about 10 minutes of wall time"]
+#[ignore = "validation run: 4 dynamics windows, about 20 minutes of wall time"]
+fn v24_period_3810h() {
+    v24_period(3810.0);
+}
+
+#[test]
+#[ignore = "validation run: 7 dynamics windows, about 35 minutes of wall time"]
+fn v24_period_1905h() {
+    v24_period(1905.0);
+}
+
+#[test]
+#[ignore = "validation run: 7 dynamics windows, about 35 minutes of wall time"]
 fn v25_misalignment_4_arcmin() {
     let overrides = Overrides {
         misalignment: Some((4.0_f64 / 60.0).to_radians()),
@@ -192,6 +212,7 @@ fn v25_misalignment_4_arcmin() {
     })
     .unwrap();
     print_life("4′, 11 429 h", &life);
+    write_report("v25-misalignment-4arcmin", &life, settings.method);
 }
 
 #[test]
