@@ -8,6 +8,7 @@ use crate::averaged::AveragedContact;
 use crate::bar_load::bar_slice_forces;
 use crate::bearing_data::WearData;
 use crate::boussinesq_lines::boussinesq_patches;
+use crate::coefficient::WearCoefficient;
 use crate::rates::{ContactDiagnostics, SurfaceWear};
 use crate::settings::{PressureModel, WearMethod, WearSettings};
 use crate::wear_line::{LinePatch, point_patch, slice_patch};
@@ -70,6 +71,27 @@ impl AveragedSums {
     /// Whether boundary friction held for most of the contact time.
     pub(crate) fn mostly_boundary(&self) -> bool {
         self.boundary_time > 0.5 * self.contact.contact_time()
+    }
+
+    /// k at the mean Λ — the boundary k when boundary friction held for most of the contact
+    /// time.
+    pub(crate) fn coefficient(&self, coefficient: &WearCoefficient) -> f64 {
+        coefficient.for_contact(self.mean_lambda(), self.mostly_boundary())
+    }
+
+    /// The circular Hertz patch of the equivalent force at reduced radius `radius` and
+    /// k p̄ v̄ on its central line (seed 000 eq. 2.35 before the hardness).
+    pub(crate) fn point_wear(
+        &self,
+        coefficient: &WearCoefficient,
+        radius: f64,
+        modulus: f64,
+    ) -> (LinePatch, f64) {
+        let patch = point_patch(self.contact.equivalent_force(), radius, modulus);
+        let kpv = self.coefficient(coefficient)
+            * patch.mean_pressure_pa
+            * self.contact.mean_sliding_speed();
+        (patch, kpv)
     }
 
     /// The equivalent force spread over the lines in the recorded load shape.
@@ -306,11 +328,8 @@ impl<'a> WearRecorder<'a> {
                         modulus: f64,
                         given: Option<&[LinePatch]>|
          -> Vec<(usize, f64, LinePatch)> {
-            let k = self
-                .settings
-                .coefficient
-                .for_contact(sums.mean_lambda(), sums.mostly_boundary());
-            let k_v = k * sums.contact.mean_sliding_speed();
+            let k_v =
+                sums.coefficient(&self.settings.coefficient) * sums.contact.mean_sliding_speed();
             match given {
                 Some(patches) => patches
                     .iter()
@@ -384,16 +403,11 @@ impl<'a> WearRecorder<'a> {
         let contact_time = sums.contact.contact_time();
         if contact_time > 0.0 {
             let [radius, on_roller, on_ring] = self.rib_geometry_time.map(|x| x / contact_time);
-            let k = self
-                .settings
-                .coefficient
-                .for_contact(sums.mean_lambda(), sums.mostly_boundary());
-            let patch = point_patch(
-                sums.contact.equivalent_force(),
+            let (patch, kpv) = sums.point_wear(
+                &self.settings.coefficient,
                 radius,
                 d.ends.reduced_modulus_pa,
             );
-            let kpv = k * patch.mean_pressure_pa * sums.contact.mean_sliding_speed();
             w.roller_end = 0.5 * kpv / d.roller_hardness_pa
                 * self.exposure(patch, TAU * on_roller)
                 * contact_time

@@ -9,9 +9,10 @@ use rolldyn_output::{Formats, OutputError, TableWriter};
 use rolldyn_plot::{Field, Labels, PlotError, Series, heat_map, line_plot};
 use std::path::{Path, PathBuf};
 
-const UM: f64 = 1e6;
+/// µm per m
+pub(crate) const UM: f64 = 1e6;
 /// rates are reported in µm per 1000 h
-const UM_PER_KH: f64 = 1e6 * 3.6e6;
+pub(crate) const UM_PER_KH: f64 = 1e6 * 3.6e6;
 
 /// Column names of the periods table.
 pub fn period_columns() -> Vec<String> {

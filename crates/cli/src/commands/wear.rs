@@ -190,6 +190,21 @@ pub(super) fn progress_bar(quiet: bool, life_h: f64) -> ProgressBar {
     bar
 }
 
+/// `--out`, or `out/<model file stem>-wear` (`default_name` for the embedded model), created.
+pub(super) fn output_folder(args: &Args, default_name: &str) -> Result<PathBuf, Failure> {
+    let name = args
+        .model
+        .as_deref()
+        .and_then(|p| p.file_stem())
+        .map_or(default_name.into(), |s| s.to_string_lossy().into_owned());
+    out_dir(
+        &args
+            .out
+            .clone()
+            .unwrap_or_else(|| PathBuf::from(format!("out/{name}-wear"))),
+    )
+}
+
 pub fn run(args: Args) -> Result<(), Failure> {
     let model = load_model(args.model.as_deref())?;
     if let rolldyn_geometry::BearingModel::Tapered(_) = model.bearing {
@@ -197,17 +212,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
     }
     let settings = args.settings()?;
     let overrides = args.operating.overrides();
-    let name = args
-        .model
-        .as_deref()
-        .and_then(|p| p.file_stem())
-        .map_or("2002834".into(), |s| s.to_string_lossy().into_owned());
-    let dir = out_dir(
-        &args
-            .out
-            .clone()
-            .unwrap_or_else(|| PathBuf::from(format!("out/{name}-wear"))),
-    )?;
+    let dir = output_folder(&args, "2002834")?;
     let bar = progress_bar(args.quiet || args.json, settings.life_s / 3600.0);
     let answer = run_wear(&model, &overrides, &settings, Some(&dir), &mut |p| {
         bar.set_position(p.time_h.round() as u64);

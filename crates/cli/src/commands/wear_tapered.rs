@@ -2,13 +2,12 @@
 //! `rolldyn_wear::tapered`): short dynamics windows per period, direct and averaged rates, the
 //! fixed-period life loop, tables and plots.
 
-use super::wear::{Args, MethodArg, PeriodArg, progress_bar};
+use super::wear::{Args, MethodArg, PeriodArg, output_folder, progress_bar};
 use crate::failure::Failure;
-use crate::output::{out_dir, print_json};
+use crate::output::print_json;
 use rolldyn_wear::WearError;
 use rolldyn_wear::tapered::write_tapered_report;
 use rolldyn_wear::tapered::{TaperedPeriod, TaperedWearSettings, run_tapered_life};
-use std::path::PathBuf;
 
 const HOUR: f64 = 3600.0;
 const UM: f64 = 1e6;
@@ -73,17 +72,7 @@ fn period_message(p: &TaperedPeriod) -> String {
 pub fn run(args: &Args, model: &rolldyn_model::Model) -> Result<(), Failure> {
     let settings = settings(args)?;
     let base = rolldyn_setup::prepare_tapered(model, &args.operating.overrides())?;
-    let name = args
-        .model
-        .as_deref()
-        .and_then(|p| p.file_stem())
-        .map_or("tapered".into(), |s| s.to_string_lossy().into_owned());
-    let dir = out_dir(
-        &args
-            .out
-            .clone()
-            .unwrap_or_else(|| PathBuf::from(format!("out/{name}-wear"))),
-    )?;
+    let dir = output_folder(args, "tapered")?;
     let bar = progress_bar(args.quiet || args.json, settings.life_s / HOUR);
     let wall = std::time::Instant::now();
     let life = run_tapered_life(&base, &settings, &mut |p| {

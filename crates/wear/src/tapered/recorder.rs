@@ -413,16 +413,11 @@ impl<'a> TaperedWearRecorder<'a> {
         let contact_time = sums.contact.contact_time();
         if contact_time > 0.0 {
             let [end_radius, rib_radius] = rib.geometry_time.map(|x| x / contact_time);
-            let k = self
-                .settings
-                .coefficient
-                .for_contact(sums.mean_lambda(), sums.mostly_boundary());
-            let patch = point_patch(
-                sums.contact.equivalent_force(),
+            let (patch, kpv) = sums.point_wear(
+                &self.settings.coefficient,
                 d.rib_reduced_radius_m,
                 d.reduced_modulus_pa,
             );
-            let kpv = k * patch.mean_pressure_pa * sums.contact.mean_sliding_speed();
             let (h_end, h_rib) = (d.roller_hardness_pa, d.ring_hardness_pa[0]);
             rates.end_in_contact = kpv / h_end;
             rates.rib_in_contact = kpv / h_rib;

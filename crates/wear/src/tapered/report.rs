@@ -3,17 +3,13 @@
 //! at the start of a period, the depths at its end; the last row is the window at the end of
 //! the life), one row per period and wear line.
 
-use crate::report::WearReportError;
+use crate::report::{UM, UM_PER_KH, WearReportError};
 use crate::settings::WearMethod;
 use crate::tapered::life::{TaperedLife, WindowRates};
 use rolldyn_geometry::TaperedWear;
 use rolldyn_output::{Formats, TableWriter};
 use rolldyn_plot::{Labels, Series, line_plot};
 use std::path::{Path, PathBuf};
-
-const UM: f64 = 1e6;
-/// rates are reported in µm per 1000 h
-const UM_PER_KH: f64 = 1e6 * 3.6e6;
 
 /// Column names of the windows table.
 pub fn window_columns() -> Vec<String> {
