@@ -4,12 +4,15 @@
 //!     cargo test -p rolldyn-wear --test tapered_wear -- --ignored --nocapture <name>
 //! and their measured results are in VALIDATION.md "Tapered wear (V-23…V-25)".
 
-use rolldyn_dynamics::tapered::TaperedModel;
+use rolldyn_dynamics::tapered::{
+    ContactRecorder, RollerContacts, TaperedModel, TaperedRunSettings, TaperedSample, run_recorded,
+};
 use rolldyn_setup::Overrides;
 use rolldyn_wear::WearMethod;
 use rolldyn_wear::tapered::{
     TaperedLife, TaperedWearSettings, WindowRates, run_tapered_life, tapered_rates,
 };
+use rolldyn_wear::wear_line::slice_patch;
 use std::path::Path;
 
 const HOUR: f64 = 3600.0;
@@ -238,4 +241,48 @@ fn one_period_writes_the_tables_and_plots() {
     let lines = std::fs::read_to_string(dir.join("tapered-lines.csv")).unwrap();
     assert_eq!(lines.lines().count(), 10);
     std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// The last recorded step's contacts.
+struct LastStep(Vec<RollerContacts>);
+
+impl ContactRecorder for LastStep {
+    fn record(&mut self, _: &TaperedSample, rollers: &[RollerContacts]) {
+        self.0 = rollers.to_vec();
+    }
+}
+
+#[test]
+fn the_recorded_half_widths_are_those_of_the_wear_lines() {
+    // the dynamics' traction half-width of every loaded slice equals the wear line's Hertz
+    // half-width (docs/theory.md §8.5) at the recorded force and reduced radius
+    let model = cassette(&Overrides::default());
+    let settings = TaperedRunSettings {
+        duration_s: 6e-4,
+        sample_interval_s: 6e-4,
+        ..TaperedRunSettings::default()
+    };
+    let mut last = LastStep(Vec::new());
+    run_recorded(&model, &settings, Some(&mut last), |_| {}).unwrap();
+    let lengths = model.bearing().roller.slices().length;
+    let mut loaded = 0;
+    for roller in &last.0 {
+        for c in [&roller.cone, &roller.cup] {
+            for (s, &length) in lengths.iter().enumerate() {
+                if c.force_n[s] > 0.0 {
+                    loaded += 1;
+                    let patch = slice_patch(
+                        c.force_n[s],
+                        length,
+                        c.reduced_radius_m[s],
+                        model.reduced_modulus(),
+                    );
+                    let b = c.half_width_m[s];
+                    assert!((patch.half_width_m / b - 1.0).abs() < 1e-9, "{b} {patch:?}");
+                    assert!(c.lambda[s] > 0.0 && c.ring_radius_m[s] > 0.05);
+                }
+            }
+        }
+    }
+    assert!(loaded > 50, "{loaded}");
 }

@@ -46,11 +46,6 @@ impl SliceContacts {
             v.fill(0.0);
         }
     }
-
-    /// Total normal force, N.
-    pub fn total_force_n(&self) -> f64 {
-        self.force_n.iter().sum()
-    }
 }
 
 /// The large end of one roller on its large rib.
