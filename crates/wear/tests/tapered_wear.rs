@@ -218,6 +218,31 @@ fn v25_misalignment_4_arcmin() {
     write_report("v25-misalignment-4arcmin", &life, settings.method);
 }
 
+/// V-25 with one period over the whole 11 429 h: the unworn and the worn window only (the
+/// shortest run that answers V-25; the wear of 11 429 h is applied at once).
+#[test]
+#[ignore = "validation run: 2 dynamics windows, about 15 minutes of wall time"]
+fn v25_misalignment_4_arcmin_one_period() {
+    let overrides = Overrides {
+        misalignment: Some((4.0_f64 / 60.0).to_radians()),
+        ..Overrides::default()
+    };
+    let settings = TaperedWearSettings {
+        period_s: 11_429.0 * HOUR,
+        ..TaperedWearSettings::default()
+    };
+    let life = run_tapered_life(&cassette(&overrides), &settings, &mut |p| {
+        print_window(&format!("period {} (unworn)", p.index), &p.rates)
+    })
+    .unwrap();
+    print_life("4′, 11 429 h in one period", &life);
+    write_report(
+        "v25-misalignment-4arcmin-one-period",
+        &life,
+        settings.method,
+    );
+}
+
 #[test]
 fn one_period_writes_the_tables_and_plots() {
     let settings = TaperedWearSettings {
