@@ -2,7 +2,7 @@
 //! streamed period by period so that a run stopped by a failure keeps what it computed.
 
 use crate::life::PeriodRecord;
-use crate::rates::SurfaceWear;
+use crate::rates::{ContactDiagnostics, SurfaceWear};
 use crate::surface::Surface;
 use rolldyn_geometry::angle_bin_centre_rad;
 use rolldyn_output::{Formats, OutputError, TableWriter};
@@ -34,13 +34,7 @@ pub fn period_columns() -> Vec<String> {
         names.push(format!("max_rate_{}_um_per_1000h", s.name()));
     }
     for (kind, _) in crate::rates::CONTACT_KINDS.iter().zip(0..) {
-        for q in [
-            "equivalent_force_n",
-            "mean_sliding_speed_m_s",
-            "contact_fraction",
-            "mean_lambda",
-            "boundary_fraction",
-        ] {
+        for q in ContactDiagnostics::NAMES {
             names.push(format!("{kind}_{q}"));
         }
     }
@@ -64,13 +58,7 @@ fn period_row(p: &PeriodRecord) -> Vec<f64> {
         row.push(p.max_rate_m_s.get(s) * UM_PER_KH);
     }
     for c in &p.contacts {
-        row.extend([
-            c.equivalent_force_n,
-            c.mean_sliding_speed_m_s,
-            c.contact_fraction,
-            c.mean_lambda,
-            c.boundary_fraction,
-        ]);
+        row.extend(c.values());
     }
     row
 }

@@ -3,6 +3,7 @@
 //! at the start of a period, the depths at its end; the last row is the window at the end of
 //! the life), one row per period and wear line.
 
+use crate::rates::ContactDiagnostics;
 use crate::report::{UM, UM_PER_KH, WearReportError};
 use crate::settings::WearMethod;
 use crate::tapered::life::{TaperedLife, WindowRates};
@@ -47,15 +48,8 @@ pub fn window_columns() -> Vec<String> {
     .map(String::from)
     .into();
     for kind in ["cone", "cup", "rib"] {
-        for q in [
-            "equivalent_force_n",
-            "mean_sliding_speed_m_s",
-            "contact_fraction",
-            "mean_lambda",
-            "boundary_fraction",
-            "half_window_force_change",
-            "half_window_sliding_change",
-        ] {
+        let change = ["half_window_force_change", "half_window_sliding_change"];
+        for q in ContactDiagnostics::NAMES.into_iter().chain(change) {
             names.push(format!("{kind}_{q}"));
         }
     }
@@ -139,15 +133,8 @@ fn window_row(
         d.cage_speed_rad_s,
     ];
     for (c, change) in d.contacts.iter().zip(&d.half_window_change) {
-        row.extend([
-            c.equivalent_force_n,
-            c.mean_sliding_speed_m_s,
-            c.contact_fraction,
-            c.mean_lambda,
-            c.boundary_fraction,
-            change.0,
-            change.1,
-        ]);
+        row.extend(c.values());
+        row.extend([change.0, change.1]);
     }
     row
 }
