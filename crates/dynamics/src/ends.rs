@@ -493,6 +493,8 @@ pub(crate) struct EndForce {
     pub end_radius: f64,
     pub body_radius: f64,
     pub regime: EndContactRegime,
+    /// film parameter Λ of the EHL traction (NaN in boundary friction)
+    pub lambda: f64,
 }
 
 /// Lubrication data for the EHL option of the rib contact.
@@ -551,10 +553,10 @@ pub(crate) fn end_force(
     let t_body = sub(v_body, cross(w_frame, dp.point));
     let u = norm(perp(scale(add(t_roll, t_body), 0.5), n));
     let boundary = |regime| match params.friction {
-        EndFriction::Kragelsky => (kragelsky(vs / u.max(1e-3)), regime),
-        _ => (pp.friction.coefficient(vs), regime),
+        EndFriction::Kragelsky => (kragelsky(vs / u.max(1e-3)), regime, f64::NAN),
+        _ => (pp.friction.coefficient(vs), regime, f64::NAN),
     };
-    let (mu, regime) = match (params.friction, lub) {
+    let (mu, regime, lambda) = match (params.friction, lub) {
         (EndFriction::Ehl, Some(l)) if l.reduced_radius.is_finite() => {
             if dp.margin > 0.0 && dp.delta < film_limit_approach(l.film_limit_radius, dp.margin) {
                 let state = ContactState {
@@ -569,7 +571,8 @@ pub(crate) fn end_force(
                     film_thickness_m: None,
                 };
                 let tr = traction(&state, l.model);
-                (tr.coefficient.abs(), EndContactRegime::Elastohydrodynamic)
+                let ehl = EndContactRegime::Elastohydrodynamic;
+                (tr.coefficient.abs(), ehl, tr.lambda)
             } else {
                 boundary(EndContactRegime::Boundary)
             }
@@ -594,6 +597,7 @@ pub(crate) fn end_force(
         end_radius: dp.end_radius,
         body_radius: dp.rho,
         regime,
+        lambda,
     })
 }
 

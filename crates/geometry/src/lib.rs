@@ -34,6 +34,6 @@ pub use ring::{GuidingLand, Rib, RibFace, RibSide, Ring};
 pub use roller::{EndFace, Roller, SliceStack};
 pub use tapered::{
     Arrangement, DoubleRowTaperedBearing, LargeRib, LargeRibContact, RacewayLine, Rz, SmallRibFace,
-    TaperedCage, TaperedRibFace, TaperedRoller, TaperedRow, TaperedSliceStack,
+    TaperedCage, TaperedRibFace, TaperedRoller, TaperedRow, TaperedSliceStack, TaperedWear,
 };
 pub use wear_map::{RacewayWearMap, WearAtAngle, angle_bin_centre_rad, angle_bin_of};

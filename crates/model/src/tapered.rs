@@ -172,6 +172,7 @@ pub(crate) fn build(file: &TaperedModelFile) -> Result<DoubleRowTaperedBearing> 
                 .as_ref()
                 .map_or(0.0, |m| m.inner_ring.si()),
         },
+        wear: Default::default(),
     };
     bearing.roller.validate()?;
     if let Some(section) = &file.roller.profile {

@@ -13,7 +13,9 @@ fn every_example_loads() {
     for dir in [examples(), examples().join("contact")] {
         for entry in std::fs::read_dir(dir).unwrap() {
             let path = entry.unwrap().path();
-            if path.extension().is_some_and(|e| e == "toml") {
+            // sweep files (a `[[variant]]` table) are read by the sweep crate's tests
+            let sweep = std::fs::read_to_string(&path).is_ok_and(|t| t.contains("[[variant]]"));
+            if path.extension().is_some_and(|e| e == "toml") && !sweep {
                 paths.push(path);
             }
         }

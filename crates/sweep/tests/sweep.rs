@@ -168,6 +168,29 @@ fn seed000_table_3_1_sweep_has_21_valid_variants() {
     assert_eq!(sweep.discard.as_deref(), Some("10rev"));
 }
 
+#[test]
+fn the_tapered_load_cases_sweep_has_the_seed_cases() {
+    // seed 000 §3.2.1 (V-09): Fr 118 862 N; Fr 32 568 N + Fa 31 192 N; Fr 118 862 N + 4′
+    let path =
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples/tapered-cassette-cases.toml");
+    let sweep = SweepFile::load(&path).unwrap_or_else(|e| panic!("{e}"));
+    let loads: Vec<(f64, f64, f64)> = sweep
+        .variants
+        .iter()
+        .map(|v| {
+            let model = sweep.model_of(v).unwrap_or_else(|e| panic!("{e}"));
+            let tilt = model.bearing.misalignment().inner_ring_tilt;
+            let op = &model.operating;
+            (op.radial_load.unwrap(), op.axial_load.unwrap(), tilt)
+        })
+        .collect();
+    let arcmin = std::f64::consts::PI / 10_800.0;
+    assert_eq!(loads.len(), 3);
+    assert_eq!((loads[0].0, loads[0].1), (118_862.0, 0.0));
+    assert_eq!((loads[1].0, loads[1].1), (32_568.0, 31_192.0));
+    assert!((loads[2].2 - 4.0 * arcmin).abs() < 1e-15);
+}
+
 /// Options of a single-job run into `out`, without solver settings.
 fn one_job(out: &std::path::Path, resume: bool) -> RunOptions {
     RunOptions {

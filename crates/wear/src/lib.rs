@@ -7,7 +7,8 @@
 //! - [`wear_line`], [`bar_load`]: the mean pressure on a wear line through a contact patch;
 //! - [`recorder`]: the direct and averaged methods as a sink of the dynamics' output steps;
 //! - [`rates`]: wear (depth or rate) on every wear line of every [`surface`];
-//! - [`worn`]: the worn geometry; [`life`]: the life loop; [`settings`]: its knobs.
+//! - [`worn`]: the worn geometry; [`life`]: the life loop; [`settings`]: its knobs;
+//! - [`tapered`]: the same for the double-row tapered bearing (seed 000 §3.2.2–3.2.4).
 
 pub mod averaged;
 pub mod bar_load;
@@ -22,6 +23,7 @@ pub mod report;
 pub mod settings;
 pub mod study;
 pub mod surface;
+pub mod tapered;
 pub mod wear_line;
 pub mod worn;
 pub mod worn_model;

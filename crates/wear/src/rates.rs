@@ -19,6 +19,28 @@ pub struct ContactDiagnostics {
     pub boundary_fraction: f64,
 }
 
+impl ContactDiagnostics {
+    /// Names of [`ContactDiagnostics::values`], for table columns.
+    pub const NAMES: [&str; 5] = [
+        "equivalent_force_n",
+        "mean_sliding_speed_m_s",
+        "contact_fraction",
+        "mean_lambda",
+        "boundary_fraction",
+    ];
+
+    /// The fields in the order of [`ContactDiagnostics::NAMES`].
+    pub fn values(&self) -> [f64; 5] {
+        [
+            self.equivalent_force_n,
+            self.mean_sliding_speed_m_s,
+            self.contact_fraction,
+            self.mean_lambda,
+            self.boundary_fraction,
+        ]
+    }
+}
+
 impl serde::Serialize for ContactDiagnostics {
     /// The fields by name; a value that is not finite follows docs/outputs.md (`null` and a
     /// reason under `"non_finite"`).

@@ -8,6 +8,7 @@ use crate::averaged::AveragedContact;
 use crate::bar_load::bar_slice_forces;
 use crate::bearing_data::WearData;
 use crate::boussinesq_lines::boussinesq_patches;
+use crate::coefficient::WearCoefficient;
 use crate::rates::{ContactDiagnostics, SurfaceWear};
 use crate::settings::{PressureModel, WearMethod, WearSettings};
 use crate::wear_line::{LinePatch, point_patch, slice_patch};
@@ -18,16 +19,16 @@ use std::f64::consts::{PI, TAU};
 /// Samples of one contact kind for the averaged method: the equivalent-force sums, the
 /// force-weighted shape of the load over the wear lines and the contact-time-weighted ln Λ.
 #[derive(Debug, Clone)]
-struct AveragedSums {
-    contact: AveragedContact,
+pub(crate) struct AveragedSums {
+    pub(crate) contact: AveragedContact,
     line_share: Vec<f64>,
     ln_lambda_time: f64,
     lambda_time: f64,
-    boundary_time: f64,
+    pub(crate) boundary_time: f64,
 }
 
 impl AveragedSums {
-    fn new(lines: usize, exponent: f64) -> Self {
+    pub(crate) fn new(lines: usize, exponent: f64) -> Self {
         Self {
             contact: AveragedContact::new(exponent),
             line_share: vec![0.0; lines],
@@ -37,7 +38,15 @@ impl AveragedSums {
         }
     }
 
-    fn add(&mut self, force: f64, speed: f64, dt: f64, lambda: f64, boundary: bool, lines: &[f64]) {
+    pub(crate) fn add(
+        &mut self,
+        force: f64,
+        speed: f64,
+        dt: f64,
+        lambda: f64,
+        boundary: bool,
+        lines: &[f64],
+    ) {
         let loaded = force > 0.0; // false for NaN too
         if !loaded {
             return;
@@ -55,17 +64,38 @@ impl AveragedSums {
     }
 
     /// Mean Λ over the contact time (geometric mean; NaN without film samples).
-    fn mean_lambda(&self) -> f64 {
+    pub(crate) fn mean_lambda(&self) -> f64 {
         (self.ln_lambda_time / self.lambda_time).exp()
     }
 
     /// Whether boundary friction held for most of the contact time.
-    fn mostly_boundary(&self) -> bool {
+    pub(crate) fn mostly_boundary(&self) -> bool {
         self.boundary_time > 0.5 * self.contact.contact_time()
     }
 
+    /// k at the mean Λ — the boundary k when boundary friction held for most of the contact
+    /// time.
+    pub(crate) fn coefficient(&self, coefficient: &WearCoefficient) -> f64 {
+        coefficient.for_contact(self.mean_lambda(), self.mostly_boundary())
+    }
+
+    /// The circular Hertz patch of the equivalent force at reduced radius `radius` and
+    /// k p̄ v̄ on its central line (seed 000 eq. 2.35 before the hardness).
+    pub(crate) fn point_wear(
+        &self,
+        coefficient: &WearCoefficient,
+        radius: f64,
+        modulus: f64,
+    ) -> (LinePatch, f64) {
+        let patch = point_patch(self.contact.equivalent_force(), radius, modulus);
+        let kpv = self.coefficient(coefficient)
+            * patch.mean_pressure_pa
+            * self.contact.mean_sliding_speed();
+        (patch, kpv)
+    }
+
     /// The equivalent force spread over the lines in the recorded load shape.
-    fn equivalent_line_forces(&self) -> Vec<f64> {
+    pub(crate) fn equivalent_line_forces(&self) -> Vec<f64> {
         let total: f64 = self.line_share.iter().sum();
         let qe = self.contact.equivalent_force();
         self.line_share
@@ -298,11 +328,8 @@ impl<'a> WearRecorder<'a> {
                         modulus: f64,
                         given: Option<&[LinePatch]>|
          -> Vec<(usize, f64, LinePatch)> {
-            let k = self
-                .settings
-                .coefficient
-                .for_contact(sums.mean_lambda(), sums.mostly_boundary());
-            let k_v = k * sums.contact.mean_sliding_speed();
+            let k_v =
+                sums.coefficient(&self.settings.coefficient) * sums.contact.mean_sliding_speed();
             match given {
                 Some(patches) => patches
                     .iter()
@@ -376,16 +403,11 @@ impl<'a> WearRecorder<'a> {
         let contact_time = sums.contact.contact_time();
         if contact_time > 0.0 {
             let [radius, on_roller, on_ring] = self.rib_geometry_time.map(|x| x / contact_time);
-            let k = self
-                .settings
-                .coefficient
-                .for_contact(sums.mean_lambda(), sums.mostly_boundary());
-            let patch = point_patch(
-                sums.contact.equivalent_force(),
+            let (patch, kpv) = sums.point_wear(
+                &self.settings.coefficient,
                 radius,
                 d.ends.reduced_modulus_pa,
             );
-            let kpv = k * patch.mean_pressure_pa * sums.contact.mean_sliding_speed();
             w.roller_end = 0.5 * kpv / d.roller_hardness_pa
                 * self.exposure(patch, TAU * on_roller)
                 * contact_time

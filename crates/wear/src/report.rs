@@ -2,16 +2,17 @@
 //! streamed period by period so that a run stopped by a failure keeps what it computed.
 
 use crate::life::PeriodRecord;
-use crate::rates::SurfaceWear;
+use crate::rates::{ContactDiagnostics, SurfaceWear};
 use crate::surface::Surface;
 use rolldyn_geometry::angle_bin_centre_rad;
 use rolldyn_output::{Formats, OutputError, TableWriter};
 use rolldyn_plot::{Field, Labels, PlotError, Series, heat_map, line_plot};
 use std::path::{Path, PathBuf};
 
-const UM: f64 = 1e6;
+/// µm per m
+pub(crate) const UM: f64 = 1e6;
 /// rates are reported in µm per 1000 h
-const UM_PER_KH: f64 = 1e6 * 3.6e6;
+pub(crate) const UM_PER_KH: f64 = 1e6 * 3.6e6;
 
 /// Column names of the periods table.
 pub fn period_columns() -> Vec<String> {
@@ -33,13 +34,7 @@ pub fn period_columns() -> Vec<String> {
         names.push(format!("max_rate_{}_um_per_1000h", s.name()));
     }
     for (kind, _) in crate::rates::CONTACT_KINDS.iter().zip(0..) {
-        for q in [
-            "equivalent_force_n",
-            "mean_sliding_speed_m_s",
-            "contact_fraction",
-            "mean_lambda",
-            "boundary_fraction",
-        ] {
+        for q in ContactDiagnostics::NAMES {
             names.push(format!("{kind}_{q}"));
         }
     }
@@ -63,13 +58,7 @@ fn period_row(p: &PeriodRecord) -> Vec<f64> {
         row.push(p.max_rate_m_s.get(s) * UM_PER_KH);
     }
     for c in &p.contacts {
-        row.extend([
-            c.equivalent_force_n,
-            c.mean_sliding_speed_m_s,
-            c.contact_fraction,
-            c.mean_lambda,
-            c.boundary_fraction,
-        ]);
+        row.extend(c.values());
     }
     row
 }

@@ -23,3 +23,4 @@ pub mod study;
 pub mod sweep;
 pub mod traction;
 pub mod wear;
+mod wear_tapered;

@@ -49,12 +49,30 @@ pub enum MethodArg {
     Averaged,
 }
 
+impl MethodArg {
+    pub fn method(self) -> WearMethod {
+        match self {
+            MethodArg::Direct => WearMethod::Direct,
+            MethodArg::Averaged => WearMethod::Averaged,
+        }
+    }
+}
+
 #[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
 pub enum ExposureArg {
     /// the full contact width 2b (physical)
     Full,
     /// the half-width b as seed 000 eq. (3.1) is printed
     Half,
+}
+
+impl ExposureArg {
+    pub fn width(self) -> ExposureWidth {
+        match self {
+            ExposureArg::Full => ExposureWidth::Full,
+            ExposureArg::Half => ExposureWidth::Half,
+        }
+    }
 }
 
 #[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
@@ -72,15 +90,18 @@ pub struct Args {
     pub model: Option<PathBuf>,
     #[command(flatten)]
     pub operating: OperatingArgs,
-    /// Life to reach (e.g. 25000h).
-    #[arg(long, default_value = "25000h")]
-    pub life: Quantity<Time>,
+    /// Life to reach (e.g. 25000h; default 25000h, a double-row tapered bearing 11429h as seed
+    /// 000 §3.2.4).
+    #[arg(long)]
+    pub life: Option<Quantity<Time>>,
     /// Recalculation period: a time (1905h) or `auto` (starts at 1905 h, halves the period when
     /// a wear rate changes by more than 50 % between periods or reverses its trend).
     #[arg(long, default_value = "1905h")]
     pub period: PeriodArg,
-    #[arg(long, value_enum, default_value = "direct")]
-    pub method: MethodArg,
+    /// Wear method (default direct; a double-row tapered bearing averaged, as seed 000 §3.2.3
+    /// continues after comparing both).
+    #[arg(long, value_enum)]
+    pub method: Option<MethodArg>,
     /// Cage revolutions recorded per period (after --settle discarded ones).
     #[arg(long, default_value_t = 10)]
     pub revolutions: u32,
@@ -102,6 +123,13 @@ pub struct Args {
     /// Stop when any surface is worn this deep (e.g. 0.1mm).
     #[arg(long)]
     pub max_depth: Option<Quantity<Length>>,
+    /// Double-row tapered bearing: dynamics time run and discarded from the seated start before
+    /// each window (default 10ms).
+    #[arg(long)]
+    pub window_settle: Option<Quantity<Time>>,
+    /// Double-row tapered bearing: dynamics time recorded per period (default 20ms).
+    #[arg(long)]
+    pub window: Option<Quantity<Time>>,
     /// Output folder: tables, plots and the worn model (default `out/<model name>-wear`).
     #[arg(long)]
     pub out: Option<PathBuf>,
@@ -115,7 +143,7 @@ pub struct Args {
 
 impl Args {
     fn settings(&self) -> Result<WearSettings, Failure> {
-        let life_s = self.life.si();
+        let life_s = self.life.map_or(25_000.0 * 3600.0, |l| l.si());
         if !(life_s > 0.0 && life_s.is_finite()) {
             return Err(Failure::Input("--life must be positive".into()));
         }
@@ -124,10 +152,7 @@ impl Args {
         }
         let hour = 3600.0;
         let settings = WearSettings {
-            method: match self.method {
-                MethodArg::Direct => WearMethod::Direct,
-                MethodArg::Averaged => WearMethod::Averaged,
-            },
+            method: self.method.unwrap_or(MethodArg::Direct).method(),
             life_s,
             period: match self.period {
                 PeriodArg::Fixed(p) => PeriodControl::Fixed(p),
@@ -135,10 +160,7 @@ impl Args {
             },
             revolutions: self.revolutions,
             settle_revolutions: self.settle,
-            exposure_width: match self.exposure_width {
-                ExposureArg::Full => ExposureWidth::Full,
-                ExposureArg::Half => ExposureWidth::Half,
-            },
+            exposure_width: self.exposure_width.width(),
             seed_literal_hardness: self.seed_literal_hardness,
             pressure_model: match self.pressure {
                 PressureArg::Slices => PressureModel::Slices,
@@ -155,7 +177,7 @@ impl Args {
     }
 }
 
-fn progress_bar(quiet: bool, life_h: f64) -> ProgressBar {
+pub(super) fn progress_bar(quiet: bool, life_h: f64) -> ProgressBar {
     let bar =
         ProgressBar::with_draw_target(Some(life_h.ceil() as u64), ProgressDrawTarget::stderr());
     if quiet {
@@ -168,21 +190,29 @@ fn progress_bar(quiet: bool, life_h: f64) -> ProgressBar {
     bar
 }
 
-pub fn run(args: Args) -> Result<(), Failure> {
-    let model = load_model(args.model.as_deref())?;
-    let settings = args.settings()?;
-    let overrides = args.operating.overrides();
+/// `--out`, or `out/<model file stem>-wear` (`default_name` for the embedded model), created.
+pub(super) fn output_folder(args: &Args, default_name: &str) -> Result<PathBuf, Failure> {
     let name = args
         .model
         .as_deref()
         .and_then(|p| p.file_stem())
-        .map_or("2002834".into(), |s| s.to_string_lossy().into_owned());
-    let dir = out_dir(
+        .map_or(default_name.into(), |s| s.to_string_lossy().into_owned());
+    out_dir(
         &args
             .out
             .clone()
             .unwrap_or_else(|| PathBuf::from(format!("out/{name}-wear"))),
-    )?;
+    )
+}
+
+pub fn run(args: Args) -> Result<(), Failure> {
+    let model = load_model(args.model.as_deref())?;
+    if let rolldyn_geometry::BearingModel::Tapered(_) = model.bearing {
+        return super::wear_tapered::run(&args, &model);
+    }
+    let settings = args.settings()?;
+    let overrides = args.operating.overrides();
+    let dir = output_folder(&args, "2002834")?;
     let bar = progress_bar(args.quiet || args.json, settings.life_s / 3600.0);
     let answer = run_wear(&model, &overrides, &settings, Some(&dir), &mut |p| {
         bar.set_position(p.time_h.round() as u64);

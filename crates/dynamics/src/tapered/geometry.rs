@@ -66,8 +66,13 @@ pub(crate) fn row_geometry(b: &DoubleRowTaperedBearing, k: usize) -> RowGeometry
     let mid = (row.roller_mid.r, row.roller_mid.z);
     let u = (row.roller_axis.r, row.roller_axis.z);
     let rib = &row.large_rib;
-    let rib_point = (rib.point.r, rib.point.z);
     let into_rib = (-rib.normal.r, -rib.normal.z);
+    // the worn rib face recedes along its normal (seed 000 §3.2.2)
+    let worn = b.wear.large_rib;
+    let rib_point = (
+        rib.point.r + worn * into_rib.0,
+        rib.point.z + worn * into_rib.1,
+    );
     let band = (
         rib.point.r + rib.band.0 * rib.tangent.r,
         rib.point.r + rib.band.1 * rib.tangent.r,

@@ -16,6 +16,7 @@
 //! polyamide contacts with constant μ = 0.06 (seed 000 §3.2.1).
 
 mod columns;
+mod contacts;
 mod geometry;
 mod layout;
 mod model;
@@ -24,8 +25,9 @@ mod run;
 mod summary;
 
 pub use columns::{SAMPLE_COLUMNS, sample_row, summary_entries};
+pub use contacts::{ContactRecorder, RibContact, RollerContacts, SliceContacts};
 pub use layout::TaperedLayout;
 pub use model::{TaperedModel, TaperedParameters, end_rib_film_limit_force};
 pub use rhs::{RollerReport, TaperedSystem};
-pub use run::{TaperedRun, TaperedRunSettings, TaperedSample, initial_state, run};
+pub use run::{TaperedRun, TaperedRunSettings, TaperedSample, initial_state, run, run_recorded};
 pub use summary::{TaperedSummary, axial_spectrum, spectrum_peaks, steady_window, summarise};

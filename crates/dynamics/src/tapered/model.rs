@@ -211,8 +211,10 @@ pub fn end_rib_film_limit_force(b: &DoubleRowTaperedBearing, margin: f64) -> f64
 pub(crate) struct TaperedSlices {
     /// axial position of the slice centre from the roller's centre of mass, along `u`, m
     pub x: Vec<f64>,
-    /// perpendicular distance of the generatrix from the axis, `r cos β`, minus the drop, m
-    pub reach: Vec<f64>,
+    /// per raceway (cone, cup): perpendicular distance of the generatrix from the axis,
+    /// `r cos β`, minus the profile drop and the worn depths of roller and raceway at the
+    /// slice (seed 000 §3.2.3: the worn profiles interpolated linearly between the wear lines)
+    pub reach: [Vec<f64>; 2],
     pub length: Vec<f64>,
     /// radius `r` at the slice centre, m
     pub radius: Vec<f64>,
@@ -270,6 +272,21 @@ fn inner_assembly_mass(b: &DoubleRowTaperedBearing, rows: &[RowGeometry; 2]) -> 
 }
 
 impl TaperedModel {
+    /// The bearing the model was built from.
+    pub fn bearing(&self) -> &DoubleRowTaperedBearing {
+        &self.bearing
+    }
+
+    /// Reduced modulus E' of the roller–ring contacts, Pa.
+    pub fn reduced_modulus(&self) -> f64 {
+        self.reduced_modulus
+    }
+
+    /// Reduced radius of the large end on the large rib (axial section, seed 000 §3.2.2), m.
+    pub fn rib_reduced_radius(&self) -> f64 {
+        self.rib_reduced_radius
+    }
+
     /// The traction model of the raceway and rib contacts.
     pub fn traction_model(&self) -> &TractionModel {
         &self.traction
@@ -295,7 +312,16 @@ impl TaperedModel {
         let total: f64 = stack.length.iter().sum();
         let mut slices = TaperedSlices {
             x: stack.position.iter().map(|x| x - x_cm).collect(),
-            reach: roller.generatrix_reach(&stack),
+            reach: [0, 1].map(|race| {
+                roller
+                    .generatrix_reach(&stack)
+                    .iter()
+                    .zip(&stack.position)
+                    .map(|(reach, &x)| {
+                        reach - bearing.wear.roller_at(x) - bearing.wear.raceway_at(race, x)
+                    })
+                    .collect()
+            }),
             length: stack.length.clone(),
             radius: stack.radius.clone(),
             k: [Vec::new(), Vec::new()],
@@ -319,7 +345,8 @@ impl TaperedModel {
         let half = 0.5 * roller.length;
         let chamfer = roller.end_chamfer;
         let large_end = EndGeometry {
-            half_length: half - x_cm,
+            // the worn end face recedes along the axis (seed 000 §3.2.2)
+            half_length: half - x_cm - bearing.wear.large_end,
             radius: 0.5 * roller.large_diameter() - chamfer,
             sphere_curvature: 1.0 / roller.large_end_sphere_radius,
         };

@@ -4,6 +4,7 @@
 //! regime switch), its ends on the pocket faces and its body on the four bar edges of its pocket
 //! (the cage rides on the rollers); then the Newton–Euler equations of every body.
 
+use super::contacts::{RibContact, RollerContacts};
 use super::geometry::HalfPlaneLine;
 use super::layout::TaperedLayout;
 use super::model::TaperedModel;
@@ -50,6 +51,8 @@ pub struct TaperedSystem<'m> {
     pub inner_contact_force: V3,
     wrench: Vec<Wrench>,
     report: bool,
+    /// the opt-in contact record of the last reported evaluation (see [`super::contacts`])
+    pub(crate) contacts: Option<Vec<RollerContacts>>,
 }
 
 impl<'m> TaperedSystem<'m> {
@@ -62,7 +65,16 @@ impl<'m> TaperedSystem<'m> {
             inner_contact_force: [0.0; 3],
             wrench: vec![Wrench::default(); 2 * model.z],
             report: false,
+            contacts: None,
         }
+    }
+}
+
+impl TaperedSystem<'_> {
+    /// Turns on the contact record of every reported evaluation.
+    pub(crate) fn record_contacts(&mut self) {
+        let slices = self.model.slices.x.len();
+        self.contacts = Some(vec![RollerContacts::zeroed(slices); 2 * self.model.z]);
     }
 }
 
@@ -120,6 +132,13 @@ fn evaluate(sys: &mut TaperedSystem, t: f64, y: &[f64], dy: &mut [f64]) {
             force: scale(g, model.m_r),
             moment: [0.0; 3],
         };
+        let mut record = match (&mut sys.contacts, sys.report) {
+            (Some(c), true) => Some(&mut c[j]),
+            _ => None,
+        };
+        if let Some(r) = record.as_deref_mut() {
+            (r.yaw_rad, r.pitch_rad) = yaw_and_pitch(&model.rows[row], &rk);
+        }
         raceways(
             model,
             row,
@@ -127,7 +146,7 @@ fn evaluate(sys: &mut TaperedSystem, t: f64, y: &[f64], dy: &mut [f64]) {
             &inner,
             &mut roller,
             &mut f_inner,
-            &mut report,
+            (&mut report, record.as_deref_mut()),
         );
         ends(
             model,
@@ -137,7 +156,7 @@ fn evaluate(sys: &mut TaperedSystem, t: f64, y: &[f64], dy: &mut [f64]) {
             &cages[row],
             &mut roller,
             (&mut f_inner, &mut cage_wrench[row]),
-            &mut report,
+            (&mut report, record),
         );
         bars(
             model,
@@ -215,7 +234,22 @@ fn body_velocity(body: &BodyKin, p: V3) -> V3 {
     add(body.v, cross(body.omega, sub(p, body.o)))
 }
 
+/// Yaw (skew: the axis out of its axial plane) and pitch (tilt in the axial plane against the
+/// seated axis) of a roller of `geo`, rad.
+fn yaw_and_pitch(geo: &super::geometry::RowGeometry, rk: &RollerKinematics) -> (f64, f64) {
+    let u = scale(rk.a, geo.sigma);
+    let e_rho = [rk.c[0], rk.c[1], 0.0];
+    let e_rho = scale(e_rho, 1.0 / norm(e_rho).max(1e-12));
+    let e_t = cross([0.0, 0.0, 1.0], e_rho);
+    let seated = add(scale(e_rho, geo.u.0), [0.0, 0.0, geo.u.1]);
+    let across = add(scale(e_rho, geo.u.1), [0.0, 0.0, -geo.u.0]);
+    let yaw = dot(u, e_t).clamp(-1.0, 1.0).asin();
+    let pitch = dot(u, across).atan2(dot(u, seated));
+    (yaw, pitch)
+}
+
 /// The slices of one roller on the cone (`race = 0`) and the cup (`race = 1`).
+#[allow(clippy::too_many_arguments)]
 fn raceways(
     model: &TaperedModel,
     row: usize,
@@ -223,7 +257,7 @@ fn raceways(
     inner: &BodyKin,
     roller: &mut Wrench,
     f_inner: &mut V3,
-    report: &mut RollerReport,
+    (report, mut record): (&mut RollerReport, Option<&mut RollerContacts>),
 ) {
     let geo = &model.rows[row];
     let u = scale(rk.a, geo.sigma);
@@ -234,15 +268,20 @@ fn raceways(
         .enumerate()
     {
         let (mut total, mut sliding) = (0.0, 0.0);
+        let mut slices = record.as_deref_mut().map(|r| {
+            let c = if race == 0 { &mut r.cone } else { &mut r.cup };
+            c.clear();
+            c
+        });
         for i in 0..s.x.len() {
             let centre = axpy(rk.c, s.x[i], u);
             let (rho, zeta, e_rho) = half_plane(body, centre);
-            let delta = s.reach[i] - line.distance(rho, zeta);
+            let delta = s.reach[race][i] - line.distance(rho, zeta);
             if delta <= 0.0 {
                 continue;
             }
             let n = contact_normal(line, e_rho, body.axis);
-            let p = axpy(centre, -s.reach[i], n);
+            let p = axpy(centre, -s.reach[race][i], n);
             let v_roll = add(rk.v, cross(rk.w, sub(p, rk.c)));
             let v_ring = body_velocity(body, p);
             let v_rel = sub(v_roll, v_ring);
@@ -260,12 +299,13 @@ fn raceways(
             );
             let u_roll = norm(perp(mean, n));
             let ring_curvature = line_curvature(model, race, rho);
+            let reduced_radius = 1.0 / (model.half_angle.cos() / s.radius[i] + ring_curvature);
             let state = ContactState {
                 normal_force_n: q,
                 geometry: ContactGeometry::Line {
                     length_m: s.length[i],
                 },
-                reduced_radius_m: 1.0 / (model.half_angle.cos() / s.radius[i] + ring_curvature),
+                reduced_radius_m: reduced_radius,
                 reduced_modulus_pa: model.reduced_modulus,
                 rolling_speed_m_s: u_roll,
                 sliding_speed_m_s: vs,
@@ -277,7 +317,16 @@ fn raceways(
                 roughness_ra_m: model.roughness,
                 film_thickness_m: None,
             };
-            let mu = traction(&state, &model.traction).coefficient.abs();
+            let tr = traction(&state, &model.traction);
+            let mu = tr.coefficient.abs();
+            if let Some(c) = slices.as_deref_mut() {
+                c.force_n[i] = q;
+                c.sliding_m_s[i] = vs;
+                c.lambda[i] = tr.lambda;
+                c.half_width_m[i] = tr.half_width_m;
+                c.reduced_radius_m[i] = reduced_radius;
+                c.ring_radius_m[i] = rho;
+            }
             let mut f = scale(n, q);
             if vs > 0.0 {
                 f = axpy(f, -mu * q / vs, vt);
@@ -328,8 +377,11 @@ fn ends(
     cage: &CageKin,
     roller: &mut Wrench,
     (f_inner, cage_wrench): (&mut V3, &mut Wrench),
-    report: &mut RollerReport,
+    (report, mut record): (&mut RollerReport, Option<&mut RollerContacts>),
 ) {
+    if let Some(r) = record.as_deref_mut() {
+        r.large_rib = RibContact::default();
+    }
     let geo = &model.rows[row];
     let p = &model.parameters;
     let lub = EndLubrication {
@@ -376,6 +428,17 @@ fn ends(
                 report.large_rib = ef.normal;
                 report.rib_sliding = ef.sliding;
                 report.rib_ehl = ef.regime == crate::ends::EndContactRegime::Elastohydrodynamic;
+                if let Some(r) = record.as_deref_mut() {
+                    r.large_rib = RibContact {
+                        force_n: ef.normal,
+                        sliding_m_s: ef.sliding,
+                        lambda: ef.lambda,
+                        spot_radius_m: (model.rib_reduced_radius * ef.delta).sqrt(),
+                        elastohydrodynamic: report.rib_ehl,
+                        end_radius_m: ef.end_radius,
+                        rib_radius_m: ef.body_radius,
+                    };
+                }
             }
             1 => report.small_rib = ef.normal,
             _ => {}

@@ -1,6 +1,7 @@
 //! Running the tapered model: the seated start, the integration with samples at a fixed
 //! interval, and the run's summary (seed 000 §3.2.1 observables).
 
+use super::contacts::ContactRecorder;
 use super::layout::TaperedLayout;
 use super::model::TaperedModel;
 use super::rhs::{RollerReport, TaperedSystem};
@@ -201,6 +202,17 @@ fn error_scales(model: &TaperedModel) -> (Vec<f64>, Vec<f64>) {
 pub fn run(
     model: &TaperedModel,
     settings: &TaperedRunSettings,
+    progress: impl FnMut(f64),
+) -> Result<TaperedRun, DynError> {
+    run_recorded(model, settings, None, progress)
+}
+
+/// [`run`], handing every sample with its contact record to `recorder` (the record is only
+/// computed when a recorder is given).
+pub fn run_recorded(
+    model: &TaperedModel,
+    settings: &TaperedRunSettings,
+    mut recorder: Option<&mut dyn ContactRecorder>,
     mut progress: impl FnMut(f64),
 ) -> Result<TaperedRun, DynError> {
     let y0 = initial_state(model, settings.row1_offset_pitch);
@@ -208,6 +220,9 @@ pub fn run(
     let set = settings.integrator;
     let mut dp = stepper(model, y0, scale_v, rel, &set);
     let mut sys = TaperedSystem::new(model);
+    if recorder.is_some() {
+        sys.record_contacts();
+    }
     let lay = sys.layout;
     let mut samples = Vec::new();
     let mut next = 0.0;
@@ -230,7 +245,11 @@ pub fn run(
         } else {
             dp.interpolate(next, &mut ybuf);
         }
-        samples.push(sample(model, &lay, next, &ybuf, &sys.rollers));
+        let current = sample(model, &lay, next, &ybuf, &sys.rollers);
+        if let (Some(r), Some(contacts)) = (recorder.as_deref_mut(), &sys.contacts) {
+            r.record(&current, contacts);
+        }
+        samples.push(current);
         progress(next);
         next += settings.sample_interval_s;
     }

@@ -4,6 +4,7 @@ use super::cage::TaperedCage;
 use super::rib::{LargeRib, end_contact_angle};
 use super::roller::TaperedRoller;
 use super::row::TaperedRow;
+use super::wear::TaperedWear;
 use crate::bearing::Misalignment;
 use crate::error::{GeometryError, require_positive};
 use crate::material::Material;
@@ -53,6 +54,8 @@ pub struct DoubleRowTaperedBearing {
     pub inner_material: Material,
     pub outer_material: Material,
     pub misalignment: Misalignment,
+    /// Wear accumulated so far (unworn: the default), seed 000 §3.2.2–3.2.4.
+    pub wear: TaperedWear,
 }
 
 /// Largest accepted apex mismatch [m]: the derived geometry closes to round-off (≈ 1e-15 m), so

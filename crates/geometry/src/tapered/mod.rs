@@ -9,6 +9,7 @@ mod plane;
 mod rib;
 mod roller;
 mod row;
+mod wear;
 
 pub use bearing::{Arrangement, DoubleRowTaperedBearing};
 pub use cage::TaperedCage;
@@ -16,6 +17,7 @@ pub use plane::{Rz, axis_crossing};
 pub use rib::{LargeRib, TaperedRibFace, end_contact_angle};
 pub use roller::{DEFAULT_TAPERED_SLICES, TaperedRoller, TaperedSliceStack};
 pub use row::{LargeRibContact, RacewayLine, RowFrame, SmallRibFace, TaperedRow};
+pub use wear::TaperedWear;
 
 #[cfg(test)]
 mod tests;

@@ -64,6 +64,7 @@ fn seed_bearing(arrangement: Arrangement) -> DoubleRowTaperedBearing {
         inner_material: Material::bearing_steel(),
         outer_material: Material::bearing_steel(),
         misalignment: Misalignment::default(),
+        wear: Default::default(),
     }
 }
 
