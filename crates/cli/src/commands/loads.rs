@@ -35,7 +35,8 @@ pub struct Args {
     #[arg(long, allow_hyphen_values = true)]
     pub moment: Option<Quantity<Moment>>,
     /// Angular offset of row 1's rollers against row 0's as a fraction of the roller pitch,
-    /// 0 ≤ f < 1 (0: a roller of each row on the load line; 0.5: the dynamics' settled state).
+    /// 0 ≤ f < 1 (0: a roller of each row on the load line; 0.5: the seed's stable state, one
+    /// roller on the load line in one row and two straddling it in the other).
     #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
     pub row_offset: f64,
     /// Print the result as JSON.
@@ -136,7 +137,9 @@ fn load_case(args: &Args, model: &rolldyn_model::Model) -> Result<TaperedLoadCas
                     t.to_degrees() * 60.0
                 )));
             }
-            if t == 0.0 {
+            // an explicit --misalignment imposes the tilt, 0 included (as the dynamics does);
+            // without it, a model without misalignment leaves the ring free of moment
+            if t == 0.0 && given.is_none() {
                 TiltCondition::Moment([0.0; 2])
             } else {
                 TiltCondition::Imposed(t)
