@@ -110,7 +110,7 @@ fn write_outputs(dir: &Path, run: &TaperedRun) -> Result<(), Failure> {
     };
     let ms = 1e3;
     let um = 1e6;
-    let plots: [(&str, &str, &str, Vec<(String, Vec<(f64, f64)>)>); 4] = [
+    let plots: [Plot; 4] = [
         (
             "inner_ring_axial.svg",
             "Inner-ring axial displacement",
