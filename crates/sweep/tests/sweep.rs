@@ -171,8 +171,8 @@ fn seed000_table_3_1_sweep_has_21_valid_variants() {
 #[test]
 fn the_tapered_load_cases_sweep_has_the_seed_cases() {
     // seed 000 §3.2.1 (V-09): Fr 118 862 N; Fr 32 568 N + Fa 31 192 N; Fr 118 862 N + 4′
-    let path =
-        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples/tapered-cassette-cases.toml");
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("../../examples/tapered-cassette-cases.toml");
     let sweep = SweepFile::load(&path).unwrap_or_else(|e| panic!("{e}"));
     let loads: Vec<(f64, f64, f64)> = sweep
         .variants
