@@ -115,7 +115,10 @@ pub struct TaperedSummary {
     large_rib_contact_angle_rad: f64,
     /// axial distance from the roller mid-point to where the rib face meets the raceway line
     large_rib_face_base_from_roller_mid_m: f64,
+    /// axial section (seed 000 §3.2.2)
     end_rib_reduced_curvature_per_m: f64,
+    /// along the circumference, with the rib face's Meusnier curvature (theory §12.1)
+    end_rib_circumferential_reduced_curvature_per_m: f64,
     small_rib_gap_m: f64,
     slices: usize,
     roller: Mass,
@@ -170,6 +173,8 @@ impl TaperedSummary {
             large_rib_face_base_from_roller_mid_m: (rib.face_base.z - row.roller_mid.z).abs(),
             end_rib_reduced_curvature_per_m: 1.0 / r.large_end_sphere_radius
                 - b.large_rib.face.curvature(),
+            end_rib_circumferential_reduced_curvature_per_m: 1.0 / r.large_end_sphere_radius
+                + rib.circumferential_curvature(),
             small_rib_gap_m: b.small_rib_gap,
             slices: r.slice_count,
             roller: r.mass_properties().into(),
@@ -430,6 +435,13 @@ pub fn describe_tapered(t: &TaperedSummary) -> Vec<String> {
     line(
         "end–rib reduced curvature",
         format!("{:.4} 1/m", t.end_rib_reduced_curvature_per_m),
+    );
+    line(
+        "  along the circumference",
+        format!(
+            "{:.4} 1/m",
+            t.end_rib_circumferential_reduced_curvature_per_m
+        ),
     );
     line("small-rib gap", mm(t.small_rib_gap_m));
     line("slices per roller", t.slices.to_string());
