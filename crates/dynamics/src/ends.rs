@@ -503,8 +503,9 @@ pub(crate) struct EndLubrication<'a> {
     /// reduced radius of the end/face pair (∞ = conformal or edge: no film model), m
     pub reduced_radius: f64,
     /// radius `R` of the film criterion's spot `√(R δ)` toward the nearest face edge
-    /// ([`film_limit_approach`]): the reduced radius for a circular spot, `b²/δ` of the Hertz
-    /// ellipse for an elliptical one, m
+    /// ([`film_limit_approach`]): the reduced radius for a circular spot; for the tapered
+    /// rib's elliptical spot the radius that puts the ellipse's axes at their edges
+    /// (`crate::tapered::model::end_rib_film_limit_radius`), m
     pub film_limit_radius: f64,
     pub reduced_modulus: f64,
     pub roughness: [f64; 2],
