@@ -46,6 +46,12 @@ pub enum DynError {
     },
     /// A checkpoint could not be read or does not belong to this simulation.
     Checkpoint(String),
+    /// The caller's progress callback asked to stop (e.g. Ctrl-C in Python); the state is the
+    /// last accepted one.
+    Interrupted {
+        /// simulated time reached, s
+        time_s: f64,
+    },
 }
 
 impl fmt::Display for DynError {
@@ -82,6 +88,7 @@ impl fmt::Display for DynError {
                 "step budget exhausted after {steps} steps at t = {time_s:.9} s"
             ),
             DynError::Checkpoint(w) => write!(f, "checkpoint: {w}"),
+            DynError::Interrupted { time_s } => write!(f, "interrupted at t = {time_s:.9} s"),
         }
     }
 }

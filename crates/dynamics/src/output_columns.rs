@@ -415,3 +415,30 @@ mod tests {
         assert_eq!((inner, outer), (fields, fields));
     }
 }
+
+/// The three tables of a run kept in memory, row after row (row-major, the columns of
+/// [`BEARING_COLUMNS`], [`ROLLER_COLUMNS`] and [`REVOLUTION_COLUMNS`]): the `--out` tables for a
+/// caller that wants them as arrays (the Python package).
+#[derive(Debug, Clone, Default)]
+pub struct MemoryTables {
+    pub bearing: Vec<f64>,
+    pub rollers: Vec<f64>,
+    pub revolutions: Vec<f64>,
+    row: Vec<f64>,
+}
+
+impl crate::output::OutputSink for MemoryTables {
+    fn sample(&mut self, _t: f64, s: &Snapshot) {
+        bearing_row(s, &mut self.row);
+        self.bearing.extend_from_slice(&self.row);
+        for j in 0..s.rollers.azimuth_rad.len() {
+            roller_row(s, j, &mut self.row);
+            self.rollers.extend_from_slice(&self.row);
+        }
+    }
+
+    fn revolution(&mut self, v: &RevolutionSummary) {
+        revolution_row(v, &mut self.row);
+        self.revolutions.extend_from_slice(&self.row);
+    }
+}

@@ -3,6 +3,7 @@
 use crate::checkpoint::{Reader, Writer, fnv1a};
 use crate::conditions::OperatingConditions;
 use crate::error::DynError;
+use std::ops::ControlFlow;
 use crate::initial::{
     InitialState, RollerStart, StaticSolution, pure_rolling_spin, static_equilibrium,
 };
@@ -332,6 +333,21 @@ impl Simulation {
         sink: &mut dyn OutputSink,
         progress: &mut dyn FnMut(f64),
     ) -> Result<RunSummary, DynError> {
+        self.run_until_interruptible(t_end, sink, &mut |t| {
+            progress(t);
+            ControlFlow::Continue(())
+        })
+    }
+
+    /// [`Simulation::run_until`] whose `progress(t)`, called after every accepted step, may stop
+    /// the run: `ControlFlow::Break` ends it with [`DynError::Interrupted`] at the last accepted
+    /// state (the same steps as an uninterrupted run up to there).
+    pub fn run_until_interruptible(
+        &mut self,
+        t_end: f64,
+        sink: &mut dyn OutputSink,
+        progress: &mut dyn FnMut(f64) -> ControlFlow<()>,
+    ) -> Result<RunSummary, DynError> {
         if !t_end.is_finite() {
             return Err(DynError::InvalidInput("end time must be finite".into()));
         }
@@ -346,7 +362,7 @@ impl Simulation {
         &mut self,
         t_end: f64,
         sink: &mut dyn OutputSink,
-        progress: &mut dyn FnMut(f64),
+        progress: &mut dyn FnMut(f64) -> ControlFlow<()>,
     ) -> Result<(), DynError> {
         let mut steps: u64 = 0;
         // samples still inside the last accepted step (after a resume or a previous call)
@@ -410,7 +426,9 @@ impl Simulation {
             }
             self.after_step(self.ig.t() - t_before, sink);
             self.emit_samples(t_end, sink);
-            progress(self.ig.t());
+            if progress(self.ig.t()).is_break() {
+                return Err(DynError::Interrupted { time_s: self.ig.t() });
+            }
         }
         Ok(())
     }

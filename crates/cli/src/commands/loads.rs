@@ -58,7 +58,7 @@ struct Report<'a> {
 }
 
 pub fn run(args: Args) -> Result<(), Failure> {
-    let model = rolldyn_model::load(&args.model)?;
+    let model = crate::output::load_model(Some(&args.model))?;
     let BearingModel::Tapered(bearing) = &model.bearing else {
         return Err(Failure::Input(format!(
             "{}: bearing.kind: `loads` needs a double-row tapered bearing; the load distribution of a cylindrical bearing is part of `rolldyn skid`",

@@ -17,6 +17,7 @@ use rolldyn_output::{
 use rolldyn_plot::{Labels, Series, line_plot};
 use rolldyn_units::{Quantity, Time};
 use serde::Serialize;
+use std::ops::ControlFlow;
 use std::path::{Path, PathBuf};
 use std::str::FromStr;
 
@@ -439,22 +440,26 @@ impl OutputSink for FileSink {
     }
 }
 
-/// Forwards to an optional file sink (so the run is the same with or without `--out`) — every
-/// `thin`-th sample of the grid `step`, when the cage-load recorder needs a finer grid — and to
-/// an optional cage-load recorder.
-struct Sinks {
+/// Forwards to an optional file sink (so the run is the same with or without `--out`) and an
+/// observer's tables — every `thin`-th sample of the grid `step`, when the cage-load recorder
+/// needs a finer grid — and to an optional cage-load recorder.
+struct Sinks<'a> {
     files: Option<FileSink>,
     loads: Option<CageLoadRecorder>,
+    observer: Option<&'a mut dyn OutputSink>,
     step: f64,
     thin: u64,
 }
 
-impl OutputSink for Sinks {
+impl OutputSink for Sinks<'_> {
     fn sample(&mut self, t: f64, s: &Snapshot) {
-        if let Some(f) = &mut self.files
-            && ((t / self.step).round() as u64).is_multiple_of(self.thin)
-        {
-            f.sample(t, s);
+        if ((t / self.step).round() as u64).is_multiple_of(self.thin) {
+            if let Some(f) = &mut self.files {
+                f.sample(t, s);
+            }
+            if let Some(o) = &mut self.observer {
+                o.sample(t, s);
+            }
         }
         if let Some(r) = &mut self.loads {
             r.sample(t, s);
@@ -463,6 +468,9 @@ impl OutputSink for Sinks {
     fn revolution(&mut self, v: &RevolutionSummary) {
         if let Some(f) = &mut self.files {
             f.revolution(v);
+        }
+        if let Some(o) = &mut self.observer {
+            o.revolution(v);
         }
         if let Some(r) = &mut self.loads {
             r.revolution(v);
@@ -473,9 +481,15 @@ impl OutputSink for Sinks {
 /// The sampling of a run: the step of the dynamics' output grid and every how many samples the
 /// `--out` tables take one (1 without `--cage-loads`; else the grid is refined to at least four
 /// samples per 2° load set).
-fn sampling(args: &Args, output_step: f64, revolution: Option<f64>) -> Result<(f64, u64), Failure> {
+fn sampling(
+    args: &Args,
+    output_step: f64,
+    revolution: Option<f64>,
+    observed: bool,
+) -> Result<(f64, u64), Failure> {
+    let tables = args.out.is_some() || observed;
     let Some(path) = &args.cage_loads else {
-        return Ok((if args.out.is_some() { output_step } else { 0.0 }, 1));
+        return Ok((if tables { output_step } else { 0.0 }, 1));
     };
     let period = revolution.ok_or_else(|| {
         Failure::Input(format!(
@@ -484,7 +498,7 @@ fn sampling(args: &Args, output_step: f64, revolution: Option<f64>) -> Result<(f
         ))
     })?;
     let fine = export_output_step(std::f64::consts::TAU / period, 4.0);
-    if args.out.is_none() {
+    if !tables {
         return Ok((fine, 1));
     }
     let thin = (output_step / fine).ceil().max(1.0);
@@ -526,7 +540,7 @@ fn write_cage_loads(
 
 /// A kind of state component and its share of the steps it limited.
 #[derive(Serialize)]
-pub(crate) struct StepLimit {
+pub struct StepLimit {
     component: String,
     share: f64,
 }
@@ -589,7 +603,28 @@ impl Duration {
     }
 }
 
+/// What a caller of [`run_observed`] sees of a run besides its answer.
+pub struct Observer<'a> {
+    /// Receives the samples and revolutions of the `--out` tables (the run then samples at
+    /// `--output-step` even without `--out`).
+    pub tables: Option<&'a mut dyn OutputSink>,
+    /// Called with the simulated time and the end time (s) after every accepted step; `Break`
+    /// stops the run ([`rolldyn_dynamics::DynError::Interrupted`]).
+    pub progress: &'a mut dyn FnMut(f64, f64) -> ControlFlow<()>,
+}
+
 pub fn run(args: Args) -> Result<(), Failure> {
+    run_observed(
+        args,
+        Observer {
+            tables: None,
+            progress: &mut |_, _| ControlFlow::Continue(()),
+        },
+    )
+}
+
+/// [`run`], with the tables and the progress also handed to `observer`.
+pub fn run_observed(args: Args, observer: Observer<'_>) -> Result<(), Failure> {
     let model = load_model(args.model.as_deref())?;
     if let rolldyn_geometry::BearingModel::Tapered(_) = &model.bearing {
         return super::simulate_tapered::run_tapered(&args, &model);
@@ -615,7 +650,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
         }
         (None, _) => None,
     };
-    let (grid_step, thin) = sampling(&args, output_step, period)?;
+    let (grid_step, thin) = sampling(&args, output_step, period, observer.tables.is_some())?;
     let (mut sim, revolution) = prepare(
         &model,
         &args.operating.overrides(),
@@ -650,15 +685,19 @@ pub fn run(args: Args) -> Result<(), Failure> {
             .cage_loads
             .as_ref()
             .map(|_| CageLoadRecorder::default()),
+        observer: observer.tables,
         step: grid_step,
         thin,
     };
     let bar = progress_bar(args.quiet, t_end);
-    let mut report = |t: f64| bar.set_position((1000.0 * t / t_end).min(1000.0) as u64);
+    let mut report = |t: f64| {
+        bar.set_position((1000.0 * t / t_end).min(1000.0) as u64);
+        (observer.progress)(t, t_end)
+    };
     let mut result = Ok(sim.summary());
     while sim.time() < t_end && result.is_ok() {
         let target = (sim.time() + chunk).min(t_end);
-        result = sim.run_until(target, &mut sinks, &mut report);
+        result = sim.run_until_interruptible(target, &mut sinks, &mut report);
         if let (Some(path), Ok(_)) = (&args.checkpoint, &result) {
             let mut note = Vec::new();
             if let Some(files) = &mut sinks.files {

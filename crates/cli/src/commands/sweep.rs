@@ -31,6 +31,14 @@ pub struct Args {
     /// overrides, duration, solver settings, program version); rerun the others.
     #[arg(long)]
     pub resume: bool,
+    /// Run the variants but leave `summary.*` alone: for shards running at the same time (a
+    /// Slurm array, Dask tasks), collected afterwards with `--collect-only`.
+    #[arg(long, conflicts_with = "collect_only")]
+    pub no_collect: bool,
+    /// Run nothing: collect the variants stored in the output folder into `summary.*` (a stored
+    /// result whose inputs changed is marked stale).
+    #[arg(long)]
+    pub collect_only: bool,
     /// No per-variant progress lines.
     #[arg(long)]
     pub quiet: bool,
@@ -390,9 +398,16 @@ pub fn run(args: Args) -> Result<(), Failure> {
         resume: args.resume,
         settings: settings(analysis, duration, &wear_settings, &fatigue_settings),
     };
-    let outcomes = run_sweep(&sweep, &options, &analyse, &progress)
-        .map_err(|e| Failure::Run(e.to_string()))?;
-    let collected = collect(&sweep, &options).map_err(|e| Failure::Run(e.to_string()))?;
+    let outcomes = if args.collect_only {
+        Vec::new()
+    } else {
+        run_sweep(&sweep, &options, &analyse, &progress).map_err(|e| Failure::Run(e.to_string()))?
+    };
+    let collected = if args.no_collect {
+        0
+    } else {
+        collect(&sweep, &options).map_err(|e| Failure::Run(e.to_string()))?
+    };
     let failed = outcomes.iter().filter(|o| o.error.is_some()).count();
     let changed: Vec<&str> = outcomes
         .iter()
@@ -407,11 +422,17 @@ pub fn run(args: Args) -> Result<(), Failure> {
             changed.join(", ")
         )
     };
+    let collected = match args.no_collect {
+        true => "not collected (--no-collect)".to_string(),
+        false => format!(
+            "{collected} collected in {}",
+            out_dir.join("summary.csv").display()
+        ),
+    };
     println!(
-        "{}: ran {} of {total} variants ({failed} failed{changed}); {collected} collected in {}",
+        "{}: ran {} of {total} variants ({failed} failed{changed}); {collected}",
         args.sweep.display(),
         outcomes.len(),
-        out_dir.join("summary.csv").display()
     );
     if failed > 0 && failed == outcomes.len() {
         return Err(Failure::Run(
