@@ -72,10 +72,21 @@ def flags(**options: Any) -> list[str]:
     return args
 
 
+EMBEDDED = "<embedded 2002834.toml>"
+
+
+def model_args(model) -> list[str]:
+    """The model-file argument of a command: the model's file, so that the answers name it as
+    the command line's do (the model itself, overrides applied, is handed over in memory)."""
+    if model is None or model.source == EMBEDDED:
+        return []
+    return [model.source]
+
+
 def answer(command: list[str], model=None, **options: Any) -> dict:
-    """The JSON answer of `rolldyn <command> --json <flags>`, with `model` (a `rolldyn.Model`) in
-    place of the model file."""
-    args = command + flags(**options) + ["--json"]
+    """The JSON answer of `rolldyn <command> [MODEL] <flags> --json`, with `model` (a
+    `rolldyn.Model`) in place of the model file."""
+    args = command + model_args(model) + flags(**options) + ["--json"]
     text = native(_native.answer, args, None if model is None else model._native)
     if text is None:
         raise RunError(f"rolldyn {command[0]} gave no answer")

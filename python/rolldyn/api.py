@@ -15,7 +15,7 @@ import numpy as np
 import pandas as pd
 
 from . import _native
-from ._commands import answer, flags, native
+from ._commands import answer, flags, model_args, native
 
 PathLike = Union[str, "os.PathLike[str]"]
 
@@ -126,8 +126,8 @@ def simulate(
     none: give ``out=`` for its table).
     """
     model = model if model is not None else load_model()
-    args = ["simulate", "--quiet", "--json"] + flags(
-        duration=duration, speed=speed, radial_load=radial_load, **options
+    args = ["simulate"] + model_args(model) + flags(
+        duration=duration, speed=speed, radial_load=radial_load, quiet=True, json=True, **options
     )
     text, raw = native(_native.simulate, args, model._native, tables, progress)
     run = Run(summary=json.loads(text), model=model)
@@ -153,7 +153,7 @@ def check(model: Optional[Model] = None, **options: Any) -> dict:
 
 def loads(model: Model, **options: Any) -> dict:
     """Quasi-static load distribution of a double-row tapered bearing (`rolldyn loads`)."""
-    return answer(["loads", model.source], model, **options)
+    return answer(["loads"], model, **options)
 
 
 @dataclass
@@ -215,7 +215,7 @@ def wear(model: Optional[Model] = None, **options: Any) -> dict:
     """Archard wear over the bearing's life, fed back into the geometry each period
     (`rolldyn wear`): ``life``, ``period``, ``method``, ``pressure``, ``revolutions``, ``out``
     (default ``out/<model>-wear``), …"""
-    return answer(["wear", "--quiet"], model if model is not None else load_model(), **options)
+    return answer(["wear"], model if model is not None else load_model(), quiet=True, **options)
 
 
 def fatigue(model: Optional[Model] = None, **options: Any) -> dict:
