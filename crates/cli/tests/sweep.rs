@@ -181,3 +181,29 @@ fn discard_leaves_the_first_revolutions_out_of_the_summary() {
         );
     }
 }
+
+#[test]
+fn shards_without_collection_then_one_collection_equal_a_whole_sweep() {
+    let dir = scratch("shards");
+    let file = dir.join("loads.toml");
+    write_sweep(
+        &file,
+        "analysis = \"skid\"",
+        &[("light", "104 N"), ("medium", "300 N"), ("heavy", "687 N")],
+    );
+    let out = dir.join("sharded");
+    for shard in ["1/3", "2/3", "3/3"] {
+        let ran = sweep(&file, &out, &["--shard", shard, "--no-collect"]);
+        assert!(String::from_utf8_lossy(&ran.stdout).contains("not collected"));
+        assert!(!out.join("summary.csv").exists(), "shard {shard} collected");
+    }
+    let collected = sweep(&file, &out, &["--collect-only"]);
+    assert!(String::from_utf8_lossy(&collected.stdout).contains("ran 0 of 3"));
+    let whole = dir.join("whole");
+    sweep(&file, &whole, &[]);
+    assert_eq!(
+        summary_without_wall_time(&out),
+        summary_without_wall_time(&whole)
+    );
+    std::fs::remove_dir_all(dir).ok();
+}
