@@ -123,7 +123,7 @@ def simulate(
     `progress(fraction, simulated_time_s)` is called every 0.1 s of wall time; the GIL is released
     while the run goes on, and Ctrl-C stops it at its last accepted step (KeyboardInterrupt).
     With `tables` the run keeps its time series in memory (a double-row tapered bearing keeps
-    none: give ``out=`` for its table).
+    none: give ``out=`` for its table, ``tapered.csv``).
     """
     model = model if model is not None else load_model()
     args = ["simulate"] + model_args(model) + flags(

@@ -112,3 +112,22 @@ def test_wear_equals_the_command_line(tmp_path):
 def test_fatigue_equals_the_command_line():
     python = rolldyn.fatigue(revolutions=1)
     assert without_wall_times(python) == without_wall_times(cli_json("fatigue", "--revolutions", "1"))
+
+
+def test_a_tapered_run_equals_the_command_line():
+    model = rolldyn.load_model("examples/tapered-cassette.toml")
+    seen = []
+    run = rolldyn.simulate(model, duration="1ms", progress=lambda f, t: seen.append(f))
+    expected = cli_json("simulate", "examples/tapered-cassette.toml", "--duration", "1ms")
+    assert without_wall_times(run.summary) == without_wall_times(expected)
+    assert run.bearing is None
+
+
+def test_every_plot_helper_draws():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    run = rolldyn.simulate(duration="1rev")
+    for plot in (run.plot_cage_speed, run.plot_cage_slip, run.plot_cage_orbit, run.plot_roller_forces):
+        ax = plot()
+        assert ax.lines and all(len(line.get_xdata()) > 0 for line in ax.lines), plot.__name__

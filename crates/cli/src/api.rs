@@ -45,7 +45,12 @@ fn in_call(
     model: Option<rolldyn_model::Model>,
     command: impl FnOnce() -> Result<(), Failure>,
 ) -> Result<Option<serde_json::Value>, Failure> {
-    CALL.with(|c| *c.borrow_mut() = Some(Call { model, answer: None }));
+    CALL.with(|c| {
+        *c.borrow_mut() = Some(Call {
+            model,
+            answer: None,
+        })
+    });
     let result = command();
     let call = CALL.with(|c| c.borrow_mut().take());
     result.map(|()| call.and_then(|c| c.answer))
@@ -81,7 +86,7 @@ pub(crate) fn given_model() -> Option<rolldyn_model::Model> {
 }
 
 /// [`answer`] for `simulate` (`args` start with `"simulate"`), with its tables and progress
-/// handed to `observer` (a tapered bearing's run reports neither).
+/// handed to `observer` (a tapered bearing's run hands over no tables).
 pub fn simulate(
     args: &[String],
     model: Option<rolldyn_model::Model>,
@@ -90,6 +95,8 @@ pub fn simulate(
     let crate::Command::Simulate(simulate) = parse(args)? else {
         return Err(Failure::Input("expected the arguments of simulate".into()));
     };
-    in_call(model, || crate::commands::simulate::run_observed(simulate, observer))?
-        .ok_or_else(|| Failure::Run("simulate gave no answer (give --json)".into()))
+    in_call(model, || {
+        crate::commands::simulate::run_observed(simulate, observer)
+    })?
+    .ok_or_else(|| Failure::Run("simulate gave no answer (give --json)".into()))
 }

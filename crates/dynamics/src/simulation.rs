@@ -3,7 +3,6 @@
 use crate::checkpoint::{Reader, Writer, fnv1a};
 use crate::conditions::OperatingConditions;
 use crate::error::DynError;
-use std::ops::ControlFlow;
 use crate::initial::{
     InitialState, RollerStart, StaticSolution, pure_rolling_spin, static_equilibrium,
 };
@@ -27,6 +26,7 @@ use crate::vec3::{V3, cross, dot, sub, unit_or};
 use rolldyn_geometry::CylindricalRollerBearing;
 use rolldyn_lubrication::{SlipSearch, scuffing::scuffing_check};
 use std::f64::consts::TAU;
+use std::ops::ControlFlow;
 use std::time::Instant;
 
 struct Sys<'a> {
@@ -427,7 +427,9 @@ impl Simulation {
             self.after_step(self.ig.t() - t_before, sink);
             self.emit_samples(t_end, sink);
             if progress(self.ig.t()).is_break() {
-                return Err(DynError::Interrupted { time_s: self.ig.t() });
+                return Err(DynError::Interrupted {
+                    time_s: self.ig.t(),
+                });
             }
         }
         Ok(())

@@ -18,8 +18,18 @@ use rolldyn_dynamics::output_columns::{
 use std::ops::ControlFlow;
 use std::time::{Duration, Instant};
 
-create_exception!(_native, InputError, PyValueError, "Bad input: a model key, a file or an argument.");
-create_exception!(_native, RunError, PyRuntimeError, "An analysis failed while running.");
+create_exception!(
+    _native,
+    InputError,
+    PyValueError,
+    "Bad input: a model key, a file or an argument."
+);
+create_exception!(
+    _native,
+    RunError,
+    PyRuntimeError,
+    "An analysis failed while running."
+);
 
 /// How often a long run hands control back to Python (progress callback, Ctrl-C).
 const CALLBACK_INTERVAL: Duration = Duration::from_millis(100);
@@ -73,8 +83,7 @@ impl Model {
 
 /// A JSON override value as TOML (numbers, strings, booleans, arrays, tables).
 fn toml_value(key: &str, value: serde_json::Value) -> PyResult<toml::Value> {
-    toml::Value::try_from(value)
-        .map_err(|e| InputError::new_err(format!("overrides: {key} — {e}")))
+    toml::Value::try_from(value).map_err(|e| InputError::new_err(format!("overrides: {key} — {e}")))
 }
 
 /// Loads a model file; the embedded 2002834 model when `path` is None.

@@ -288,7 +288,10 @@ fn the_recorded_half_widths_are_those_of_the_wear_lines() {
         ..TaperedRunSettings::default()
     };
     let mut last = LastStep(Vec::new());
-    run_recorded(&model, &settings, Some(&mut last), |_| {}).unwrap();
+    run_recorded(&model, &settings, Some(&mut last), |_| {
+        std::ops::ControlFlow::Continue(())
+    })
+    .unwrap();
     let lengths = model.bearing().roller.slices().length;
     let mut loaded = 0;
     for roller in &last.0 {

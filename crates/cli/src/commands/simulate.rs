@@ -627,7 +627,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
 pub fn run_observed(args: Args, observer: Observer<'_>) -> Result<(), Failure> {
     let model = load_model(args.model.as_deref())?;
     if let rolldyn_geometry::BearingModel::Tapered(_) = &model.bearing {
-        return super::simulate_tapered::run_tapered(&args, &model);
+        return super::simulate_tapered::run_tapered(&args, &model, observer.progress);
     }
     if args.row_offset.is_some() {
         return Err(Failure::Input(

@@ -5,15 +5,20 @@ use super::simulate::{Args, check_output_size, checked_output_step, progress_bar
 use crate::failure::Failure;
 use crate::output::{out_dir, print_json};
 use rolldyn_dynamics::tapered::{
-    SAMPLE_COLUMNS, TaperedRun, TaperedRunSettings, TaperedSample, axial_spectrum, run, sample_row,
-    steady_window, summary_entries,
+    SAMPLE_COLUMNS, TaperedRun, TaperedRunSettings, TaperedSample, axial_spectrum, run_recorded,
+    sample_row, steady_window, summary_entries,
 };
 use rolldyn_output::{Formats, TableWriter};
 use rolldyn_plot::{Labels, Series, line_plot};
 use std::path::Path;
 
 /// Runs the tapered model of `model` as `simulate` asks.
-pub fn run_tapered(args: &Args, model: &rolldyn_model::Model) -> Result<(), Failure> {
+/// `progress(t, t_end)` is called after every sample and may stop the run.
+pub fn run_tapered(
+    args: &Args,
+    model: &rolldyn_model::Model,
+    progress: &mut dyn FnMut(f64, f64) -> std::ops::ControlFlow<()>,
+) -> Result<(), Failure> {
     refuse_cylindrical_only_flags(args)?;
     let output_step = checked_output_step(args.output_step)?;
     let tm = rolldyn_setup::prepare_tapered(model, &args.operating.overrides())?;
@@ -42,8 +47,9 @@ pub fn run_tapered(args: &Args, model: &rolldyn_model::Model) -> Result<(), Fail
     let dir = args.out.as_deref().map(out_dir).transpose()?;
     let bar = progress_bar(args.quiet, t_end);
     let wall = std::time::Instant::now();
-    let result = run(&tm, &settings, |t| {
-        bar.set_position((1000.0 * t / t_end).min(1000.0) as u64)
+    let result = run_recorded(&tm, &settings, None, |t| {
+        bar.set_position((1000.0 * t / t_end).min(1000.0) as u64);
+        progress(t, t_end)
     });
     bar.finish_and_clear();
     let outcome = result.map_err(|e| Failure::Run(format!("the simulation stopped: {e}")))?;

@@ -15,6 +15,7 @@ use crate::settings::IntegratorMethod;
 use crate::settings::IntegratorSettings;
 use crate::stepper::Stepper;
 use crate::vec3::{V3, add, axpy, dot, scale};
+use std::ops::ControlFlow;
 
 /// Settings of a tapered run.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -202,18 +203,22 @@ fn error_scales(model: &TaperedModel) -> (Vec<f64>, Vec<f64>) {
 pub fn run(
     model: &TaperedModel,
     settings: &TaperedRunSettings,
-    progress: impl FnMut(f64),
+    mut progress: impl FnMut(f64),
 ) -> Result<TaperedRun, DynError> {
-    run_recorded(model, settings, None, progress)
+    run_recorded(model, settings, None, |t| {
+        progress(t);
+        ControlFlow::Continue(())
+    })
 }
 
 /// [`run`], handing every sample with its contact record to `recorder` (the record is only
-/// computed when a recorder is given).
+/// computed when a recorder is given); `progress(t)` may stop the run
+/// ([`DynError::Interrupted`]).
 pub fn run_recorded(
     model: &TaperedModel,
     settings: &TaperedRunSettings,
     mut recorder: Option<&mut dyn ContactRecorder>,
-    mut progress: impl FnMut(f64),
+    mut progress: impl FnMut(f64) -> ControlFlow<()>,
 ) -> Result<TaperedRun, DynError> {
     let y0 = initial_state(model, settings.row1_offset_pitch);
     let (scale_v, rel) = error_scales(model);
@@ -250,7 +255,9 @@ pub fn run_recorded(
             r.record(&current, contacts);
         }
         samples.push(current);
-        progress(next);
+        if progress(next).is_break() {
+            return Err(DynError::Interrupted { time_s: next });
+        }
         next += settings.sample_interval_s;
     }
     let summary = summarise(model, &samples, settings.steady_from_s);

@@ -99,8 +99,10 @@ pub fn tapered_rates(
         integrator: settings.integrator,
     };
     let mut recorder = TaperedWearRecorder::new(&data, settings, settings.settle_s);
-    let run = run_recorded(&model, &run_settings, Some(&mut recorder), |_| {})
-        .map_err(|e| WearError::Numerical(e.to_string()))?;
+    let run = run_recorded(&model, &run_settings, Some(&mut recorder), |_| {
+        std::ops::ControlFlow::Continue(())
+    })
+    .map_err(|e| WearError::Numerical(e.to_string()))?;
     Ok(WindowRates {
         direct: recorder.rates(WearMethod::Direct)?,
         averaged: recorder.rates(WearMethod::Averaged)?,
