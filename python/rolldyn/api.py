@@ -93,8 +93,9 @@ class Run:
 
         return plots.cage_orbit(self, ax)
 
-    def plot_roller_forces(self, ax=None, roller: int = 0):
-        """Contact forces of one roller against its azimuth."""
+    def plot_roller_forces(self, ax=None, roller: int = 1):
+        """Contact forces of roller `roller` (numbered from 1, as in the tables) against its
+        azimuth."""
         from . import plots
 
         return plots.roller_forces(self, ax, roller)

@@ -48,10 +48,12 @@ def cage_orbit(run, ax=None):
     return ax
 
 
-def roller_forces(run, ax=None, roller: int = 0):
+def roller_forces(run, ax=None, roller: int = 1):
     rollers = _needs(run.rollers, "rollers")
     ax = _axes(ax)
     one = rollers[rollers["roller"] == roller]
+    if one.empty:
+        raise ValueError(f"no roller {roller}: rollers are numbered 1 to {int(rollers['roller'].max())}")
     azimuth = np.degrees(np.mod(one["azimuth_rad"], 2 * np.pi))
     for column, label in [
         ("inner_force_n", "inner raceway"),
