@@ -18,6 +18,8 @@ thread_local! {
 struct Call {
     model: Option<rolldyn_model::Model>,
     answer: Option<serde_json::Value>,
+    /// The command line, program name first.
+    command_line: Vec<String>,
 }
 
 /// Runs the command of `args` (without the program name, e.g. `["film", "--oil", …]`), with
@@ -29,19 +31,27 @@ pub fn answer(
     model: Option<rolldyn_model::Model>,
 ) -> Result<Option<serde_json::Value>, Failure> {
     let command = parse(args)?;
-    in_call(model, || execute(command))
+    in_call(args, model, || execute(command))
+}
+
+/// `args` (without the program name) as a command line.
+fn with_program_name(args: &[String]) -> Vec<String> {
+    std::iter::once("rolldyn".to_string())
+        .chain(args.iter().cloned())
+        .collect()
 }
 
 /// The command of `args` (without the program name).
 fn parse(args: &[String]) -> Result<crate::Command, Failure> {
-    let argv = std::iter::once("rolldyn".to_string()).chain(args.iter().cloned());
-    Cli::try_parse_from(argv)
+    Cli::try_parse_from(with_program_name(args))
         .map(|cli| cli.command)
         .map_err(|e| Failure::Input(first_line(&e.to_string())))
 }
 
-/// Runs `command` as one call on this thread, with `model` given, and returns its answer.
+/// Runs `command` (parsed from `args`) as one call on this thread, with `model` given, and
+/// returns its answer.
 fn in_call(
+    args: &[String],
     model: Option<rolldyn_model::Model>,
     command: impl FnOnce() -> Result<(), Failure>,
 ) -> Result<Option<serde_json::Value>, Failure> {
@@ -49,6 +59,7 @@ fn in_call(
         *c.borrow_mut() = Some(Call {
             model,
             answer: None,
+            command_line: with_program_name(args),
         })
     });
     let result = command();
@@ -85,6 +96,12 @@ pub(crate) fn given_model() -> Option<rolldyn_model::Model> {
     CALL.with(|c| c.borrow().as_ref().and_then(|call| call.model.clone()))
 }
 
+/// The command line of the running command: the one given to [`answer`], else the process's.
+pub(crate) fn command_line() -> Vec<String> {
+    CALL.with(|c| c.borrow().as_ref().map(|call| call.command_line.clone()))
+        .unwrap_or_else(|| std::env::args().collect())
+}
+
 /// [`answer`] for `simulate` (`args` start with `"simulate"`), with its tables and progress
 /// handed to `observer` (a tapered bearing's run hands over no tables).
 pub fn simulate(
@@ -95,7 +112,7 @@ pub fn simulate(
     let crate::Command::Simulate(simulate) = parse(args)? else {
         return Err(Failure::Input("expected the arguments of simulate".into()));
     };
-    in_call(model, || {
+    in_call(args, model, || {
         crate::commands::simulate::run_observed(simulate, observer)
     })?
     .ok_or_else(|| Failure::Run("simulate gave no answer (give --json)".into()))

@@ -63,3 +63,14 @@ impl From<std::io::Error> for Failure {
         Self::Run(e.to_string())
     }
 }
+
+impl From<rolldyn_report::ReportError> for Failure {
+    /// A missing or foreign folder, or a damaged `run.json`, is bad input.
+    fn from(e: rolldyn_report::ReportError) -> Self {
+        use rolldyn_report::ReportError::*;
+        match e {
+            Folder { .. } | Manifest { .. } => Self::Input(e.to_string()),
+            Io { .. } => Self::Run(e.to_string()),
+        }
+    }
+}

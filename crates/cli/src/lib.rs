@@ -9,6 +9,7 @@ pub mod api;
 pub mod commands;
 pub mod failure;
 pub mod output;
+mod run_record;
 
 use clap::{Parser, Subcommand};
 use failure::Failure;
@@ -59,6 +60,9 @@ pub enum Command {
     Journal(commands::journal::Args),
     /// Lubricated roller–plate line contact (rigid, piezoviscous or full EHL) and load steps.
     EhlLine(commands::ehl_line::Args),
+    /// Self-contained HTML report (DIR/report.html) of an output folder of simulate, sweep,
+    /// wear or fatigue.
+    Report(commands::report::Args),
 }
 
 /// Runs one command.
@@ -81,5 +85,6 @@ pub fn execute(command: Command) -> Result<(), Failure> {
         Command::Film(args) => commands::film::run(args),
         Command::Journal(args) => commands::journal::run(args),
         Command::EhlLine(args) => commands::ehl_line::run(args),
+        Command::Report(args) => commands::report::run(args),
     }
 }

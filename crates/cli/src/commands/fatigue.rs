@@ -5,6 +5,7 @@
 use super::operating_args::OperatingArgs;
 use crate::failure::Failure;
 use crate::output::{load_model, out_dir, print_json};
+use crate::run_record::{ModelOrigin, finish_out_folder};
 use indicatif::{ProgressBar, ProgressDrawTarget};
 use rolldyn_fatigue::damage::MeanStressSettings;
 use rolldyn_fatigue::inclusion::{InclusionSettings, Interface};
@@ -16,6 +17,7 @@ use rolldyn_fatigue::study::{
 use rolldyn_fatigue::{
     CageLoadExport, Cycle, HistoryKind, UnitStresses, rainflow, read_history_csv,
 };
+use rolldyn_report::RunKind;
 use rolldyn_units::{Length, Quantity};
 use serde::Serialize;
 use std::path::PathBuf;
@@ -106,6 +108,9 @@ pub struct Args {
     /// Output folder: the load export, stress history, damage map and plots.
     #[arg(long)]
     pub out: Option<PathBuf>,
+    /// Write the HTML report of the `--out` folder (`report.html`) at the end of the run.
+    #[arg(long, requires = "out")]
+    pub report: bool,
     /// Folder of the cached CalculiX unit cases (default `out/calculix-cache`).
     #[arg(long)]
     pub cache: Option<PathBuf>,
@@ -272,6 +277,13 @@ fn run_life(args: Args) -> Result<(), Failure> {
         wall_time_s: wall.elapsed().as_secs_f64(),
         files: files.iter().map(|f| f.display().to_string()).collect(),
     };
+    if let Some(dir) = &args.out {
+        let model_file = match args.loads {
+            Some(_) => ModelOrigin::None,
+            None => ModelOrigin::of(args.model.as_deref()),
+        };
+        finish_out_folder(dir, RunKind::Fatigue, model_file, &answer, args.report)?;
+    }
     if args.json {
         return print_json(&answer);
     }

@@ -14,6 +14,7 @@ pub mod loads;
 mod oil_args;
 pub mod oils;
 mod operating_args;
+pub mod report;
 mod rig_args;
 pub mod simulate;
 pub mod simulate_tapered;

@@ -22,7 +22,9 @@ use std::path::{Path, PathBuf};
 use std::str::FromStr;
 
 use super::operating_args::OperatingArgs;
+use crate::run_record::{ModelOrigin, finish_out_folder};
 use rolldyn_fatigue::{CageLoadExport, CageLoadRecorder, export_output_step};
+use rolldyn_report::RunKind;
 use rolldyn_setup::prepare;
 
 /// How long to simulate: cage revolutions (`20rev`) or a time (`0.2s`, `50ms`).
@@ -114,6 +116,9 @@ pub struct Args {
     /// Folder for time series (CSV + Parquet) and plots (SVG).
     #[arg(long)]
     pub out: Option<PathBuf>,
+    /// Write the HTML report of the `--out` folder (`report.html`) at the end of the run.
+    #[arg(long, requires = "out")]
+    pub report: bool,
     /// Write the cage loads of the last cage revolution (180 load sets, 2° apart) to this
     /// Parquet file and its JSON header beside it (docs/outputs.md "Cage loads"); the run
     /// samples the dynamics at least 4 times per set.
@@ -726,13 +731,18 @@ pub fn run_observed(args: Args, observer: Observer<'_>) -> Result<(), Failure> {
         write_cage_loads(path, &model, recorder)?;
     }
     let limits = step_limits(&sim.step_limits());
+    let answer = answer_json(
+        model.bearing.name(),
+        &summary,
+        &limits,
+        dir.as_ref().map(|d| d.display().to_string()),
+    );
+    if let Some(dir) = &dir {
+        let model_file = ModelOrigin::of(args.model.as_deref());
+        finish_out_folder(dir, RunKind::Simulate, model_file, &answer, args.report)?;
+    }
     if args.json {
-        return print_json(&answer_json(
-            model.bearing.name(),
-            &summary,
-            &limits,
-            dir.map(|d| d.display().to_string()),
-        ));
+        return print_json(&answer);
     }
     print_summary(model.bearing.name(), &summary, &limits);
     Ok(())

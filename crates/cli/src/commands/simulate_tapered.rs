@@ -4,12 +4,14 @@
 use super::simulate::{Args, check_output_size, checked_output_step, progress_bar};
 use crate::failure::Failure;
 use crate::output::{out_dir, print_json};
+use crate::run_record::{ModelOrigin, finish_out_folder};
 use rolldyn_dynamics::tapered::{
     SAMPLE_COLUMNS, TaperedRun, TaperedRunSettings, TaperedSample, axial_spectrum, run_recorded,
     sample_row, steady_window, summary_entries,
 };
 use rolldyn_output::{Formats, TableWriter};
 use rolldyn_plot::{Labels, Series, line_plot};
+use rolldyn_report::RunKind;
 use std::path::Path;
 
 /// Runs the tapered model of `model` as `simulate` asks.
@@ -61,19 +63,24 @@ pub fn run_tapered(
     entries.push(("simulated_s".into(), t_end));
     entries.push(("wall_time_s".into(), wall_s));
     entries.push(("steps".into(), outcome.steps as f64));
+    let mut map = serde_json::Map::new();
+    map.insert("model".into(), model.bearing.name().into());
+    for (k, v) in &entries {
+        map.insert(k.clone(), serde_json::json!(v));
+    }
+    if let Some(c) = &outcome.most_limiting {
+        map.insert("most_limiting".into(), c.clone().into());
+    }
+    if let Some(d) = &dir {
+        map.insert("out".into(), d.display().to_string().into());
+    }
+    let answer = serde_json::Value::Object(map);
+    if let Some(dir) = &dir {
+        let model_file = ModelOrigin::of(args.model.as_deref());
+        finish_out_folder(dir, RunKind::Simulate, model_file, &answer, args.report)?;
+    }
     if args.json {
-        let mut map = serde_json::Map::new();
-        map.insert("model".into(), model.bearing.name().into());
-        for (k, v) in &entries {
-            map.insert(k.clone(), serde_json::json!(v));
-        }
-        if let Some(c) = &outcome.most_limiting {
-            map.insert("most_limiting".into(), c.clone().into());
-        }
-        if let Some(d) = &dir {
-            map.insert("out".into(), d.display().to_string().into());
-        }
-        return print_json(&serde_json::Value::Object(map));
+        return print_json(&answer);
     }
     println!(
         "{} — double-row tapered, {t_end:.4} s simulated",

@@ -4,9 +4,11 @@
 use super::jobs_args::JobsArgs;
 use super::simulate::Duration;
 use crate::failure::Failure;
+use crate::run_record::{ModelOrigin, finish_out_folder};
 use rolldyn_dynamics::output::NullSink;
 use rolldyn_dynamics::tapered::{TaperedRunSettings, run as run_tapered, summary_entries};
 use rolldyn_quasistatic::QuasiStaticOptions;
+use rolldyn_report::RunKind;
 use rolldyn_setup::{Overrides, prepare};
 use rolldyn_sweep::{
     Analysis, RunOptions, Shard, SweepFile, Variant, VariantOutcome, collect, run as run_sweep,
@@ -42,6 +44,9 @@ pub struct Args {
     /// No per-variant progress lines.
     #[arg(long)]
     pub quiet: bool,
+    /// Write the HTML report of the output folder (`report.html`) at the end of the run.
+    #[arg(long)]
+    pub report: bool,
 }
 
 /// Numeric and boolean (1/0) fields of a JSON object as a summary row.
@@ -434,6 +439,17 @@ pub fn run(args: Args) -> Result<(), Failure> {
         args.sweep.display(),
         outcomes.len(),
     );
+    let answer = serde_json::json!({
+        "sweep": args.sweep.display().to_string(),
+        "analysis": format!("{analysis:?}").to_lowercase(),
+        "variants": total,
+        "ran": outcomes.len(),
+        "failed": failed,
+        "collected": collected,
+        "out": out_dir.display().to_string(),
+    });
+    let sweep_file = ModelOrigin::File(&args.sweep);
+    finish_out_folder(&out_dir, RunKind::Sweep, sweep_file, &answer, args.report)?;
     if failed > 0 && failed == outcomes.len() {
         return Err(Failure::Run(
             "every variant failed; see the variants/*.json files".into(),

@@ -5,7 +5,9 @@
 use super::operating_args::OperatingArgs;
 use crate::failure::Failure;
 use crate::output::{load_model, out_dir, print_json};
+use crate::run_record::{ModelOrigin, finish_out_folder};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use rolldyn_report::RunKind;
 use rolldyn_units::{Length, Quantity, Time};
 use rolldyn_wear::study::run_wear;
 use rolldyn_wear::{
@@ -133,6 +135,9 @@ pub struct Args {
     /// Output folder: tables, plots and the worn model (default `out/<model name>-wear`).
     #[arg(long)]
     pub out: Option<PathBuf>,
+    /// Write the HTML report of the output folder (`report.html`) at the end of the run.
+    #[arg(long)]
+    pub report: bool,
     /// Print the result as JSON.
     #[arg(long)]
     pub json: bool,
@@ -233,6 +238,8 @@ pub fn run(args: Args) -> Result<(), Failure> {
         )),
     })?;
     bar.finish_and_clear();
+    let model_file = ModelOrigin::of(args.model.as_deref());
+    finish_out_folder(&dir, RunKind::Wear, model_file, &answer, args.report)?;
     if args.json {
         return print_json(&answer);
     }

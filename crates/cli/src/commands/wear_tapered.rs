@@ -5,6 +5,8 @@
 use super::wear::{Args, MethodArg, PeriodArg, output_folder, progress_bar};
 use crate::failure::Failure;
 use crate::output::print_json;
+use crate::run_record::{ModelOrigin, finish_out_folder};
+use rolldyn_report::RunKind;
 use rolldyn_wear::WearError;
 use rolldyn_wear::tapered::write_tapered_report;
 use rolldyn_wear::tapered::{TaperedPeriod, TaperedWearSettings, run_tapered_life};
@@ -90,34 +92,37 @@ pub fn run(args: &Args, model: &rolldyn_model::Model) -> Result<(), Failure> {
         |pick: &dyn Fn(&rolldyn_geometry::TaperedWear) -> f64| last.map_or(0.0, |p| pick(&p.wear));
     let first = life.periods.first().map(|p| &p.rates.diagnostics);
     let end = &life.last_window.diagnostics;
+    let d = |x: f64| serde_json::json!(x);
+    let answer = serde_json::json!({
+        "model": model.bearing.name(),
+        "method": format!("{:?}", settings.method).to_lowercase(),
+        "life_h": life.life_h,
+        "period_h": settings.period_s / HOUR,
+        "periods": life.periods.len(),
+        "window_settle_s": settings.settle_s,
+        "window_s": settings.window_s,
+        "wear_lines": settings.wear_lines,
+        "max_depth_um": {
+            "roller": d(final_depth(&|w| max(&w.roller)) * UM),
+            "cone": d(final_depth(&|w| max(&w.cone)) * UM),
+            "cup": d(final_depth(&|w| max(&w.cup)) * UM),
+            "roller_end": d(final_depth(&|w| w.large_end) * UM),
+            "rib": d(final_depth(&|w| w.large_rib) * UM),
+        },
+        "rib_force_mean_n": {
+            "unworn": first.map(|f| f.rib_force_mean_n),
+            "end": end.rib_force_mean_n,
+        },
+        "yaw_max_deg": end.yaw_max_rad.to_degrees(),
+        "pitch_max_deg": end.pitch_max_rad.to_degrees(),
+        "wall_time_s": wall_s,
+        "out": dir.display().to_string(),
+        "plots": plots.iter().map(|p| p.display().to_string()).collect::<Vec<_>>(),
+    });
+    let model_file = ModelOrigin::of(args.model.as_deref());
+    finish_out_folder(&dir, RunKind::Wear, model_file, &answer, args.report)?;
     if args.json {
-        let d = |x: f64| serde_json::json!(x);
-        return print_json(&serde_json::json!({
-            "model": model.bearing.name(),
-            "method": format!("{:?}", settings.method).to_lowercase(),
-            "life_h": life.life_h,
-            "period_h": settings.period_s / HOUR,
-            "periods": life.periods.len(),
-            "window_settle_s": settings.settle_s,
-            "window_s": settings.window_s,
-            "wear_lines": settings.wear_lines,
-            "max_depth_um": {
-                "roller": d(final_depth(&|w| max(&w.roller)) * UM),
-                "cone": d(final_depth(&|w| max(&w.cone)) * UM),
-                "cup": d(final_depth(&|w| max(&w.cup)) * UM),
-                "roller_end": d(final_depth(&|w| w.large_end) * UM),
-                "rib": d(final_depth(&|w| w.large_rib) * UM),
-            },
-            "rib_force_mean_n": {
-                "unworn": first.map(|f| f.rib_force_mean_n),
-                "end": end.rib_force_mean_n,
-            },
-            "yaw_max_deg": end.yaw_max_rad.to_degrees(),
-            "pitch_max_deg": end.pitch_max_rad.to_degrees(),
-            "wall_time_s": wall_s,
-            "out": dir.display().to_string(),
-            "plots": plots.iter().map(|p| p.display().to_string()).collect::<Vec<_>>(),
-        }));
+        return print_json(&answer);
     }
     println!(
         "{}: double-row tapered, {:?} method, {:.0} h in {} periods of {:.0} h; dynamics window \

@@ -1,0 +1,68 @@
+//! The run manifest (`run.json`) of an output folder of `rolldyn simulate`, `sweep`, `wear` or
+//! `fatigue`, and the self-contained HTML report of such a folder (`report.html`: plots inline,
+//! no network).
+
+mod folder;
+mod html;
+pub mod manifest;
+mod quantities;
+mod warnings;
+
+pub use manifest::{MANIFEST_FILE, RunKind, RunManifest};
+pub use warnings::{
+    CAGE_LAND_FORCE_THRESHOLD_N, SCUFFING_CAUTION_MARGIN, SCUFFING_PREDICTED_MARGIN,
+};
+
+use std::path::{Path, PathBuf};
+
+/// File name of the report in an output folder.
+pub const REPORT_FILE: &str = "report.html";
+
+/// Why no report could be written.
+#[derive(Debug, thiserror::Error)]
+pub enum ReportError {
+    /// The folder does not exist or is not one of the four kinds of output folder.
+    #[error("{path}: {reason}")]
+    Folder { path: PathBuf, reason: String },
+    /// `run.json` is damaged or cannot be written.
+    #[error("{path}: {reason}")]
+    Manifest { path: PathBuf, reason: String },
+    #[error("{path}: {reason}")]
+    Io { path: PathBuf, reason: String },
+}
+
+impl ReportError {
+    fn io(path: &Path, e: std::io::Error) -> Self {
+        Self::Io {
+            path: path.to_path_buf(),
+            reason: e.to_string(),
+        }
+    }
+}
+
+/// A written report: where, of what kind of run, and the warnings at its top.
+#[derive(Debug, Clone, serde::Serialize)]
+pub struct WrittenReport {
+    pub report: PathBuf,
+    pub kind: RunKind,
+    pub warnings: Vec<String>,
+}
+
+/// Writes `dir/report.html` and returns its path.
+pub fn write_report(dir: &Path) -> Result<PathBuf, ReportError> {
+    report_folder(dir).map(|written| written.report)
+}
+
+/// [`write_report`], with the kind of run and the warnings.
+pub fn report_folder(dir: &Path) -> Result<WrittenReport, ReportError> {
+    let folder = folder::OutputFolder::read(dir)?;
+    let warnings = warnings::assess(&folder);
+    let page = html::page(&folder, &warnings);
+    let path = dir.join(REPORT_FILE);
+    std::fs::write(&path, page).map_err(|e| ReportError::io(&path, e))?;
+    Ok(WrittenReport {
+        report: path,
+        kind: folder.kind,
+        warnings: warnings.alerts.iter().map(|w| w.to_string()).collect(),
+    })
+}

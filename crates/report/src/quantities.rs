@@ -1,0 +1,72 @@
+//! SI figures of the outputs in engineering units, chosen by the key's unit suffix.
+
+use std::f64::consts::PI;
+
+/// `value` of the figure `key` (SI, unit in the name) as text in an engineering unit.
+pub fn display(key: &str, value: f64) -> String {
+    if !value.is_finite() {
+        return "—".into();
+    }
+    let (scale, unit) = engineering_unit(key);
+    format!("{} {unit}", significant(value * scale))
+        .trim_end()
+        .to_string()
+}
+
+/// The factor from SI and the unit a figure named `key` is shown in.
+fn engineering_unit(key: &str) -> (f64, &'static str) {
+    const SUFFIXES: [(&str, f64, &str); 14] = [
+        ("_rad_s", 30.0 / PI, "rpm"),
+        ("_m_s", 1.0, "m/s"),
+        ("_m_s2", 1.0, "m/s²"),
+        ("_n", 1.0, "N"),
+        ("_pa", 1e-6, "MPa"),
+        ("_um", 1.0, "µm"),
+        ("_m", 1e6, "µm"),
+        ("_s", 1.0, "s"),
+        ("_h", 1.0, "h"),
+        ("_hz", 1.0, "Hz"),
+        ("_deg", 1.0, "°"),
+        ("_rpm", 1.0, "rpm"),
+        ("_rad", 180.0 / PI, "°"),
+        ("_um_per_1000h", 1.0, "µm/1000 h"),
+    ];
+    if key == "cage_slip_mean" || key == "cage_slip" {
+        return (100.0, "%");
+    }
+    SUFFIXES
+        .iter()
+        .filter(|(suffix, _, _)| key.ends_with(suffix))
+        .max_by_key(|(suffix, _, _)| suffix.len())
+        .map_or((1.0, ""), |&(_, scale, unit)| (scale, unit))
+}
+
+/// Four significant digits, plain for ordinary magnitudes, else in exponent form.
+pub fn significant(value: f64) -> String {
+    let magnitude = value.abs();
+    if value == 0.0 {
+        "0".into()
+    } else if (1e-3..1e6).contains(&magnitude) {
+        let decimals = (3 - magnitude.log10().floor() as i32).max(0) as usize;
+        format!("{value:.decimals$}")
+    } else {
+        format!("{value:.3e}")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn units_follow_the_key_suffix() {
+        assert_eq!(display("cage_speed_mean_rad_s", PI), "30.00 rpm");
+        assert_eq!(display("max_inner_sliding_speed_m_s", 0.25), "0.2500 m/s");
+        assert_eq!(display("max_cage_land_force_n", 12.0), "12.00 N");
+        assert_eq!(display("cage_slip_mean", 0.0123), "1.230 %");
+        assert_eq!(display("max_stress_pa", 4.8e8), "480.0 MPa");
+        assert_eq!(display("whirl_ratio", 1.0), "1.000");
+        assert_eq!(display("steps", 123456.0), "123456");
+        assert_eq!(display("x", f64::NAN), "—");
+    }
+}
