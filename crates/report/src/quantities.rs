@@ -44,8 +44,8 @@ fn engineering_unit(key: &str) -> (f64, &'static str) {
 /// Four significant digits, plain for ordinary magnitudes, else in exponent form.
 pub fn significant(value: f64) -> String {
     let magnitude = value.abs();
-    if value == 0.0 {
-        "0".into()
+    if value.fract() == 0.0 && magnitude < 1e15 {
+        format!("{value:.0}")
     } else if (1e-3..1e6).contains(&magnitude) {
         let decimals = (3 - magnitude.log10().floor() as i32).max(0) as usize;
         format!("{value:.decimals$}")
@@ -60,13 +60,17 @@ mod tests {
 
     #[test]
     fn units_follow_the_key_suffix() {
-        assert_eq!(display("cage_speed_mean_rad_s", PI), "30.00 rpm");
+        assert_eq!(display("cage_speed_mean_rad_s", PI), "30 rpm");
+        assert_eq!(display("cage_speed_mean_rad_s", 1.0), "9.549 rpm");
         assert_eq!(display("max_inner_sliding_speed_m_s", 0.25), "0.2500 m/s");
-        assert_eq!(display("max_cage_land_force_n", 12.0), "12.00 N");
+        assert_eq!(display("max_cage_land_force_n", 12.5), "12.50 N");
         assert_eq!(display("cage_slip_mean", 0.0123), "1.230 %");
-        assert_eq!(display("max_stress_pa", 4.8e8), "480.0 MPa");
-        assert_eq!(display("whirl_ratio", 1.0), "1.000");
+        assert_eq!(display("max_stress_pa", 4.8e8), "480 MPa");
+        assert_eq!(display("whirl_ratio", 1.25), "1.250");
         assert_eq!(display("steps", 123456.0), "123456");
+        assert_eq!(display("rejected_steps", 2.0), "2");
+        assert_eq!(display("max_roller_cage_force_n", 0.0), "0 N");
+        assert_eq!(significant(1.5e-7), "1.500e-7");
         assert_eq!(display("x", f64::NAN), "—");
     }
 }

@@ -47,6 +47,12 @@ pub fn assess(folder: &OutputFolder) -> Warnings {
     let mut places: Vec<(String, Figures)> = Vec::new();
     if let Some(manifest) = &folder.manifest {
         places.push((String::new(), flattened(&manifest.summary)));
+        for path in not_converged(&manifest.summary, "") {
+            warnings.alerts.push(Alert {
+                place: String::new(),
+                text: format!("not converged ({path})"),
+            });
+        }
     } else {
         warnings.notes.push(
             "inputs unknown: the folder has no run.json (written by rolldyn 0.1 runs with --out)"
@@ -66,7 +72,24 @@ pub fn assess(folder: &OutputFolder) -> Warnings {
                     (k.clone(), value)
                 })
                 .collect();
-            places.push((format!("variant {}", variant.name), figures));
+            let blank: Vec<&str> = table
+                .header
+                .iter()
+                .zip(&variant.row)
+                .filter(|(k, v)| v.is_empty() && k.as_str() != "error")
+                .map(|(k, _)| k.as_str())
+                .collect();
+            let place = format!("variant {}", variant.name);
+            if !blank.is_empty() && table.field(&variant.row, "error").is_none_or(str::is_empty) {
+                warnings.alerts.push(Alert {
+                    place: place.clone(),
+                    text: format!(
+                        "not a finite number (blank in summary.csv): {}",
+                        blank.join(", ")
+                    ),
+                });
+            }
+            places.push((place, figures));
         }
     }
     let mut edge_assessed = false;
@@ -97,9 +120,7 @@ pub fn assess(folder: &OutputFolder) -> Warnings {
                         significant(f)
                     ))
                 }
-                ("converged", _) if value == &Value::Bool(false) || number == Some(0.0) => {
-                    alert(format!("not converged ({key})"))
-                }
+                ("converged", Some(0.0)) => alert("not converged".into()),
                 ("error", _) if value.as_str().is_some_and(|e| !e.is_empty()) => {
                     alert(format!("failed: {}", value.as_str().unwrap_or_default()))
                 }
@@ -117,7 +138,7 @@ pub fn assess(folder: &OutputFolder) -> Warnings {
             if key.split('.').any(|part| part.starts_with("non_finite")) {
                 let figure = key.replace("non_finite.", "");
                 alert(format!(
-                    "not a finite number: {figure} ({})",
+                    "not a finite number: {figure} — {}",
                     text_of(value)
                 ));
             }
@@ -144,6 +165,32 @@ pub fn assess(folder: &OutputFolder) -> Warnings {
     warnings
 }
 
+/// The paths of every `"converged": false` in a JSON answer, arrays included.
+fn not_converged(value: &Value, path: &str) -> Vec<String> {
+    match value {
+        Value::Object(map) => map
+            .iter()
+            .flat_map(|(key, v)| match (key.as_str(), v) {
+                ("converged", Value::Bool(false)) => vec![join(path, key)],
+                _ => not_converged(v, &join(path, key)),
+            })
+            .collect(),
+        Value::Array(items) => items
+            .iter()
+            .enumerate()
+            .flat_map(|(i, v)| not_converged(v, &format!("{path}[{i}]")))
+            .collect(),
+        _ => Vec::new(),
+    }
+}
+
+fn join(path: &str, key: &str) -> String {
+    match path.is_empty() {
+        true => key.to_string(),
+        false => format!("{path}.{key}"),
+    }
+}
+
 fn text_of(value: &Value) -> String {
     match value {
         Value::String(s) => s.clone(),
@@ -166,11 +213,7 @@ fn flatten_into(path: &str, value: &Value, figures: &mut Vec<(String, Value)>) {
                 figures.push((path.to_string(), value.clone()));
             }
             for (key, v) in map {
-                let child = match path.is_empty() {
-                    true => key.clone(),
-                    false => format!("{path}.{key}"),
-                };
-                flatten_into(&child, v, figures);
+                flatten_into(&join(path, key), v, figures);
             }
         }
         Value::Array(_) => {}
