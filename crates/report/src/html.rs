@@ -251,7 +251,7 @@ fn summary_section(folder: &OutputFolder) -> String {
             html,
             "<tr><th><code>{}</code></th><td>{}</td></tr>",
             escape(key),
-            escape(&value_text(key.rsplit('.').next().unwrap_or(key), value))
+            escape(&value_text(key, value))
         );
     }
     html.push_str("</table>\n</details>\n</section>\n");
@@ -262,7 +262,7 @@ fn value_text(key: &str, value: &Value) -> String {
     match value {
         Value::Number(n) => n.as_f64().map_or(n.to_string(), |v| display(key, v)),
         Value::String(s) => s.clone(),
-        Value::Null => "— (not a finite number)".into(),
+        Value::Null => "—".into(),
         other => other.to_string(),
     }
 }

@@ -2,12 +2,17 @@
 
 use std::f64::consts::PI;
 
-/// `value` of the figure `key` (SI, unit in the name) as text in an engineering unit.
+/// `value` of the figure `key` (SI, unit in the name) as text in an engineering unit. A dotted
+/// key (`max_depth_m.roller`) takes the unit of its innermost part that names one.
 pub fn display(key: &str, value: f64) -> String {
     if !value.is_finite() {
         return "—".into();
     }
-    let (scale, unit) = engineering_unit(key);
+    let (scale, unit) = key
+        .rsplit('.')
+        .map(engineering_unit)
+        .find(|(_, unit)| !unit.is_empty())
+        .unwrap_or((1.0, ""));
     format!("{} {unit}", significant(value * scale))
         .trim_end()
         .to_string()
@@ -72,5 +77,7 @@ mod tests {
         assert_eq!(display("max_roller_cage_force_n", 0.0), "0 N");
         assert_eq!(significant(1.5e-7), "1.500e-7");
         assert_eq!(display("x", f64::NAN), "—");
+        assert_eq!(display("max_depth_m.roller", 1.5e-6), "1.500 µm");
+        assert_eq!(display("initial_contacts.rib.mean_lambda", 1.5), "1.500");
     }
 }
