@@ -8,8 +8,8 @@ use rolldyn_report::{RunKind, RunManifest};
 use std::collections::BTreeMap;
 use std::path::Path;
 
-/// Flags that change where or how the answer is shown, not what is computed.
-const PRESENTATION_FLAGS: [&str; 4] = ["out", "json", "quiet", "report"];
+/// Flags that change where, how or how fast the answer is given, not what is computed.
+const PRESENTATION_FLAGS: [&str; 5] = ["out", "json", "quiet", "report", "jobs"];
 
 /// Where the run's model came from.
 pub enum ModelOrigin<'a> {
@@ -38,12 +38,15 @@ pub fn finish_out_folder(
 ) -> Result<(), Failure> {
     let summary = serde_json::to_value(answer).map_err(|e| Failure::Run(e.to_string()))?;
     let command = crate::api::command_line();
+    let given_in_memory = crate::api::given_model().is_some();
     let (model_file, model_text) = match model {
+        // a model given through the api replaces the file's text
+        ModelOrigin::File(path) if given_in_memory => (Some(path.display().to_string()), None),
         ModelOrigin::File(path) => (
             Some(path.display().to_string()),
             std::fs::read_to_string(path).ok(),
         ),
-        ModelOrigin::Default if crate::api::given_model().is_none() => {
+        ModelOrigin::Default if !given_in_memory => {
             (None, Some(rolldyn_model::DEFAULT_MODEL.to_string()))
         }
         ModelOrigin::Default | ModelOrigin::None => (None, None),
