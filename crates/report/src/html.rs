@@ -181,12 +181,16 @@ fn inputs_section(folder: &OutputFolder) -> String {
         );
         return html;
     };
+    let file_label = match m.kind {
+        RunKind::Sweep => "sweep file",
+        _ => "model file",
+    };
     let rows = [
         ("kind", m.kind.name().to_string()),
         ("rolldyn version", m.rolldyn_version.clone()),
         ("command", m.command.join(" ")),
         (
-            "model file",
+            file_label,
             m.model_file
                 .clone()
                 .unwrap_or_else(|| "embedded model (2002834) or given in memory".into()),
@@ -218,7 +222,7 @@ fn inputs_section(folder: &OutputFolder) -> String {
     if let Some(text) = &m.model_text {
         let _ = writeln!(
             html,
-            "<details><summary>Model file text</summary><pre>{}</pre></details>",
+            "<details><summary>Text of the {file_label}</summary><pre>{}</pre></details>",
             escape(text)
         );
     }
