@@ -223,3 +223,11 @@ def fatigue(model: Optional[Model] = None, **options: Any) -> dict:
     """Cage high-cycle fatigue (`rolldyn fatigue`): ``stress`` (frame, calculix), ``revolutions``,
     ``misalignment``, ``inclusion``, ``out``, …"""
     return answer(["fatigue"], model if model is not None else load_model(), **options)
+
+
+def report(folder: PathLike) -> dict:
+    """Writes the HTML report of an output folder of `simulate`, `sweep`, `wear` or `fatigue`
+    (`rolldyn report`, docs/outputs.md): ``{"report": path of report.html, "kind": …,
+    "warnings": [...]}``. ``report=True`` beside ``out=`` in those functions writes it at the end
+    of the run."""
+    return answer(["report", os.fspath(folder)])

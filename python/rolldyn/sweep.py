@@ -77,6 +77,7 @@ def sweep(
     out: Optional[Union[str, os.PathLike]] = None,
     jobs: Optional[int] = None,
     resume: bool = False,
+    report: bool = False,
     model: Optional[Union[str, os.PathLike]] = None,
     analysis: str = "simulate",
     **settings: Optional[str],
@@ -91,7 +92,8 @@ def sweep(
     see the input files and `out` at the same paths: a shared file system, as on a Slurm
     cluster); the summary is then collected here, and is the same, bit for bit apart from the
     wall times, as that of `rolldyn sweep` on one machine. Results go to `out` (default
-    ``out/<sweep file name>``); `resume` skips variants already finished from the same inputs.
+    ``out/<sweep file name>``); `resume` skips variants already finished from the same inputs;
+    `report` writes the HTML report ``out/report.html`` at the end.
     """
     if isinstance(sweep_file_or_table, pd.DataFrame):
         if model is None:
@@ -103,7 +105,7 @@ def sweep(
         out = Path(out or Path("out") / path.stem)
     path, out = os.path.abspath(path), os.path.abspath(out)
     if client is None:
-        args = ["sweep", path, "--out", out, "--quiet"] + flags(jobs=jobs, resume=resume)
+        args = ["sweep", path, "--out", out, "--quiet"] + flags(jobs=jobs, resume=resume, report=report)
         native(_native.answer, args, None)
     else:
         shards = len(native(_native.sweep_variants, path))
@@ -112,7 +114,8 @@ def sweep(
             [resume] * shards, pure=False,
         )
         client.gather(futures)
-        native(_native.answer, ["sweep", path, "--out", out, "--collect-only", "--quiet"], None)
+        collect = ["sweep", path, "--out", out, "--collect-only", "--quiet"] + flags(report=report)
+        native(_native.answer, collect, None)
     return read_summary(out)
 
 

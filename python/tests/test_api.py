@@ -131,3 +131,12 @@ def test_every_plot_helper_draws():
     for plot in (run.plot_cage_speed, run.plot_cage_slip, run.plot_cage_orbit, run.plot_roller_forces):
         ax = plot()
         assert ax.lines and all(len(line.get_xdata()) > 0 for line in ax.lines), plot.__name__
+
+
+def test_a_report_of_a_python_run_equals_the_command_line(tmp_path):
+    run = rolldyn.simulate(duration="0.5rev", out=tmp_path, report=True, tables=False)
+    assert run.summary["output_folder"] == str(tmp_path)
+    written = rolldyn.report(tmp_path)
+    assert written == cli_json("report", str(tmp_path))
+    assert written["kind"] == "simulate"
+    assert (tmp_path / "report.html").stat().st_size > 10_000

@@ -16,6 +16,13 @@ def cli_summary(out) -> pd.DataFrame:
     return rolldyn.read_summary(out)
 
 
+def csv_without_times(out) -> list[str]:
+    """The lines of `summary.csv` without their last two fields (wall_time_s, error)."""
+    lines = (out / "summary.csv").read_text().splitlines()
+    assert lines[0].endswith(",wall_time_s,error")
+    return [line.rsplit(",", 2)[0] for line in lines]
+
+
 def timeless(table: pd.DataFrame) -> pd.DataFrame:
     return table.drop(columns=[c for c in table.columns if "wall" in c])
 
@@ -32,11 +39,11 @@ def test_a_dask_sweep_equals_the_command_line(tmp_path):
     with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
                                   dashboard_address=None) as cluster, \
             distributed.Client(cluster) as client:
-        python = rolldyn.sweep(SWEEP, client=client, out=tmp_path / "dask")
+        python = rolldyn.sweep(SWEEP, client=client, out=tmp_path / "dask", report=True)
+    assert (tmp_path / "dask" / "report.html").exists()
     expected = cli_summary(tmp_path / "cli")
     pd.testing.assert_frame_equal(timeless(python), timeless(expected), check_exact=True)
-    csv = lambda out: [line.rsplit(",", 2)[0] for line in (out / "summary.csv").read_text().splitlines()]
-    assert csv(tmp_path / "dask") == csv(tmp_path / "cli")
+    assert csv_without_times(tmp_path / "dask") == csv_without_times(tmp_path / "cli")
 
 
 def test_a_table_of_variants_is_a_sweep(tmp_path):
