@@ -140,3 +140,11 @@ def test_a_report_of_a_python_run_equals_the_command_line(tmp_path):
     assert written == cli_json("report", str(tmp_path))
     assert written["kind"] == "simulate"
     assert (tmp_path / "report.html").stat().st_size > 10_000
+
+
+def test_tapered_loads_equal_the_command_line():
+    model = rolldyn.load_model("examples/tapered-cassette.toml")
+    python = rolldyn.loads(model, radial_load="118862N", axial_load="31192N")
+    expected = cli_json("loads", "examples/tapered-cassette.toml", "--radial-load", "118862N",
+                        "--axial-load", "31192N")
+    assert without_wall_times(python) == without_wall_times(expected)
