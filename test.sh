@@ -4,10 +4,24 @@
 # sweeps on Dask, the tutorial) and the HTML report in headless Chromium. Screenshots of the
 # report go to target/test-artefacts/.
 #
-# Needs cargo, Python ≥ 3.9 with pip, and Debian's chromium (apt-get install chromium); the
-# Python packages (the rolldyn package itself, pytest, dask, playwright) are installed here.
+# Needs cargo and Python ≥ 3.9 with pip. What a fresh Debian machine lacks is installed here: the
+# cage-stress solid model's mesher and solver (gmsh, calculix-ccx: an end-to-end test runs them)
+# and chromium (the report's browser test) from Debian's packages, then the Python packages (the
+# rolldyn package itself, pytest, dask, playwright) with pip.
 set -euo pipefail
 cd "$(dirname "$0")"
+
+missing=()
+command -v gmsh >/dev/null 2>&1 || missing+=(gmsh)
+command -v ccx >/dev/null 2>&1 || missing+=(calculix-ccx)
+command -v chromium >/dev/null 2>&1 || missing+=(chromium)
+if [ ${#missing[@]} -gt 0 ]; then
+    if [ "$(id -u)" -ne 0 ]; then
+        echo "test.sh: install ${missing[*]} first (sudo apt-get install ${missing[*]})" >&2
+        exit 1
+    fi
+    apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "${missing[@]}"
+fi
 
 cargo test --workspace
 
