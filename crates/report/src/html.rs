@@ -363,9 +363,7 @@ fn variants_section(table: &Table, variants: &[crate::folder::Variant]) -> Strin
             );
         }
         html.push_str("</table>\n");
-        for plot in &variant.plots {
-            html.push_str(&figure(plot));
-        }
+        html.push_str(&plot_grid(&variant.plots));
         html.push_str("<p><a href=\"#variants\">back to the variants</a></p>\n</section>\n");
     }
     html.push_str("</section>\n");
@@ -374,10 +372,16 @@ fn variants_section(table: &Table, variants: &[crate::folder::Variant]) -> Strin
 
 fn figure(plot: &Plot) -> String {
     format!(
-        "<figure>\n<div class=\"scroll\">{}</div>\n<figcaption>{}</figcaption>\n</figure>\n",
+        "<figure>\n{}\n<figcaption>{}</figcaption>\n</figure>\n",
         plot.svg,
         escape(&plot.name)
     )
+}
+
+/// The plots side by side, as many per row as the page is wide (each scaled to its column).
+fn plot_grid(plots: &[Plot]) -> String {
+    let figures: String = plots.iter().map(figure).collect();
+    format!("<div class=\"plots\">\n{figures}</div>\n")
 }
 
 fn plots_section(id: &str, title: &str, plots: &[Plot]) -> String {
@@ -385,9 +389,7 @@ fn plots_section(id: &str, title: &str, plots: &[Plot]) -> String {
     if plots.is_empty() {
         html.push_str("<p>No plots in this folder.</p>\n");
     }
-    for plot in plots {
-        html.push_str(&figure(plot));
-    }
+    html.push_str(&plot_grid(plots));
     html.push_str("</section>\n");
     html
 }
