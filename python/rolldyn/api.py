@@ -63,6 +63,15 @@ def load_model(path: Optional[PathLike] = None) -> Model:
     return Model(native(_native.load_model, None if path is None else os.fspath(path)))
 
 
+ModelLike = Union[Model, PathLike, None]
+"""A `Model`, a model file, or None for the embedded 2002834."""
+
+
+def as_model(model: ModelLike) -> Model:
+    """The model of a `ModelLike` argument."""
+    return model if isinstance(model, Model) else load_model(model)
+
+
 @dataclass
 class Run:
     """A dynamics run: `summary` (the dict of `rolldyn simulate --json`) and its tables —
@@ -107,7 +116,7 @@ def _table(raw: bytes, columns: list[str]) -> pd.DataFrame:
 
 
 def simulate(
-    model: Optional[Model] = None,
+    model: ModelLike = None,
     duration: str = "2rev",
     speed: Optional[str] = None,
     radial_load: Optional[str] = None,
@@ -126,7 +135,7 @@ def simulate(
     With `tables` the run keeps its time series in memory (a double-row tapered bearing keeps
     none: give ``out=`` for its table, ``tapered.csv``).
     """
-    model = model if model is not None else load_model()
+    model = as_model(model)
     args = ["simulate"] + model_args(model) + flags(
         duration=duration, speed=speed, radial_load=radial_load, quiet=True, json=True, **options
     )
@@ -140,21 +149,21 @@ def simulate(
     return run
 
 
-def skid(model: Optional[Model] = None, **options: Any) -> dict:
+def skid(model: ModelLike = None, **options: Any) -> dict:
     """Quasi-static roller and cage skidding (`rolldyn skid`, seed 001): ``speed``,
     ``radial_load`` (one value or a ``"100N..700N:50N"`` sweep), ``outer_speed``,
     ``temperatures``, ``friction``, ``cage_land``, ``out``."""
-    return answer(["skid"], model if model is not None else load_model(), **options)
+    return answer(["skid"], as_model(model), **options)
 
 
-def check(model: Optional[Model] = None, **options: Any) -> dict:
+def check(model: ModelLike = None, **options: Any) -> dict:
     """Validates a model and returns its derived quantities (`rolldyn check`)."""
-    return answer(["check"], model if model is not None else load_model(), **options)
+    return answer(["check"], as_model(model), **options)
 
 
-def loads(model: Model, **options: Any) -> dict:
+def loads(model: ModelLike, **options: Any) -> dict:
     """Quasi-static load distribution of a double-row tapered bearing (`rolldyn loads`)."""
-    return answer(["loads"], model, **options)
+    return answer(["loads"], as_model(model), **options)
 
 
 @dataclass
@@ -169,10 +178,10 @@ class Contact:
     y: Optional[np.ndarray]
 
 
-def contact(model: Optional[Model] = None, load: Union[str, float] = "1167N", **options: Any) -> Contact:
+def contact(model: ModelLike = None, load: Union[str, float] = "1167N", **options: Any) -> Contact:
     """Roller–raceway contact pressure (`rolldyn contact`): ``load``, ``tilt``, ``cells``
     (``"350x9"``), ``method`` (boussinesq, slices, hertz), ``raceway``, ``slice_law``."""
-    model = model if model is not None else load_model()
+    model = as_model(model)
     with tempfile.TemporaryDirectory() as scratch:
         out = options.pop("out", None) or scratch
         summary = answer(["contact"], model, load=load, out=out, **options)
@@ -212,17 +221,17 @@ def ehl_line(**options: Any) -> dict:
     return answer(["ehl-line"], **options)
 
 
-def wear(model: Optional[Model] = None, **options: Any) -> dict:
+def wear(model: ModelLike = None, **options: Any) -> dict:
     """Archard wear over the bearing's life, fed back into the geometry each period
     (`rolldyn wear`): ``life``, ``period``, ``method``, ``pressure``, ``revolutions``, ``out``
     (default ``out/<model>-wear``), …"""
-    return answer(["wear"], model if model is not None else load_model(), quiet=True, **options)
+    return answer(["wear"], as_model(model), quiet=True, **options)
 
 
-def fatigue(model: Optional[Model] = None, **options: Any) -> dict:
+def fatigue(model: ModelLike = None, **options: Any) -> dict:
     """Cage high-cycle fatigue (`rolldyn fatigue`): ``stress`` (frame, calculix), ``revolutions``,
     ``misalignment``, ``inclusion``, ``out``, …"""
-    return answer(["fatigue"], model if model is not None else load_model(), **options)
+    return answer(["fatigue"], as_model(model), **options)
 
 
 def report(folder: PathLike) -> dict:

@@ -61,7 +61,7 @@ def test_progress_is_reported_and_reaches_the_end():
 
 
 def test_skid_equals_the_command_line():
-    python = rolldyn.skid(rolldyn.load_model(MODEL), speed="4000rpm")
+    python = rolldyn.skid(MODEL, speed="4000rpm")  # a model file stands for its model
     assert without_wall_times(python) == without_wall_times(
         cli_json("skid", MODEL, "--speed", "4000rpm")
     )
