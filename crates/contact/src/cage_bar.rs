@@ -16,51 +16,15 @@
 
 use crate::damping::SliceDamping;
 use crate::hertz::{LineApproachModel, LineContact, reduced_modulus};
-use rolldyn_geometry::{CylindricalRollerBearing, ProfileShape};
+use rolldyn_geometry::CylindricalRollerBearing;
 use rolldyn_lubrication::regime::film_parameter;
-use std::f64::consts::{PI, SQRT_2, TAU};
+use std::f64::consts::{PI, SQRT_2};
 
-/// Cross-section of a cage bar between two windows: a trapezoid whose tangential width at
-/// radius `r` is `b(r) = 2πr/Z − w` (window walls parallel, `w` = window width).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct BarSection {
-    /// Radial depth `r_o − r_i` (m).
-    pub depth: f64,
-    /// Tangential width at the cage bore and at the cage outside diameter (m).
-    pub width_inner: f64,
-    pub width_outer: f64,
-    /// Area `A = ∫ b dr` (m²).
-    pub area: f64,
-    /// Second moment for bending in the circumferential direction, `I = ∫ b³/12 dr` (m⁴).
-    pub second_moment: f64,
-}
+pub use rolldyn_geometry::BarSection;
 
-impl BarSection {
-    /// Section of a bar of a cage with bore radius `r_i`, outside radius `r_o`, `pockets`
-    /// windows of width `window` (m). `None` if the windows leave no bar at the bore.
-    pub fn of_cage(r_i: f64, r_o: f64, pockets: usize, window: f64) -> Option<Self> {
-        let width = |r: f64| TAU * r / pockets as f64 - window;
-        let (b_i, b_o) = (width(r_i), width(r_o));
-        if !(b_i > 0.0 && r_o > r_i) {
-            return None;
-        }
-        let depth = r_o - r_i;
-        let b_m = width(0.5 * (r_i + r_o));
-        // b is linear in r, so Simpson's rule is exact for b³ (a cubic)
-        let cube_mean = (b_i.powi(3) + 4.0 * b_m.powi(3) + b_o.powi(3)) / 6.0;
-        Some(Self {
-            depth,
-            width_inner: b_i,
-            width_outer: b_o,
-            area: b_m * depth,
-            second_moment: cube_mean * depth / 12.0,
-        })
-    }
-
-    /// Cowper's shear coefficient of a rectangle, `κ = 10(1+ν)/(12+11ν)`.
-    pub fn shear_coefficient(poisson_ratio: f64) -> f64 {
-        10.0 * (1.0 + poisson_ratio) / (12.0 + 11.0 * poisson_ratio)
-    }
+/// Cowper's shear coefficient of a rectangle, `κ = 10(1+ν)/(12+11ν)`.
+pub fn shear_coefficient(poisson_ratio: f64) -> f64 {
+    10.0 * (1.0 + poisson_ratio) / (12.0 + 11.0 * poisson_ratio)
 }
 
 /// A bar clamped at both ends (the cage side rims) over `span`, loaded by two equal forces
@@ -94,7 +58,7 @@ impl ClampedBar {
     /// `δ_s = (F/2)·a/(κGA)` (Timoshenko's shear term, in series with bending).
     pub fn shear_compliance(&self) -> f64 {
         let g = self.youngs_modulus / (2.0 * (1.0 + self.poisson_ratio));
-        let kappa = BarSection::shear_coefficient(self.poisson_ratio);
+        let kappa = shear_coefficient(self.poisson_ratio);
         let a = self.offset.min(0.5 * self.span);
         0.5 * a / (kappa * g * self.section.area)
     }
@@ -404,20 +368,13 @@ impl BarLawInputs {
         let cage = bearing.cage.as_ref()?;
         let roller = &bearing.roller;
         let contact_film = 1.0 / film_parameter(1.0, roller.roughness_ra, cage.roughness_ra);
-        let section = BarSection::of_cage(
-            0.5 * cage.inner_diameter,
-            0.5 * cage.outer_diameter,
-            bearing.roller_count,
-            cage.pocket_circumferential,
-        )?;
+        let section = cage
+            .pocket
+            .bar_section(&bearing.pocket_context(cage))
+            .ok()?;
         let half_working = roller.profile.chamfer_start().min(0.5 * roller.length);
-        let span = cage.pocket_axial;
-        let length = match roller.profile.shape {
-            ProfileShape::Crowned {
-                straight_length, ..
-            } => straight_length,
-            _ => roller.profile.effective_length(),
-        };
+        let span = cage.pocket.axial;
+        let length = roller.bar_contact_length();
         let radius = 0.5 * roller.diameter;
         let (rm, cm) = (&roller.material, &cage.material);
         Some(Self {
@@ -543,8 +500,12 @@ mod tests {
             depth: 10e-3,
             width_inner: 4e-3,
             width_outer: 4e-3,
+            width_min: 4e-3,
+            radius_of_min: 0.0,
             area: 40e-6,
+            centroid_radius: 0.0,
             second_moment: 10e-3 * 64e-9 / 12.0,
+            second_moment_radial: 4e-3 * 1e-6 / 12.0,
         };
         ClampedBar {
             section,
@@ -553,22 +514,6 @@ mod tests {
             youngs_modulus: E,
             poisson_ratio: 0.3,
         }
-    }
-
-    #[test]
-    fn trapezoid_section_by_hand() {
-        // Z = 18, r 86.75…97 mm, window 11.25 mm
-        let s = BarSection::of_cage(86.75e-3, 97e-3, 18, 11.25e-3).unwrap();
-        let b = |r: f64| TAU * r / 18.0 - 11.25e-3;
-        assert!((s.width_inner - b(86.75e-3)).abs() < 1e-12);
-        // numerical ∫ b³/12 dr by the midpoint rule
-        let n = 2000;
-        let h = s.depth / n as f64;
-        let i: f64 = (0..n)
-            .map(|k| b(86.75e-3 + (k as f64 + 0.5) * h).powi(3) / 12.0 * h)
-            .sum();
-        assert!((s.second_moment / i - 1.0).abs() < 1e-6);
-        assert!(BarSection::of_cage(10e-3, 12e-3, 18, 11.25e-3).is_none());
     }
 
     #[test]

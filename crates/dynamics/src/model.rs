@@ -12,8 +12,8 @@ use crate::settings::DynamicsSettings;
 use crate::slice_kernel::SliceConstants;
 use rolldyn_contact::damping::SliceDamping;
 use rolldyn_geometry::{
-    Cage, CageGuidance, CylindricalRollerBearing, EndFace, Profile, RacewayWearMap, RibFace,
-    RibSide, Ring,
+    Cage, CageGuidance, CylindricalRollerBearing, EndFace, PocketWalls, Profile, RacewayWearMap,
+    RibFace, RibSide, Ring,
 };
 use rolldyn_lubrication::TractionModel;
 
@@ -224,7 +224,7 @@ impl EndContacts {
         let pocket_band = (0.5 * cage.inner_diameter, 0.5 * cage.outer_diameter);
         let pocket_face = |side: f64| FaceGeometry {
             side,
-            zeta: 0.5 * side * cage.pocket_axial,
+            zeta: 0.5 * side * cage.pocket.axial,
             rho_lo: pocket_band.0,
             rho_hi: pocket_band.1,
             rho_edge: pocket_band.1,
@@ -353,9 +353,12 @@ pub(crate) struct Model {
     pub m_c: f64,
     pub ia_c: f64,
     pub it_c: f64,
-    pub r_bar: f64,
-    pub half_pocket: f64,
-    pub bar_x: [f64; 2],
+    /// the pocket walls of the cage profile, pocket coordinates (docs/theory.md §1.6)
+    pub pocket: PocketWalls,
+    /// share `l_i/L_b` of the roller–cage `K_p` and `C_h` carried by each slice: its length over
+    /// the length of the roller's line contact on a flat bar
+    /// ([`rolldyn_geometry::Roller::bar_contact_length`]), for which the pair's law holds
+    pub bar_slice_share: Vec<f64>,
     pub land: Option<LandGeometry>,
     pub land_model: Box<dyn CageLandModel>,
     // inner ring
@@ -371,9 +374,6 @@ pub(crate) struct Model {
     pub raceway_diameters: (f64, f64),
     /// penetration reported as divergence, m ([`DynamicsSettings::divergence_penetration_m`])
     pub div_limit: f64,
-    /// share of the bar stiffness and damping per evaluation point
-    /// ([`DynamicsSettings::bar_point_share`])
-    pub bar_share: f64,
     /// roller ends ↔ ribs and cage pocket faces
     pub ends: EndContacts,
 }
@@ -439,7 +439,6 @@ impl Model {
         )?;
         let land = LandGeometry::of(bearing, cage);
         let rm = 0.5 * bearing.pitch_diameter();
-        let h = roller.bar_contact_half_span();
         let (s, c) = conditions.misalignment_azimuth_rad.sin_cos();
         let (sb, cb) = conditions.misalignment_rad.sin_cos();
         let axis_i = [sb * c, sb * s, cb];
@@ -468,9 +467,15 @@ impl Model {
             m_c: cmp.mass,
             ia_c: cmp.axial_inertia,
             it_c: cmp.transverse_inertia,
-            r_bar: 0.5 * cage.bar_contact_diameter,
-            half_pocket: 0.5 * cage.pocket_circumferential,
-            bar_x: [-h, h],
+            pocket: cage
+                .pocket
+                .walls(&bearing.pocket_context(cage))
+                .map_err(|e| DynError::InvalidInput(e.to_string()))?,
+            bar_slice_share: stack
+                .length
+                .iter()
+                .map(|l| l / roller.bar_contact_length())
+                .collect(),
             land,
             land_model: Box::new(TwoLevelLand {
                 parameters: params.cage_land,
@@ -482,7 +487,6 @@ impl Model {
             rm,
             raceway_diameters,
             div_limit: defaults.divergence_penetration_m,
-            bar_share: defaults.bar_point_share,
             ends,
         })
     }
@@ -490,7 +494,6 @@ impl Model {
     /// Takes the run settings that enter the right-hand side.
     pub fn apply(&mut self, settings: &DynamicsSettings) {
         self.div_limit = settings.divergence_penetration_m;
-        self.bar_share = settings.bar_point_share;
     }
 
     /// Epicyclic cage speed for ring speeds (ω_i, ω_o): [`rolldyn_geometry::epicyclic_cage_speed`].

@@ -135,11 +135,6 @@ pub struct DynamicsSettings {
     /// A roller or cage penetrating a raceway, bar or land deeper than this is reported as a
     /// divergence, m (default 0.1 mm — a hundred times a working approach).
     pub divergence_penetration_m: f64,
-    /// Share of the roller–cage bar stiffness `K_p` and damping `C_h` (SPEC §3.3, pair 53)
-    /// carried by each of the two evaluation points along the roller (default 0.5: the pair's
-    /// coefficients describe the whole roller–bar contact, which the two points at the ends of
-    /// the roller's straight part share equally).
-    pub bar_point_share: f64,
     /// A roller axis tilted (yaw and pitch combined) by more than this from the bearing axis is
     /// reported as a divergence, rad (default 0.1 rad ≈ 5.7°). With the roller-end ↔ rib and
     /// pocket-face contacts switched off only the cage bars bound roller skew: a roller whose
@@ -174,7 +169,6 @@ impl Default for DynamicsSettings {
             scuffing_check: true,
             slip_load_fraction: 0.05,
             divergence_penetration_m: 1e-4,
-            bar_point_share: 0.5,
             divergence_tilt_rad: 0.1,
             precession_band: 0.05,
         }

@@ -1195,12 +1195,12 @@ fn energy(model: &Model, t: f64, y: &[f64]) -> f64 {
         let ep = unit_or(perp([cp, sp, 0.0], ac), [cp, sp, 0.0]);
         let tp = crate::vec3::cross(ac, ep);
         for side in [-1.0, 1.0] {
-            let edge = axpy(axpy(cc, model.r_bar, ep), side * model.half_pocket, tp);
-            for &x in &model.bar_x {
+            for (sl, &x) in model.slice_x.iter().enumerate() {
                 let q = axpy(centre, x, a);
-                let delta = model.rw - norm(perp(sub(q, edge), ac));
+                let radius = model.rw - model.slice_drop[sl];
+                let (delta, _) = crate::rhs::wall_overlap(model, cc, (ep, tp), side, q, radius);
                 if delta > 0.0 {
-                    e += model.bar_share * bar.k_p * delta.powf(bar.exponent + 1.0)
+                    e += model.bar_slice_share[sl] * bar.k_p * delta.powf(bar.exponent + 1.0)
                         / (bar.exponent + 1.0);
                 }
             }

@@ -101,7 +101,7 @@ fn pocket_face_contact_and_switch() {
     let b = b2002834(5);
     let params = ContactParameters::for_bearing(&b);
     let cage = b.cage.as_ref().unwrap();
-    let pocket_gap = 0.5 * (cage.pocket_axial - b.roller.length);
+    let pocket_gap = 0.5 * (cage.pocket.axial - b.roller.length);
     let mut no_ribs = params;
     no_ribs.roller_end_rib.enabled = false;
     let delta = 2e-6;
@@ -182,7 +182,14 @@ fn ribs_bound_the_skew_in_a_2002834_run() {
     let mut b = b2002834(5);
     // bars close to the rollers, so that they drive skew into the ribs within 25 ms (with the
     // model's Ø192.5 mm line the rollers have 1.48 mm of play and barely skew)
-    b.cage.as_mut().unwrap().bar_contact_diameter = 190.2e-3;
+    b.cage
+        .as_mut()
+        .unwrap()
+        .pocket
+        .outer_lip
+        .as_mut()
+        .unwrap()
+        .diameter = 190.2e-3;
     let mut cond = OperatingConditions::new(rpm(6371.0), 500.0);
     cond.cage_drag_n_m_s = CAGE_DRAG_2002834_100C;
     let mut set = DynamicsSettings::default();

@@ -68,14 +68,18 @@ pub fn cage_geometry(
         .cage
         .as_ref()
         .ok_or("cage fatigue needs a cage ([cage] in the model)")?;
+    let ctx = bearing.pocket_context(cage);
+    let walls = cage.pocket.walls(&ctx).map_err(|e| e.to_string())?;
+    let section = cage.pocket.bar_section(&ctx).map_err(|e| e.to_string())?;
+    let play = cage.pocket.play(&ctx).map_err(|e| e.to_string())?;
     let geometry = CageGeometry {
         pockets: bearing.roller_count,
         inner_radius: 0.5 * cage.inner_diameter,
         outer_radius: 0.5 * cage.outer_diameter,
         width: cage.width,
-        pocket_axial: cage.pocket_axial,
-        pocket_circumferential: cage.pocket_circumferential,
-        bar_contact_radius: 0.5 * cage.bar_contact_diameter,
+        pocket_axial: cage.pocket.axial,
+        pocket_circumferential: 2.0 * walls.half_window_at(section.centroid_radius),
+        bar_contact_radius: 0.5 * play.circumferential_contact_diameter,
         fillet_radius: fillet_radius_m,
         youngs_modulus: cage.material.youngs_modulus,
         poisson_ratio: cage.material.poisson_ratio,

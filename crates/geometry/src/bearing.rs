@@ -1,6 +1,7 @@
 //! A complete cylindrical roller bearing and its consistency checks (SPEC §1.1).
 
 use crate::cage::Cage;
+use crate::cage_pocket::{PocketContext, PocketWalls};
 use crate::error::GeometryError;
 use crate::ring::Ring;
 use crate::roller::Roller;
@@ -242,55 +243,37 @@ impl CylindricalRollerBearing {
         Ok(())
     }
 
+    /// The cage's pocket resolved against this bearing ([`Cage::pocket_context`]).
+    pub fn pocket_context(&self, cage: &Cage) -> PocketContext {
+        cage.pocket_context(
+            0.5 * self.roller.diameter,
+            0.5 * self.pitch_diameter(),
+            self.roller_count,
+        )
+    }
+
+    /// The pocket walls of the cage in pocket coordinates; `None` without a cage.
+    pub fn pocket_walls(&self) -> Option<PocketWalls> {
+        let cage = self.cage.as_ref()?;
+        cage.pocket.walls(&self.pocket_context(cage)).ok()
+    }
+
     fn validate_cage(&self, cage: &Cage) -> Result<(), GeometryError> {
-        let rw = 0.5 * self.roller.diameter;
-        let rm = 0.5 * self.pitch_diameter();
-        let offset = 0.5 * cage.bar_contact_diameter - rm;
-        if offset.abs() >= rw {
-            return Err(GeometryError::new(
-                "cage.bar_contact_diameter",
-                format!(
-                    "Ø{:.3} mm lies outside the roller envelope Ø{:.3}…Ø{:.3} mm",
-                    cage.bar_contact_diameter * 1e3,
-                    (2.0 * (rm - rw)) * 1e3,
-                    (2.0 * (rm + rw)) * 1e3
-                ),
-            ));
-        }
-        let roller_chord = 2.0 * (rw * rw - offset * offset).sqrt();
-        if cage.pocket_circumferential <= roller_chord {
-            return Err(GeometryError::new(
-                "cage.pocket_circumferential",
-                format!(
-                    "pocket {:.3} mm is smaller than the roller width {:.3} mm at the bar contact diameter",
-                    cage.pocket_circumferential * 1e3,
-                    roller_chord * 1e3
-                ),
-            ));
-        }
-        let bar_pitch = std::f64::consts::PI * cage.bar_contact_diameter / self.roller_count as f64;
-        if cage.pocket_circumferential >= bar_pitch {
-            return Err(GeometryError::new(
-                "cage.pocket_circumferential",
-                format!(
-                    "{} pockets of {:.3} mm leave no bar material on the circle Ø{:.3} mm",
-                    self.roller_count,
-                    cage.pocket_circumferential * 1e3,
-                    cage.bar_contact_diameter * 1e3
-                ),
-            ));
-        }
-        if cage.pocket_axial <= self.roller.length {
+        let ctx = self.pocket_context(cage);
+        cage.pocket
+            .check_fit(&ctx, 0.5 * self.clearance.radial.max(0.0))?;
+        cage.pocket.bar_section(&ctx)?;
+        if cage.pocket.axial <= self.roller.length {
             return Err(GeometryError::new(
                 "cage.pocket_axial",
                 format!(
                     "pocket {:.3} mm is not longer than the roller {:.3} mm",
-                    cage.pocket_axial * 1e3,
+                    cage.pocket.axial * 1e3,
                     self.roller.length * 1e3
                 ),
             ));
         }
-        if cage.pocket_axial >= cage.width {
+        if cage.pocket.axial >= cage.width {
             return Err(GeometryError::new(
                 "cage.pocket_axial",
                 "pocket is wider than the cage",

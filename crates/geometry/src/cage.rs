@@ -1,5 +1,6 @@
 //! The cage (SPEC §1.5).
 
+use crate::cage_pocket::{CagePocket, PocketContext};
 use crate::error::{GeometryError, require_positive};
 use crate::mass::MassProperties;
 use crate::material::Material;
@@ -21,12 +22,9 @@ pub struct Cage {
     pub guidance: CageGuidance,
     /// Diametral clearance between cage centring surface and guiding land ("зазор плавания").
     pub floating_clearance: f64,
-    /// Circumferential pocket (window) size, measured at the bar contact diameter [m].
-    pub pocket_circumferential: f64,
-    /// Axial pocket size [m].
-    pub pocket_axial: f64,
-    /// Diameter at which the rollers touch the cage bars [m] (2002834: 192.5 mm).
-    pub bar_contact_diameter: f64,
+    /// The pocket as it is built: faces, lips, axial size, fillet (docs/theory.md §1.6). Contact,
+    /// bar stiffness, mass and both stress models read it.
+    pub pocket: CagePocket,
     pub inner_diameter: f64,
     pub outer_diameter: f64,
     pub width: f64,
@@ -52,17 +50,29 @@ pub(crate) fn windowed_ring(
 }
 
 impl Cage {
-    /// Mass properties of the cage ring with `pockets` windows of the pocket size cut through
-    /// its radial wall: [`windowed_ring`].
-    pub fn computed_mass_properties(&self, pockets: usize) -> MassProperties {
-        let wall = 0.5 * (self.outer_diameter - self.inner_diameter);
-        windowed_ring(
-            self.inner_diameter,
-            self.outer_diameter,
-            self.width,
-            self.material.density,
-            pockets as f64 * self.pocket_circumferential * self.pocket_axial * wall,
-        )
+    /// Resolves the pocket against its bearing: roller radius, pitch radius, pocket count.
+    pub fn pocket_context(
+        &self,
+        roller_radius: f64,
+        pitch_radius: f64,
+        pockets: usize,
+    ) -> PocketContext {
+        PocketContext {
+            roller_radius,
+            pitch_radius,
+            cage_inner_radius: 0.5 * self.inner_diameter,
+            cage_outer_radius: 0.5 * self.outer_diameter,
+            pockets,
+        }
+    }
+
+    /// Mass properties of the cage ring with its windows cut ([`CagePocket::cage_mass`]).
+    pub fn computed_mass_properties(
+        &self,
+        ctx: &PocketContext,
+    ) -> Result<MassProperties, GeometryError> {
+        self.pocket
+            .cage_mass(ctx, self.width, self.material.density)
     }
 
     /// Diameter of the guiding land the cage runs on, from the cage and its floating clearance.
@@ -75,9 +85,7 @@ impl Cage {
     }
 
     pub fn validate(&self) -> Result<(), GeometryError> {
-        require_positive("cage.pocket_circumferential", self.pocket_circumferential)?;
-        require_positive("cage.pocket_axial", self.pocket_axial)?;
-        require_positive("cage.bar_contact_diameter", self.bar_contact_diameter)?;
+        require_positive("cage.pocket_axial", self.pocket.axial)?;
         require_positive("cage.inner_diameter", self.inner_diameter)?;
         require_positive("cage.width", self.width)?;
         if self.outer_diameter <= self.inner_diameter {

@@ -9,6 +9,7 @@
 mod bearing;
 mod cage;
 mod cage_guidance;
+pub mod cage_pocket;
 mod error;
 mod kinematics;
 mod mass;
@@ -24,6 +25,10 @@ mod wear_map;
 pub use bearing::{Clearance, CylindricalRollerBearing, Misalignment};
 pub use cage::{Cage, CageGuidance};
 pub use cage_guidance::CageGuidanceCheck;
+pub use cage_pocket::{
+    BarSection, CagePocket, PocketContext, PocketFaces, PocketPlay, PocketWalls, RetainingLip,
+    WallPiece,
+};
 pub use error::{GeometryError, require_positive};
 pub use kinematics::{cage_slip, epicyclic_cage_speed, epicyclic_roller_speed};
 pub use mass::MassProperties;

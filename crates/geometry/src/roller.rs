@@ -54,6 +54,18 @@ impl Roller {
         self.profile.chamfer_start().min(0.5 * self.length)
     }
 
+    /// Length of the roller's line contact on a flat cage bar at light load: the straight part
+    /// of a crowned roller, else the effective length [m] (the length of the bar contact law,
+    /// docs/theory.md §2.3.1).
+    pub fn bar_contact_length(&self) -> f64 {
+        match self.profile.shape {
+            crate::ProfileShape::Crowned {
+                straight_length, ..
+            } => straight_length,
+            _ => self.profile.effective_length(),
+        }
+    }
+
     /// Mass properties of the roller body from its profile and density (Simpson rule, 400
     /// intervals: the chamfers are resolved to < 0.1 % of the mass).
     pub fn computed_mass_properties(&self) -> MassProperties {

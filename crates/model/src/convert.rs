@@ -280,7 +280,33 @@ fn roller(
     Ok(roller)
 }
 
-fn cage(section: &CageSection, materials: &Materials, pockets: usize) -> Result<Cage> {
+fn pocket(section: &CageSection) -> CagePocket {
+    let p = &section.pocket;
+    let lip = |l: &LipSection| RetainingLip {
+        diameter: l.diameter.si(),
+        window: l.window.si(),
+        tip_radius: l.tip_radius.map_or(0.0, |r| r.si()),
+    };
+    CagePocket {
+        faces: match p.faces {
+            None | Some(PocketFacesName::Flat) => PocketFaces::Flat,
+            Some(PocketFacesName::Concave) => PocketFaces::Concave,
+        },
+        face_clearance: p.face_clearance.si(),
+        outer_lip: p.outer_lip.as_ref().map(lip),
+        inner_lip: p.inner_lip.as_ref().map(lip),
+        axial: section.pocket_axial.si(),
+        fillet_radius: p.fillet_radius.map_or(0.0, |r| r.si()),
+    }
+}
+
+/// The cage of a bearing whose pocket sits on the pitch radius `pitch_radius` around rollers of
+/// radius `roller_radius`: its mass follows from the pocket profile.
+fn cage(
+    section: &CageSection,
+    materials: &Materials,
+    (pockets, roller_radius, pitch_radius): (usize, f64, f64),
+) -> Result<Cage> {
     let mut cage = Cage {
         guidance: match section.guidance {
             GuidanceName::InnerLand => CageGuidance::InnerLand,
@@ -288,9 +314,7 @@ fn cage(section: &CageSection, materials: &Materials, pockets: usize) -> Result<
             GuidanceName::Rollers => CageGuidance::Rollers,
         },
         floating_clearance: section.floating_clearance.map_or(0.0, |c| c.si()),
-        pocket_circumferential: section.pocket_circumferential.si(),
-        pocket_axial: section.pocket_axial.si(),
-        bar_contact_diameter: section.bar_contact_diameter.si(),
+        pocket: pocket(section),
         inner_diameter: section.inner_diameter.si(),
         outer_diameter: section.outer_diameter.si(),
         width: section.width.si(),
@@ -299,8 +323,9 @@ fn cage(section: &CageSection, materials: &Materials, pockets: usize) -> Result<
         mass_properties: MassProperties::default(),
     };
     cage.validate()?;
+    let ctx = cage.pocket_context(roller_radius, pitch_radius, pockets);
     cage.mass_properties = mass_properties(
-        cage.computed_mass_properties(pockets),
+        cage.computed_mass_properties(&ctx)?,
         &section.mass_properties,
         "cage.mass_properties",
     )?;
@@ -413,7 +438,15 @@ pub(crate) fn build(file: &ModelFile) -> Result<BearingModel> {
             let cage = file
                 .cage
                 .as_ref()
-                .map(|c| cage(c, &materials, roller_count))
+                .map(|c| {
+                    let pitch_radius =
+                        0.25 * (inner_ring.raceway_diameter + outer_ring.raceway_diameter);
+                    cage(
+                        c,
+                        &materials,
+                        (roller_count, 0.5 * roller.diameter, pitch_radius),
+                    )
+                })
                 .transpose()?;
             attach_guiding_land(
                 cage.as_ref(),

@@ -206,9 +206,9 @@ pub enum GuidanceName {
 pub struct CageSection {
     pub guidance: GuidanceName,
     pub floating_clearance: Option<Quantity<Length>>,
-    pub pocket_circumferential: Quantity<Length>,
     pub pocket_axial: Quantity<Length>,
-    pub bar_contact_diameter: Quantity<Length>,
+    /// the pocket's profile in the cage's transverse plane (docs/model-format.md, `[cage.pocket]`)
+    pub pocket: PocketSection,
     pub inner_diameter: Quantity<Length>,
     pub outer_diameter: Quantity<Length>,
     pub width: Quantity<Length>,
@@ -216,6 +216,37 @@ pub struct CageSection {
     pub roughness_ra: Option<Quantity<Length>>,
     #[serde(default)]
     pub mass_properties: MassOverride,
+}
+
+/// `[cage.pocket]`: faces, retaining lips and window-corner fillet of a window cage.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PocketSection {
+    /// "flat" (default) or "concave"
+    pub faces: Option<PocketFacesName>,
+    /// pocket width at the pitch circle − roller diameter
+    pub face_clearance: Quantity<Length>,
+    pub outer_lip: Option<LipSection>,
+    pub inner_lip: Option<LipSection>,
+    /// window-corner fillet between bar and rim (stress models)
+    pub fillet_radius: Option<Quantity<Length>>,
+}
+
+#[derive(Debug, Deserialize, Clone, Copy)]
+#[serde(rename_all = "kebab-case")]
+pub enum PocketFacesName {
+    Flat,
+    Concave,
+}
+
+/// A retaining lip: its edge circle, the window between the two edges, the edge radius.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LipSection {
+    pub diameter: Quantity<Length>,
+    pub window: Quantity<Length>,
+    /// default 0 (a sharp edge)
+    pub tip_radius: Option<Quantity<Length>>,
 }
 
 #[derive(Debug, Deserialize)]

@@ -96,12 +96,9 @@ fn cage_pocket_smaller_than_the_roller() {
         m.contains("cage.pocket_axial") && m.contains("not longer than the roller"),
         "{m}"
     );
-    let m = error_after(
-        "pocket_circumferential = \"11.25 mm\"",
-        "pocket_circumferential = \"8 mm\"",
-    );
+    let m = error_after("window = \"11.25 mm\"", "window = \"8 mm\"");
     assert!(
-        m.contains("cage.pocket_circumferential") && m.contains("smaller than the roller"),
+        m.contains("cage.pocket.outer_lip.window") && m.contains("does not fit its pocket"),
         "{m}"
     );
 }

@@ -224,7 +224,7 @@ fn land_setup(
                 .rail_width_m
                 .or(ring.guiding_land.map(|l| l.width))
                 .unwrap_or_else(|| {
-                    let w = 0.5 * (cage.width - cage.pocket_axial);
+                    let w = 0.5 * (cage.width - cage.pocket.axial);
                     if w > 0.0 { w } else { 0.25 * cage.width }
                 });
             let t_land = if outer_ring {
@@ -351,7 +351,9 @@ impl<'a> Setup<'a> {
         let cage_mass = if cage.mass_properties.mass > 0.0 {
             cage.mass_properties.mass
         } else {
-            cage.computed_mass_properties(bearing.roller_count).mass
+            cage.computed_mass_properties(&bearing.pocket_context(cage))
+                .map_err(|e| QsError::InvalidInput(e.to_string()))?
+                .mass
         };
         let (land, land_speed) = land_setup(bearing, cond, &geometry, cage_mass)?;
         let oil_density = cond

@@ -496,8 +496,8 @@ fn pocket_end_clearance(
     let (t, ax) = (&cond.temperatures, &cond.thermal_expansion);
     let ta = t.assembly;
     bearing.cage.as_ref().map(|c| {
-        let c0 = c.pocket_axial - bearing.roller.length;
-        let cage_th = ax.cage * c.pocket_axial * (t.cage - ta);
+        let c0 = c.pocket.axial - bearing.roller.length;
+        let cage_th = ax.cage * c.pocket.axial * (t.cage - ta);
         let roller_th = ax.rollers * bearing.roller.length * (t.rollers - ta);
         AxialClearance {
             mounting_m: c0,

@@ -11,9 +11,9 @@
 use crate::conditions::{FrictionModel, PartTemperatures, QuasiStaticConditions, celsius, rpm};
 use crate::options::QuasiStaticOptions;
 use rolldyn_geometry::{
-    Cage, CageGuidance, Chamfer, Clearance, CylindricalRollerBearing, EndFace, GuidingLand,
-    MassProperties, Material, Misalignment, Profile, ProfileShape, Rib, RibFace, RibSide, Ring,
-    Roller,
+    Cage, CageGuidance, CagePocket, Chamfer, Clearance, CylindricalRollerBearing, EndFace,
+    GuidingLand, MassProperties, Material, Misalignment, PocketFaces, Profile, ProfileShape, Rib,
+    RibFace, RibSide, Ring, Roller,
 };
 use rolldyn_lubrication::lubricant::MixedLimitsData;
 use rolldyn_lubrication::{
@@ -327,9 +327,15 @@ pub fn intershaft_bearing() -> CylindricalRollerBearing {
     let mut cage = Cage {
         guidance: CageGuidance::OuterLand,
         floating_clearance: 0.5e-3,
-        pocket_circumferential: 11.3e-3,
-        pocket_axial: 11.2e-3,
-        bar_contact_diameter: 121e-3,
+        // flat faces touching the roller at the pitch circle Ø121 mm, window 11.3 mm there
+        pocket: CagePocket {
+            faces: PocketFaces::Flat,
+            face_clearance: 0.3e-3,
+            outer_lip: None,
+            inner_lip: None,
+            axial: 11.2e-3,
+            fillet_radius: 0.0,
+        },
         inner_diameter: 116e-3,
         outer_diameter: 126.5e-3,
         width: 15e-3,
@@ -337,7 +343,9 @@ pub fn intershaft_bearing() -> CylindricalRollerBearing {
         roughness_ra: 0.8e-6,
         mass_properties: MassProperties::default(),
     };
-    cage.mass_properties = cage.computed_mass_properties(28);
+    cage.mass_properties = cage
+        .computed_mass_properties(&cage.pocket_context(5.5e-3, 60.5e-3, 28))
+        .expect("the intershaft cage's pocket is consistent");
     CylindricalRollerBearing {
         name: "intershaft-example (stand-in for 55-2672919R5)".into(),
         inner_ring: inner,

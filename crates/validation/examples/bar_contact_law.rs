@@ -287,11 +287,7 @@ fn lift_impact(
 }
 
 fn run() -> Result<(), String> {
-    let (mut b2002834, model) = bearing("examples/2002834.toml")?;
-    if let Some(cage) = b2002834.cage.as_mut() {
-        // the lead's pocket (issue 23): the seed's FE model puts the bar contact at Ø192.5 mm
-        cage.bar_contact_diameter = 192.5e-3;
-    }
+    let (b2002834, model) = bearing("examples/2002834.toml")?;
     for celsius in [100.0, 50.0] {
         print_case(
             &format!("2002834, VNII NP 50-1-4u at {celsius} °C"),

@@ -51,7 +51,7 @@ fn named_case(name: &str) -> Case {
             if let BearingModel::Cylindrical(b) = &mut case.model.bearing
                 && let Some(cage) = b.cage.as_mut()
             {
-                cage.pocket_circumferential = 15.05e-3;
+                cage.pocket.face_clearance = 0.05e-3;
             }
             case.name = "obrien-taylor pocket 15.05 mm".into();
             case

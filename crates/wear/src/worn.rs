@@ -105,8 +105,8 @@ pub fn worn_bearing(
         &depth.outer_map,
     )?);
     if let Some(cage) = worn.cage.as_mut() {
-        // the roller wears the bar face it pushes on: the window widens by that depth
-        cage.pocket_circumferential += depth.max(Surface::CageBar);
+        // the roller wears the wall it pushes on: the pocket widens by that depth
+        cage.pocket = cage.pocket.worn(depth.max(Surface::CageBar));
     }
     // both ends and both ribs share the end wear (the recorder halves it per end and per rib)
     worn.roller.length -= 2.0 * depth.roller_end;

@@ -87,10 +87,20 @@ pub fn write_worn_model(
     roller.insert("length".into(), mm(worn.roller.length));
     let cage = section(&mut doc, "cage")?;
     if let Some(c) = &worn.cage {
-        cage.insert(
-            "pocket_circumferential".into(),
-            mm(c.pocket_circumferential),
-        );
+        let pocket = cage
+            .entry("pocket")
+            .or_insert_with(|| Value::Table(Table::new()))
+            .as_table_mut()
+            .ok_or_else(|| WearError::Input("cage.pocket is not a table".into()))?;
+        pocket.insert("face_clearance".into(), mm(c.pocket.face_clearance));
+        for (key, lip) in [
+            ("outer_lip", c.pocket.outer_lip),
+            ("inner_lip", c.pocket.inner_lip),
+        ] {
+            if let (Some(lip), Some(Value::Table(t))) = (lip, pocket.get_mut(key)) {
+                t.insert("window".into(), mm(lip.window));
+            }
+        }
     }
     let mut written = Vec::new();
     for (key, ring, map) in [

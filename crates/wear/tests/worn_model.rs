@@ -48,7 +48,7 @@ fn worn_bearing_moves_every_surface_by_its_depth() {
         );
     }
     let cage = |b: &rolldyn_geometry::CylindricalRollerBearing| {
-        b.cage.as_ref().unwrap().pocket_circumferential
+        b.cage.as_ref().unwrap().pocket.face_clearance
     };
     assert!((cage(&worn) - cage(b) - 30e-6).abs() < 1e-15);
     assert!((worn.roller.length - (b.roller.length - 20e-6)).abs() < 1e-15);
@@ -98,7 +98,7 @@ fn the_worn_model_file_reads_back_as_the_worn_bearing() {
         (r.inner_ring.rib_spacing.unwrap() - worn.inner_ring.rib_spacing.unwrap()).abs() < 1e-12
     );
     let pocket = |b: &rolldyn_geometry::CylindricalRollerBearing| {
-        b.cage.as_ref().unwrap().pocket_circumferential
+        b.cage.as_ref().unwrap().pocket.face_clearance
     };
     assert!((pocket(r) - pocket(&worn)).abs() < 1e-12);
     let (m, n) = (

@@ -44,6 +44,85 @@ impl From<MassProperties> for Mass {
     }
 }
 
+/// A retaining lip as built.
+#[derive(Serialize)]
+struct LipSummary {
+    diameter_m: f64,
+    window_m: f64,
+    tip_radius_m: f64,
+}
+
+/// The cage pocket as `rolldyn check` reports it (SI units, docs/theory.md §1.6).
+#[derive(Serialize)]
+struct PocketSummary {
+    faces: &'static str,
+    face_clearance_m: f64,
+    /// pocket width between the faces at the pitch circle
+    face_width_m: f64,
+    outer_lip: Option<LipSummary>,
+    inner_lip: Option<LipSummary>,
+    axial_m: f64,
+    fillet_radius_m: f64,
+    /// circumferential travel of a centred roller to a wall, the piece it meets and where
+    circumferential_play_per_side_m: f64,
+    circumferential_stop: &'static str,
+    circumferential_contact_diameter_m: f64,
+    /// radial travel of the roller to a lip (null: no lip stops it)
+    radial_play_outward_m: Option<f64>,
+    radial_play_inward_m: Option<f64>,
+    closing_displacement_m: f64,
+    /// the roller at the pitch radius ± half the radial clearance fits its pocket
+    fits: bool,
+    bar_width_min_m: f64,
+    bar_width_min_diameter_m: f64,
+    bar_width_bore_m: f64,
+    bar_width_outside_m: f64,
+    bar_area_m2: f64,
+    bar_second_moment_m4: f64,
+}
+
+impl PocketSummary {
+    fn of(b: &rolldyn_geometry::CylindricalRollerBearing) -> Option<Self> {
+        let cage = b.cage.as_ref()?;
+        let p = &cage.pocket;
+        let ctx = b.pocket_context(cage);
+        let play = p.play(&ctx).ok()?;
+        let section = p.bar_section(&ctx).ok()?;
+        let lip = |l: Option<rolldyn_geometry::RetainingLip>| {
+            l.map(|l| LipSummary {
+                diameter_m: l.diameter,
+                window_m: l.window,
+                tip_radius_m: l.tip_radius,
+            })
+        };
+        Some(Self {
+            faces: match p.faces {
+                rolldyn_geometry::PocketFaces::Flat => "flat",
+                rolldyn_geometry::PocketFaces::Concave => "concave",
+            },
+            face_clearance_m: p.face_clearance,
+            face_width_m: b.roller.diameter + p.face_clearance,
+            outer_lip: lip(p.outer_lip),
+            inner_lip: lip(p.inner_lip),
+            axial_m: p.axial,
+            fillet_radius_m: p.fillet_radius,
+            circumferential_play_per_side_m: play.circumferential_per_side,
+            circumferential_stop: play.circumferential_stop.name(),
+            circumferential_contact_diameter_m: play.circumferential_contact_diameter,
+            radial_play_outward_m: play.radial_outward,
+            radial_play_inward_m: play.radial_inward,
+            closing_displacement_m: play.closing_displacement,
+            fits: p.check_fit(&ctx, 0.5 * b.clearance.radial.max(0.0)).is_ok(),
+            bar_width_min_m: section.width_min,
+            bar_width_min_diameter_m: 2.0 * section.radius_of_min,
+            bar_width_bore_m: section.width_inner,
+            bar_width_outside_m: section.width_outer,
+            bar_area_m2: section.area,
+            bar_second_moment_m4: section.second_moment,
+        })
+    }
+}
+
 /// Derived quantities of a model (SI units).
 #[derive(Serialize, Default)]
 pub struct Summary {
@@ -65,6 +144,8 @@ pub struct Summary {
     outer_ring: Option<Mass>,
     cage: Option<Mass>,
     cage_land_diameter_m: Option<f64>,
+    /// the pocket profile, its plays, the fit check and the bar section
+    cage_pocket: Option<PocketSummary>,
     /// circumferential play of a centred roller on each side of its pocket
     cage_pocket_play_per_side_m: Option<f64>,
     /// smallest cage displacement that closes a pocket on its roller
@@ -229,9 +310,10 @@ pub fn summarise(model: &BearingModel, inner_speed: f64, outer_speed: f64) -> Su
             s.outer_ring = Some(b.outer_ring.mass_properties.into());
             s.cage = b.cage.as_ref().map(|c| c.mass_properties.into());
             s.cage_land_diameter_m = b.cage.as_ref().and_then(|c| c.land_diameter());
+            s.cage_pocket = PocketSummary::of(b);
             if let Some(g) = b.cage_guidance_check() {
-                s.cage_pocket_play_per_side_m = Some(g.pocket_play_per_side);
-                s.cage_pocket_closing_displacement_m = Some(g.pocket_closing_displacement);
+                s.cage_pocket_play_per_side_m = Some(g.play.circumferential_per_side);
+                s.cage_pocket_closing_displacement_m = Some(g.play.closing_displacement);
                 s.cage_land_radial_gap_m = Some(g.land_radial_gap);
                 s.cage_land_guided = Some(g.land_guided());
             }
@@ -306,6 +388,61 @@ pub fn describe(s: &Summary) -> Vec<String> {
     }
     if let Some(d) = s.cage_land_diameter_m {
         line("cage guiding land diameter", mm(d));
+    }
+    if let Some(p) = &s.cage_pocket {
+        line(
+            "cage pocket faces",
+            format!(
+                "{}, {} apart at the pitch circle (clearance {})",
+                p.faces,
+                mm(p.face_width_m),
+                mm(p.face_clearance_m)
+            ),
+        );
+        for (label, lip) in [("outer lip", &p.outer_lip), ("inner lip", &p.inner_lip)] {
+            if let Some(l) = lip {
+                line(
+                    &format!("cage pocket {label}"),
+                    format!(
+                        "Ø{}, window {}, tip radius {}",
+                        mm(l.diameter_m),
+                        mm(l.window_m),
+                        mm(l.tip_radius_m)
+                    ),
+                );
+            }
+        }
+        line(
+            "roller play in its pocket",
+            format!(
+                "{} per side to the {} at Ø{}; radially {} out / {} in",
+                mm(p.circumferential_play_per_side_m),
+                p.circumferential_stop,
+                mm(p.circumferential_contact_diameter_m),
+                p.radial_play_outward_m.map_or("free".into(), mm),
+                p.radial_play_inward_m.map_or("free".into(), mm),
+            ),
+        );
+        line(
+            "pocket fit",
+            if p.fits {
+                "the roller fits its pocket at the pitch radius ± half the radial clearance".into()
+            } else {
+                "the pocket cuts the roller".into()
+            },
+        );
+        line(
+            "cage bar section",
+            format!(
+                "width {} (narrowest, at Ø{}), {} at the bore, {} outside; area {:.2} mm², I {:.1} mm⁴",
+                mm(p.bar_width_min_m),
+                mm(p.bar_width_min_diameter_m),
+                mm(p.bar_width_bore_m),
+                mm(p.bar_width_outside_m),
+                p.bar_area_m2 * 1e6,
+                p.bar_second_moment_m4 * 1e12
+            ),
+        );
     }
     if let (Some(play), Some(closing), Some(gap), Some(guided)) = (
         s.cage_pocket_play_per_side_m,

@@ -1,5 +1,6 @@
-//! The cage's contacts: roller ↔ cage bars (detection for all rollers in one vector loop, then
-//! the force per roller; SPEC §1.5, §3.3 pair 53) and cage ↔ guiding land (SPEC §3.6).
+//! The cage's contacts: roller ↔ pocket walls (a broad phase for all rollers, then the sliced
+//! roller against every face and lip of the pocket profile; SPEC §1.5, §3.3 pair 53,
+//! docs/theory.md §3.4) and cage ↔ guiding land (SPEC §3.6).
 
 use super::Wrench;
 use super::bodies::{Bodies, CageKin, RollerColumns};
@@ -11,22 +12,21 @@ use crate::output::PointForce;
 use crate::vec3::{V3, add, axpy, cross, dot, norm, perp, power, scale, sub, unit_or};
 use rolldyn_contact::damping::SliceDamping;
 
-/// Per pocket (struct of arrays): its frame in the cage plane and the squared distances of its
-/// roller's bar points from the bar edges.
+/// Per pocket (struct of arrays): its frame in the cage plane and whether its roller can touch
+/// a wall.
 #[derive(Debug, Clone)]
 pub(super) struct PocketColumns {
     /// radial and tangential unit vectors in the cage plane: e_x, e_y, e_z, t_x, t_y, t_z
     frame: [Vec<f64>; 6],
-    /// squared distance of the bar points (pocket sides −, + × roller ends −, +) from the bar
-    /// edges, measured in the cage plane
-    bar_dist_sq: [Vec<f64>; 4],
+    /// a lower bound of the clearance of the roller's slices to the pocket walls, m
+    clearance_bound: Vec<f64>,
 }
 
 impl PocketColumns {
     pub fn new(z: usize) -> Self {
         Self {
             frame: std::array::from_fn(|_| vec![0.0; z]),
-            bar_dist_sq: std::array::from_fn(|_| vec![0.0; z]),
+            clearance_bound: vec![0.0; z],
         }
     }
 
@@ -38,23 +38,37 @@ impl PocketColumns {
     }
 }
 
-/// Offset of the bar point `q` of a roller from the edge line of its pocket's bar on `side`
-/// (±1), perpendicular to the cage axis: the edge runs along the cage axis at the bar contact
-/// radius from the cage centre, in the pocket frame `(e_p, t_p)`.
+/// Pocket coordinates `(ρ, h)` of point `q` in the pocket frame `(e_p, t_p)` of the cage.
 #[inline]
-fn bar_offset(model: &Model, cage: &CageKin, (ep, tp): (V3, V3), side: f64, q: V3) -> V3 {
-    let edge = axpy(
-        axpy(cage.centre, model.r_bar, ep),
-        side * model.half_pocket,
-        tp,
-    );
-    perp(sub(q, edge), cage.axis)
+fn pocket_coordinates(cage: &CageKin, (ep, tp): (V3, V3), q: V3) -> (f64, f64) {
+    let d = sub(q, cage.centre);
+    (dot(d, ep), dot(d, tp))
 }
 
-/// Detection for all pockets at once: the pocket frames (radial unit vector of pocket `j` in
+/// Overlap of a roller slice (centre `q`, radius `radius`) with the wall on `side` (±1) of its
+/// pocket and the contact normal (from the wall towards the slice centre, in the cage plane):
+/// [`rolldyn_geometry::PocketWalls::distance`].
+#[inline]
+pub(crate) fn wall_overlap(
+    model: &Model,
+    cage_centre: V3,
+    (ep, tp): (V3, V3),
+    side: f64,
+    q: V3,
+    radius: f64,
+) -> (f64, V3) {
+    let d = sub(q, cage_centre);
+    let (rho, h) = (dot(d, ep), dot(d, tp));
+    let wall = model.pocket.distance(rho, side * h);
+    let n = axpy(scale(ep, wall.normal[0]), side * wall.normal[1], tp);
+    (radius - wall.distance, n)
+}
+
+/// Broad phase for all pockets at once: the pocket frames (radial unit vector of pocket `j` in
 /// the cage plane at the angle φ_c + 2πj/Z by the angle-sum formulas, and the tangential one),
-/// then the squared distance of each bar point from its bar edge (the expressions of
-/// [`bar_contacts`]).
+/// then a lower bound of the clearance of every slice of the roller: the clearance of the full
+/// roller radius at the roller centre less the slices' largest offset from it in the cage plane
+/// (the wall distance is 1-Lipschitz).
 pub(super) fn detect(
     model: &Model,
     cage: &CageKin,
@@ -74,30 +88,21 @@ pub(super) fn detect(
         [ex[j], ey[j], ez[j]] = ep;
         [tx[j], ty[j], tz[j]] = tp;
     }
-    let [cx, cy, cz] = rollers.centre.each_ref().map(|c| &c[..z]);
-    let [ax, ay, az] = rollers.axis.each_ref().map(|c| &c[..z]);
-    let [ex, ey, ez, tx, ty, tz] = pockets.frame.each_ref().map(|c| &c[..z]);
-    let [d0, d1, d2, d3] = pockets.bar_dist_sq.each_mut().map(|c| &mut c[..z]);
     for j in 0..z {
-        let (ep, tp) = ([ex[j], ey[j], ez[j]], [tx[j], ty[j], tz[j]]);
-        let (centre, a) = ([cx[j], cy[j], cz[j]], [ax[j], ay[j], az[j]]);
-        let dist_sq = |side: f64, x: f64| {
-            let d = bar_offset(model, cage, (ep, tp), side, axpy(centre, x, a));
-            dot(d, d)
-        };
-        let [x0, x1] = model.bar_x;
-        d0[j] = dist_sq(-1.0, x0);
-        d1[j] = dist_sq(-1.0, x1);
-        d2[j] = dist_sq(1.0, x0);
-        d3[j] = dist_sq(1.0, x1);
+        let centre = [0, 1, 2].map(|k| rollers.centre[k][j]);
+        let a = [0, 1, 2].map(|k| rollers.axis[k][j]);
+        let (rho, h) = pocket_coordinates(cage, pockets.frame(j), centre);
+        let (g, _, _) = model.pocket.clearance(rho, h, model.rw);
+        pockets.clearance_bound[j] = g - norm(perp(a, cage.axis)) * model.slice_reach;
     }
 }
 
-/// Roller `j` ↔ the bars of its pocket: both pocket sides, evaluated at both ends of the
-/// roller's straight part (SPEC §1.5 "bone-shaped" scar). Each point carries
-/// [`Model::bar_share`] of the pair's `K_p` and `C_h`: `Q = K_p' δⁿ + C(δ) δ̇` (seed 000 (2.5)–
-/// (2.8)), friction `μ(v_s) Q` against the sliding velocity. Adds the forces to the roller and
-/// their reaction to the cage.
+/// Roller `j` ↔ the walls of its pocket: every slice of the roller (its profiled radius) against
+/// both walls, each wall the nearest of its faces and lips, the normal from the geometry. Each
+/// slice carries the share `l_i/L_b` of the pair's `K_p` and `C_h`
+/// ([`Model::bar_slice_share`]): `Q = K_p' δⁿ + C(δ) δ̇` (seed 000 (2.5)–(2.8)), friction
+/// `μ(v_s) Q` against the sliding velocity. Adds the forces to the roller and their reaction to
+/// the cage.
 #[inline(always)]
 pub(super) fn bar_contacts(
     model: &Model,
@@ -108,31 +113,34 @@ pub(super) fn bar_contacts(
     (roller, cage_wrench): (&mut Wrench, &mut Wrench),
     violation: &mut Option<Violation>,
 ) -> BarSums {
-    let bar = &model.params.roller_cage;
-    let bar_damping = SliceDamping::new(model.bar_share * bar.c_h, bar.d);
-    let frame = pockets.frame(j);
     let mut sums = BarSums::default();
+    if pockets.clearance_bound[j] > 0.0 {
+        return sums;
+    }
+    let bar = &model.params.roller_cage;
+    let frame = pockets.frame(j);
+    let mut weighted_points = [[0.0; 3]; 4];
+    let mut forces = [[0.0; 3]; 4];
+    let mut normals = [0.0; 4];
     for (k, &side) in [-1.0, 1.0].iter().enumerate() {
-        for (i, &x) in model.bar_x.iter().enumerate() {
-            // the (many) points clear of the bar were settled by the vector loop
-            let dist_sq = pockets.bar_dist_sq[2 * k + i][j];
-            if dist_sq >= model.rw * model.rw || dist_sq == 0.0 {
+        for (i, &x) in model.slice_x.iter().enumerate() {
+            let q = axpy(rk.c, x, rk.a);
+            let radius = model.rw - model.slice_drop[i];
+            let (delta, n) = wall_overlap(model, cage.centre, frame, side, q, radius);
+            if delta <= 0.0 {
                 continue;
             }
-            let q = axpy(rk.c, x, rk.a);
-            let d = bar_offset(model, cage, frame, side, q);
-            let dist = dist_sq.sqrt();
-            let delta = model.rw - dist;
-            note(violation, "roller ↔ cage bar", j, delta, model.div_limit);
-            let n = scale(d, 1.0 / dist);
-            let cp = axpy(q, -model.rw, n);
+            note(violation, "roller ↔ cage pocket", j, delta, model.div_limit);
+            let share = model.bar_slice_share[i];
+            let cp = axpy(q, -radius, n);
             let r_cp = sub(cp, rk.c);
             let v_roll = add(rk.v, cross(rk.w, r_cp));
             let v_cage = add(cage.velocity, cross(cage.omega, sub(cp, cage.centre)));
             let vrel = sub(v_roll, v_cage);
             let delta_dot = -dot(vrel, n);
-            let elastic = model.bar_share * bar.k_p * power(delta, bar.exponent);
-            let qn = bar_damping.normal_force(elastic, delta, delta_dot);
+            let elastic = share * bar.k_p * power(delta, bar.exponent);
+            let qn =
+                SliceDamping::new(share * bar.c_h, bar.d).normal_force(elastic, delta, delta_dot);
             if qn <= 0.0 {
                 continue;
             }
@@ -147,21 +155,30 @@ pub(super) fn bar_contacts(
             roller.moment = add(roller.moment, cross(r_cp, fc));
             cage_wrench.force = sub(cage_wrench.force, fc);
             cage_wrench.moment = sub(cage_wrench.moment, cross(sub(cp, cage.centre), fc));
-            sums.points[2 * k + i] = PointForce {
-                force_n: scale(fc, -1.0),
-                point_m: cp,
-            };
+            let group = 2 * k + usize::from(x >= 0.0);
+            forces[group] = sub(forces[group], fc);
+            weighted_points[group] = axpy(weighted_points[group], qn, cp);
+            normals[group] += qn;
             sums.normal += qn;
             sums.power += mu * qn * vs;
             sums.sliding += qn * vs;
         }
     }
+    for g in 0..4 {
+        if normals[g] > 0.0 {
+            sums.points[g] = PointForce {
+                force_n: forces[g],
+                point_m: scale(weighted_points[g], 1.0 / normals[g]),
+            };
+        }
+    }
     sums
 }
 
-/// Sums of one roller's bar contacts: normal force, friction power and the force-weighted
-/// sliding speed (the speed of the friction law), and the force of each contact point on the
-/// cage ([`PocketLoads::bar`](crate::output::PocketLoads)).
+/// Sums of one roller's pocket contacts: normal force, friction power and the force-weighted
+/// sliding speed (the speed of the friction law), and the force on the cage of each quarter of
+/// the contacts — pocket side (−, +) × roller half (x < 0, x ≥ 0) — at its force-weighted
+/// point ([`PocketLoads::bar`](crate::output::PocketLoads)).
 #[derive(Debug, Clone, Copy, Default)]
 pub(super) struct BarSums {
     pub points: [PointForce; 4],

@@ -20,6 +20,7 @@ mod diagnostics;
 mod raceways;
 mod roller_ends;
 
+pub(crate) use cage::wall_overlap;
 pub(crate) use diagnostics::{ContactTable, Diagnostics, Tables};
 
 use crate::ends::ReachColumns;
