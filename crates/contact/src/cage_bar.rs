@@ -8,16 +8,19 @@
 //!   `C_h` is chosen so that the STEP-damped law gives the same restitution at a reference
 //!   impact speed, with `d` = the film thickness at which the asperities meet.
 //!
-//! The hydrodynamic lift of the roller spinning against the bar is left out here (it makes the
-//! restitution higher, so [`derive`] gives its lower bound); the example program
-//! `bar_contact_law` adds it through the Reynolds crate, which itself depends on this crate.
+//! The hydrodynamic lift of the roller spinning against the bar is left out of the restitution
+//! match (it makes the restitution higher, so [`derive`] gives its lower bound); the lubricated
+//! force law of [`crate::bar_force`] carries it explicitly, and [`DerivedBarLaw::force_law`]
+//! builds either law for the dynamics.
 //!
 //! SI units throughout (m, N, Pa, Pa·s, kg).
 
+use crate::bar_force::{
+    BarFilm, BarFilmSettings, BarForceLaw, ElasticBarLaw, LubricatedBarLaw, bar_contact_length,
+};
 use crate::damping::SliceDamping;
 use crate::hertz::{LineApproachModel, LineContact, reduced_modulus};
-use rolldyn_geometry::{CylindricalRollerBearing, ProfileShape};
-use rolldyn_lubrication::regime::film_parameter;
+use rolldyn_geometry::CylindricalRollerBearing;
 use std::f64::consts::{PI, SQRT_2, TAU};
 
 /// Cross-section of a cage bar between two windows: a trapezoid whose tangential width at
@@ -403,7 +406,7 @@ impl BarLawInputs {
     pub fn of_bearing(bearing: &CylindricalRollerBearing, viscosity: f64) -> Option<Self> {
         let cage = bearing.cage.as_ref()?;
         let roller = &bearing.roller;
-        let contact_film = 1.0 / film_parameter(1.0, roller.roughness_ra, cage.roughness_ra);
+        let film = BarFilm::of_bearing(bearing, viscosity, &BarFilmSettings::default())?;
         let section = BarSection::of_cage(
             0.5 * cage.inner_diameter,
             0.5 * cage.outer_diameter,
@@ -412,13 +415,8 @@ impl BarLawInputs {
         )?;
         let half_working = roller.profile.chamfer_start().min(0.5 * roller.length);
         let span = cage.pocket_axial;
-        let length = match roller.profile.shape {
-            ProfileShape::Crowned {
-                straight_length, ..
-            } => straight_length,
-            _ => roller.profile.effective_length(),
-        };
-        let radius = 0.5 * roller.diameter;
+        let length = bar_contact_length(bearing);
+        let radius = film.radius;
         let (rm, cm) = (&roller.material, &cage.material);
         Some(Self {
             compliance: BarCompliance {
@@ -446,8 +444,18 @@ impl BarLawInputs {
                 radius,
             },
             roller_mass: roller.mass_properties.mass,
-            contact_film,
+            contact_film: film.contact_film,
         })
+    }
+
+    /// The oil film between roller and bar of these inputs, ending at the cutoff of `settings`.
+    pub fn bar_film(&self, settings: &BarFilmSettings) -> BarFilm {
+        BarFilm {
+            viscosity: self.film.viscosity,
+            radius: self.film.radius,
+            contact_film: self.contact_film,
+            cutoff: settings.cutoff_ratio * self.film.radius,
+        }
     }
 }
 
@@ -491,6 +499,46 @@ pub struct DerivedBarLaw {
     /// The film damps more than critically (it stops the roller before metal contact, or
     /// nearly): `C_h` is [`critical_damping`] instead of the restitution match.
     pub critically_capped: bool,
+}
+
+/// Which pair-34 force law to build.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum BarLawKind {
+    /// `K_p δⁿ + STEP(δ, 0, 0, d, C_h)·δ̇`, C_h matched to the film's restitution.
+    #[default]
+    Elastic,
+    /// The film (squeeze and wedge) explicitly, the elastic law below the asperity film.
+    Lubricated,
+}
+
+impl DerivedBarLaw {
+    /// The force law of `kind` over the contact length of `inputs`. The lubricated law's
+    /// elastic part has no STEP damping (`C_h = 0`): the film it carries is the damper that
+    /// `C_h` stands for in the elastic law, and adding both would count it twice.
+    pub fn force_law(
+        &self,
+        inputs: &BarLawInputs,
+        kind: BarLawKind,
+        film: &BarFilmSettings,
+    ) -> BarForceLaw {
+        let elastic = ElasticBarLaw {
+            k_p: self.elastic.k_p,
+            exponent: self.elastic.exponent,
+            c_h: self.c_h,
+            d: self.d,
+            reference_length: inputs.film.length,
+        };
+        match kind {
+            BarLawKind::Elastic => BarForceLaw::Elastic(elastic),
+            BarLawKind::Lubricated => BarForceLaw::Lubricated(LubricatedBarLaw {
+                elastic: ElasticBarLaw {
+                    c_h: 0.0,
+                    ..elastic
+                },
+                film: inputs.bar_film(film),
+            }),
+        }
+    }
 }
 
 /// Derives `K_p`, `n` (fit of the series compliance) and `C_h`, `d` (restitution of the squeeze
