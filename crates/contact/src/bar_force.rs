@@ -63,7 +63,7 @@ impl ElasticBarLaw {
     /// `max(0, s K_p δⁿ + STEP(δ, 0, 0, d, s C_h)·δ̇)`, `s = length/reference_length`, for
     /// approach `delta` (m) and its rate `delta_rate` (m/s, > 0 approaching); 0 for `δ ≤ 0`.
     pub fn normal_force(&self, delta: f64, delta_rate: f64, length: f64) -> f64 {
-        if !(delta > 0.0) {
+        if delta <= 0.0 {
             return 0.0;
         }
         let share = saturate(length.max(0.0) / self.reference_length);
@@ -162,7 +162,7 @@ impl BarFilm {
     /// [λ(h) − λ(h_cut)](−ḣ))` below the cutoff, 0 beyond.
     pub fn force(&self, h: f64, h_rate: f64, entrainment_speed: f64, length: f64) -> f64 {
         let h = h.max(self.contact_film);
-        if !(h < self.cutoff) || !(length > 0.0) {
+        if h >= self.cutoff || length <= 0.0 {
             return 0.0;
         }
         let lift = saturate(
