@@ -10,6 +10,7 @@ use crate::layout::Layout;
 use crate::parameters::{ContactParameters, RacewayParameters};
 use crate::settings::DynamicsSettings;
 use crate::slice_kernel::SliceConstants;
+use rolldyn_contact::bar_force::{BarForceLaw, bar_contact_length};
 use rolldyn_contact::damping::SliceDamping;
 use rolldyn_geometry::{
     Cage, CageGuidance, CylindricalRollerBearing, EndFace, Profile, RacewayWearMap, RibFace,
@@ -371,6 +372,16 @@ pub(crate) struct Model {
     pub raceway_diameters: (f64, f64),
     /// penetration reported as divergence, m ([`DynamicsSettings::divergence_penetration_m`])
     pub div_limit: f64,
+    /// pair-34 force law per roller slice ([`ContactParameters::roller_cage_law`] over the
+    /// roller's bar contact length); a bar point carries `bar_share` of that length
+    #[cfg_attr(
+        not(test),
+        expect(
+            dead_code,
+            reason = "the roller–pocket contact of rhs/cage.rs being rewritten evaluates it"
+        )
+    )]
+    pub bar_law: BarForceLaw,
     /// share of the bar stiffness and damping per evaluation point
     /// ([`DynamicsSettings::bar_point_share`])
     pub bar_share: f64,
@@ -445,6 +456,7 @@ impl Model {
         let axis_i = [sb * c, sb * s, cb];
         let ends = EndContacts::new(bearing, cage, &params, ri, ro, &inner)?;
         let defaults = DynamicsSettings::default();
+        let bar_law = params.roller_cage_law(bar_contact_length(bearing));
         Ok(Self {
             layout: Layout { rollers: z },
             z,
@@ -481,6 +493,7 @@ impl Model {
             params,
             rm,
             raceway_diameters,
+            bar_law,
             div_limit: defaults.divergence_penetration_m,
             bar_share: defaults.bar_point_share,
             ends,
