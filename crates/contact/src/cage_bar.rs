@@ -224,6 +224,8 @@ pub struct Impact {
     pub restitution: f64,
     /// Largest contact force (N).
     pub peak_force: f64,
+    /// Largest penetration reached (m; 0 when the roller stops in the film before contact).
+    pub max_penetration: f64,
 }
 
 /// Numerical settings of the impact integration.
@@ -279,7 +281,7 @@ pub fn impact(
     let dt = (PI * (mass / stiffness).sqrt() / settings.steps_per_contact as f64)
         .min(0.5 * mass / c_max.max(f64::MIN_POSITIVE));
     let accel = |d: f64, v: f64| -force(d, v) / mass;
-    let (mut d, mut v, mut peak) = (0.0_f64, speed, 0.0_f64);
+    let (mut d, mut v, mut peak, mut deepest) = (0.0_f64, speed, 0.0_f64, 0.0_f64);
     let max_steps = 1000 * settings.steps_per_contact;
     for _ in 0..max_steps {
         let (k1d, k1v) = (v, accel(d, v));
@@ -295,6 +297,7 @@ pub fn impact(
         d += dt / 6.0 * (k1d + 2.0 * k2d + 2.0 * k3d + k4d);
         v += dt / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
         peak = peak.max(force(d, v));
+        deepest = deepest.max(d);
         if d <= 0.0 {
             break;
         }
@@ -302,6 +305,7 @@ pub fn impact(
     Impact {
         restitution: (-v / speed).max(0.0),
         peak_force: peak,
+        max_penetration: deepest,
     }
 }
 
@@ -323,6 +327,7 @@ pub fn film_impact(
         return Impact {
             restitution: 0.0,
             peak_force: film_peak,
+            max_penetration: 0.0,
         };
     }
     let c = film.damping(h_contact);
@@ -337,6 +342,7 @@ pub fn film_impact(
     Impact {
         restitution: ((contact.restitution * v_touch - loss) / speed).max(0.0),
         peak_force: contact.peak_force.max(film_peak),
+        max_penetration: contact.max_penetration,
     }
 }
 
