@@ -8,16 +8,17 @@
 //!   `C_h` is chosen so that the STEP-damped law gives the same restitution at a reference
 //!   impact speed, with `d` = the film thickness at which the asperities meet.
 //!
-//! The hydrodynamic lift of the roller spinning against the bar is left out here (it makes the
-//! restitution higher, so [`derive`] gives its lower bound); the example program
-//! `bar_contact_law` adds it through the Reynolds crate, which itself depends on this crate.
+//! The hydrodynamic lift of the roller spinning against the bar is left out of the restitution
+//! match (it makes the restitution higher, so [`derive`] gives its lower bound); the lubricated
+//! force law of [`crate::bar_force`] carries it explicitly, and [`DerivedBarLaw::force_law`]
+//! builds either law for the dynamics.
 //!
 //! SI units throughout (m, N, Pa, Pa·s, kg).
 
+use crate::bar_force::{BarFilm, BarFilmSettings, BarForceLaw, ElasticBarLaw, LubricatedBarLaw};
 use crate::damping::SliceDamping;
 use crate::hertz::{LineApproachModel, LineContact, reduced_modulus};
 use rolldyn_geometry::CylindricalRollerBearing;
-use rolldyn_lubrication::regime::film_parameter;
 use std::f64::consts::{PI, SQRT_2};
 
 pub use rolldyn_geometry::BarSection;
@@ -185,6 +186,8 @@ pub struct Impact {
     pub restitution: f64,
     /// Largest contact force (N).
     pub peak_force: f64,
+    /// Largest penetration reached (m; 0 when the roller stops in the film before contact).
+    pub max_penetration: f64,
 }
 
 /// Numerical settings of the impact integration.
@@ -240,7 +243,7 @@ pub fn impact(
     let dt = (PI * (mass / stiffness).sqrt() / settings.steps_per_contact as f64)
         .min(0.5 * mass / c_max.max(f64::MIN_POSITIVE));
     let accel = |d: f64, v: f64| -force(d, v) / mass;
-    let (mut d, mut v, mut peak) = (0.0_f64, speed, 0.0_f64);
+    let (mut d, mut v, mut peak, mut deepest) = (0.0_f64, speed, 0.0_f64, 0.0_f64);
     let max_steps = 1000 * settings.steps_per_contact;
     for _ in 0..max_steps {
         let (k1d, k1v) = (v, accel(d, v));
@@ -256,6 +259,7 @@ pub fn impact(
         d += dt / 6.0 * (k1d + 2.0 * k2d + 2.0 * k3d + k4d);
         v += dt / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
         peak = peak.max(force(d, v));
+        deepest = deepest.max(d);
         if d <= 0.0 {
             break;
         }
@@ -263,6 +267,7 @@ pub fn impact(
     Impact {
         restitution: (-v / speed).max(0.0),
         peak_force: peak,
+        max_penetration: deepest,
     }
 }
 
@@ -284,6 +289,7 @@ pub fn film_impact(
         return Impact {
             restitution: 0.0,
             peak_force: film_peak,
+            max_penetration: 0.0,
         };
     }
     let c = film.damping(h_contact);
@@ -298,6 +304,7 @@ pub fn film_impact(
     Impact {
         restitution: ((contact.restitution * v_touch - loss) / speed).max(0.0),
         peak_force: contact.peak_force.max(film_peak),
+        max_penetration: contact.max_penetration,
     }
 }
 
@@ -367,7 +374,7 @@ impl BarLawInputs {
     pub fn of_bearing(bearing: &CylindricalRollerBearing, viscosity: f64) -> Option<Self> {
         let cage = bearing.cage.as_ref()?;
         let roller = &bearing.roller;
-        let contact_film = 1.0 / film_parameter(1.0, roller.roughness_ra, cage.roughness_ra);
+        let film = BarFilm::of_bearing(bearing, viscosity, &BarFilmSettings::default())?;
         let section = cage
             .pocket
             .bar_section(&bearing.pocket_context(cage))
@@ -375,7 +382,7 @@ impl BarLawInputs {
         let half_working = roller.profile.chamfer_start().min(0.5 * roller.length);
         let span = cage.pocket.axial;
         let length = roller.bar_contact_length();
-        let radius = 0.5 * roller.diameter;
+        let radius = film.radius;
         let (rm, cm) = (&roller.material, &cage.material);
         Some(Self {
             compliance: BarCompliance {
@@ -403,8 +410,18 @@ impl BarLawInputs {
                 radius,
             },
             roller_mass: roller.mass_properties.mass,
-            contact_film,
+            contact_film: film.contact_film,
         })
+    }
+
+    /// The oil film between roller and bar of these inputs, ending at the cutoff of `settings`.
+    pub fn bar_film(&self, settings: &BarFilmSettings) -> BarFilm {
+        BarFilm {
+            viscosity: self.film.viscosity,
+            radius: self.film.radius,
+            contact_film: self.contact_film,
+            cutoff: settings.cutoff_ratio * self.film.radius,
+        }
     }
 }
 
@@ -448,6 +465,46 @@ pub struct DerivedBarLaw {
     /// The film damps more than critically (it stops the roller before metal contact, or
     /// nearly): `C_h` is [`critical_damping`] instead of the restitution match.
     pub critically_capped: bool,
+}
+
+/// Which pair-34 force law to build.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum BarLawKind {
+    /// `K_p δⁿ + STEP(δ, 0, 0, d, C_h)·δ̇`, C_h matched to the film's restitution.
+    #[default]
+    Elastic,
+    /// The film (squeeze and wedge) explicitly, the elastic law below the asperity film.
+    Lubricated,
+}
+
+impl DerivedBarLaw {
+    /// The force law of `kind` over the contact length of `inputs`. The lubricated law's
+    /// elastic part has no STEP damping (`C_h = 0`): the film it carries is the damper that
+    /// `C_h` stands for in the elastic law, and adding both would count it twice.
+    pub fn force_law(
+        &self,
+        inputs: &BarLawInputs,
+        kind: BarLawKind,
+        film: &BarFilmSettings,
+    ) -> BarForceLaw {
+        let elastic = ElasticBarLaw {
+            k_p: self.elastic.k_p,
+            exponent: self.elastic.exponent,
+            c_h: self.c_h,
+            d: self.d,
+            reference_length: inputs.film.length,
+        };
+        match kind {
+            BarLawKind::Elastic => BarForceLaw::Elastic(elastic),
+            BarLawKind::Lubricated => BarForceLaw::Lubricated(LubricatedBarLaw {
+                elastic: ElasticBarLaw {
+                    c_h: 0.0,
+                    ..elastic
+                },
+                film: inputs.bar_film(film),
+            }),
+        }
+    }
 }
 
 /// Derives `K_p`, `n` (fit of the series compliance) and `C_h`, `d` (restitution of the squeeze

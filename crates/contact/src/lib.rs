@@ -7,9 +7,12 @@
 //!   FFT-accelerated constrained conjugate gradient with a dense reference.
 //! * [`cage_bar`] — the roller ↔ cage bar law (pair 34) derived from the bar's bending and
 //!   shear, the line contact and the oil squeeze film (docs/theory.md §2.3.1).
+//! * [`bar_force`] — the pair-34 force law per roller slice: elastic, or lubricated (squeeze
+//!   and wedge film above the asperity film, the elastic law below it).
 //! * [`roller_raceway`] — a roller of a bearing model on its raceway, solved by any of the
 //!   three methods and reported alike.
 
+pub mod bar_force;
 pub mod boussinesq;
 pub mod cage_bar;
 pub mod damping;

@@ -10,6 +10,7 @@ use crate::layout::Layout;
 use crate::parameters::{ContactParameters, RacewayParameters};
 use crate::settings::DynamicsSettings;
 use crate::slice_kernel::SliceConstants;
+use rolldyn_contact::bar_force::BarForceLaw;
 use rolldyn_contact::damping::SliceDamping;
 use rolldyn_geometry::{
     Cage, CageGuidance, CylindricalRollerBearing, EndFace, PocketWalls, Profile, RacewayWearMap,
@@ -374,6 +375,9 @@ pub(crate) struct Model {
     pub raceway_diameters: (f64, f64),
     /// penetration reported as divergence, m ([`DynamicsSettings::divergence_penetration_m`])
     pub div_limit: f64,
+    /// pair-34 force law per roller slice ([`ContactParameters::roller_cage_law`] over the
+    /// roller's bar contact length)
+    pub bar_law: BarForceLaw,
     /// roller ends ↔ ribs and cage pocket faces
     pub ends: EndContacts,
 }
@@ -444,6 +448,7 @@ impl Model {
         let axis_i = [sb * c, sb * s, cb];
         let ends = EndContacts::new(bearing, cage, &params, ri, ro, &inner)?;
         let defaults = DynamicsSettings::default();
+        let bar_law = params.roller_cage_law(bearing.roller.bar_contact_length());
         Ok(Self {
             layout: Layout { rollers: z },
             z,
@@ -486,6 +491,7 @@ impl Model {
             params,
             rm,
             raceway_diameters,
+            bar_law,
             div_limit: defaults.divergence_penetration_m,
             ends,
         })

@@ -6,6 +6,7 @@
 //! 6 ribs (pair 56 roller ends ↔ ribs, pair 54 roller ends ↔ cage pocket faces).
 
 use crate::error::DynError;
+use rolldyn_contact::bar_force::{BarFilm, BarForceLaw, ElasticBarLaw, LubricatedBarLaw};
 use rolldyn_contact::damping::TwoLevelFriction;
 use rolldyn_contact::slices::SliceLaw;
 use rolldyn_geometry::CylindricalRollerBearing;
@@ -227,6 +228,10 @@ pub struct ContactParameters {
     pub outer_raceway: RacewayParameters,
     /// Pair 34, roller ↔ cage bar.
     pub roller_cage: PairParameters,
+    /// Force law of pair 34: `None` = the elastic law of [`Self::roller_cage`] (default);
+    /// `Some(film)` = the oil film between roller and bar down to its asperity film, the
+    /// elastic law below it (docs/theory.md §2.3.1); composed by [`Self::roller_cage_law`].
+    pub roller_cage_film: Option<BarFilm>,
     /// Pair 14 (or the outer-ring land), cage ↔ guiding land.
     pub cage_land: PairParameters,
     /// Pair 56, roller ends ↔ ring ribs (inner and outer ring, whichever have ribs).
@@ -266,9 +271,28 @@ impl ContactParameters {
                 damping_ramp_m: 1e-6,
             },
             roller_cage: PairParameters::roller_cage_default(),
+            roller_cage_film: None,
             cage_land: PairParameters::cage_land_default(),
             roller_end_rib: RollerEndParameters::rib_default(bearing),
             roller_end_cage: RollerEndParameters::pocket_default(bearing),
+        }
+    }
+
+    /// The pair-34 force law per roller slice: [`Self::roller_cage`]'s `K_p`, `n`, `C_h`, `d`
+    /// for the whole contact of `reference_length` (m; the bar contact length,
+    /// `rolldyn_contact::bar_force::bar_contact_length`), with the film when there is one.
+    pub fn roller_cage_law(&self, reference_length: f64) -> BarForceLaw {
+        let p = &self.roller_cage;
+        let elastic = ElasticBarLaw {
+            k_p: p.k_p,
+            exponent: p.exponent,
+            c_h: p.c_h,
+            d: p.d,
+            reference_length,
+        };
+        match self.roller_cage_film {
+            None => BarForceLaw::Elastic(elastic),
+            Some(film) => BarForceLaw::Lubricated(LubricatedBarLaw { elastic, film }),
         }
     }
 
@@ -278,6 +302,7 @@ impl ContactParameters {
         self.inner_raceway.damping_n_s_m = 0.0;
         self.outer_raceway.damping_n_s_m = 0.0;
         self.roller_cage = self.roller_cage.conservative();
+        self.roller_cage_film = None;
         self.cage_land = self.cage_land.conservative();
         self.roller_end_rib = self.roller_end_rib.conservative();
         self.roller_end_cage = self.roller_end_cage.conservative();
@@ -304,6 +329,9 @@ impl ContactParameters {
             }
         }
         self.roller_cage.validate("roller–cage (34)")?;
+        self.roller_cage_law(1.0)
+            .validate()
+            .map_err(|e| DynError::InvalidInput(format!("roller–cage (34): {e}")))?;
         self.cage_land.validate("cage–land (14)")?;
         self.roller_end_rib
             .contact

@@ -1247,6 +1247,32 @@ mod tests {
         .expect("valid model")
     }
 
+    /// The model's pair-34 law on a slice (`share` of the bar contact length) is the seed law
+    /// `share·K_p δⁿ + STEP(δ,0,0,d,share·C_h)·δ̇` (same arithmetic: equal to the last bit); with a
+    /// film it adds the film force above touch.
+    #[test]
+    fn bar_law_at_a_bar_point_is_the_seed_law() {
+        use rolldyn_contact::bar_force::{BarFilm, BarFilmSettings};
+        use rolldyn_contact::damping::SliceDamping;
+        let m = model_2002834();
+        let p = m.params.roller_cage;
+        let share = m.bar_slice_share[0];
+        let length = share * m.bar_law.reference_length();
+        let damping = SliceDamping::new(share * p.c_h, p.d);
+        for (delta, rate) in [(1e-7_f64, 0.1), (5e-7, -0.02), (2e-6, 0.0)] {
+            let seed = damping.normal_force(share * p.k_p * delta.powf(p.exponent), delta, rate);
+            assert_eq!(m.bar_law.normal_force(-delta, -rate, 20.0, length), seed);
+        }
+        assert_eq!(m.bar_law.reach(), 0.0);
+        let b = rolldyn_model::default_cylindrical_bearing();
+        assert_eq!(m.bar_law.reference_length(), b.roller.bar_contact_length());
+        let mut params = ContactParameters::for_bearing(&b);
+        params.roller_cage_film = BarFilm::of_bearing(&b, 3e-3, &BarFilmSettings::default());
+        let law = params.roller_cage_law(b.roller.bar_contact_length());
+        assert!(law.reach() > 0.0);
+        assert!(law.normal_force(5e-6, 0.0, 20.0, length) > 0.0);
+    }
+
     /// Every roller of 2002834 yawed by 2 mrad under 2 kN at 6371 rpm: on the loaded inner
     /// contacts the sliding gets an axial component of about u·sin(yaw) (the raceway surface
     /// crossing the skewed roller), the two components add up in squares to the sliding speed

@@ -17,7 +17,9 @@ pub mod schema;
 pub mod tapered;
 
 pub use convert::DEFAULT_SLICES;
-pub use dynamics::{CageLandLaw, DynamicsInputs, EndFrictionLaw, EndPairInputs, PairInputs};
+pub use dynamics::{
+    CageLandLaw, DynamicsInputs, EndFrictionLaw, EndPairInputs, PairInputs, RollerCageLaw,
+};
 pub use error::{MAX_QUOTED_CHARS, ModelError, shorten_long_words};
 pub use operation::{
     DEFAULT_STARTUP_REVOLUTIONS, FixedLoad, FrozenPoint, Lubrication, Operating, Schedules,

@@ -413,7 +413,7 @@ pub struct DynamicsSection {
     /// pairs 13, 23
     pub raceways: Option<RacewayPairSection>,
     /// pair 34
-    pub roller_cage: Option<PairSection>,
+    pub roller_cage: Option<RollerCageSection>,
     /// pair 14
     pub cage_land: Option<PairSection>,
     /// pair 56
@@ -453,6 +453,28 @@ pub struct FrictionSection {
 #[serde(deny_unknown_fields)]
 pub struct PairSection {
     /// K_p in SI, N/mⁿ (a plain number: its unit depends on n)
+    pub stiffness: Option<f64>,
+    pub exponent: Option<f64>,
+    pub damping: Option<Quantity<Damping>>,
+    pub damping_ramp: Option<Quantity<Length>>,
+    pub friction: Option<FrictionSection>,
+}
+
+/// Force law names of the roller ↔ cage bar contact (pair 34).
+#[derive(Debug, Deserialize, Clone, Copy, PartialEq, Eq)]
+#[serde(rename_all = "kebab-case")]
+pub enum BarLawName {
+    Elastic,
+    Lubricated,
+}
+
+/// The roller ↔ cage bar pair: a power-law pair with its force law.
+#[derive(Debug, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct RollerCageSection {
+    /// "elastic" (default) or "lubricated" (the oil film between roller and bar, then the
+    /// elastic law)
+    pub law: Option<BarLawName>,
     pub stiffness: Option<f64>,
     pub exponent: Option<f64>,
     pub damping: Option<Quantity<Damping>>,

@@ -1,7 +1,7 @@
 //! `[dynamics]`: cage drag and the SPEC Table 2.1 contact parameters, converted to SI; bad
 //! values name their key.
 
-use rolldyn_model::{CageLandLaw, EndFrictionLaw, parse};
+use rolldyn_model::{CageLandLaw, EndFrictionLaw, RollerCageLaw, parse};
 
 const GOOD: &str = rolldyn_model::DEFAULT_MODEL;
 
@@ -115,4 +115,24 @@ fn cage_land_law_parses_and_names_a_bad_value() {
     assert!(e.starts_with(&format!("m.toml:{line}:")), "{e}");
     assert!(e.contains("dynamics.cage_land_law"), "{e}");
     assert!(e.contains("contact") && !e.contains('\n'), "{e}");
+}
+
+/// `[dynamics.roller_cage] law`: elastic by default, "lubricated" for the film law, the pair's
+/// other keys kept; any other value is a one-line error naming the key.
+#[test]
+fn roller_cage_law_parses_and_names_a_bad_value() {
+    let default = parse(GOOD, "m.toml").unwrap();
+    assert_eq!(default.dynamics.roller_cage_law, RollerCageLaw::Elastic);
+    let m =
+        with_dynamics("[dynamics.roller_cage]\nlaw = \"lubricated\"\nstiffness = 7e8\n").unwrap();
+    assert_eq!(m.dynamics.roller_cage_law, RollerCageLaw::Lubricated);
+    assert_eq!(m.dynamics.roller_cage.k_p, Some(7e8));
+    let m = with_dynamics("[dynamics.roller_cage]\nlaw = \"elastic\"\n").unwrap();
+    assert_eq!(m.dynamics.roller_cage_law, RollerCageLaw::Elastic);
+    let e = with_dynamics("[dynamics.roller_cage]\nlaw = \"oily\"\n").unwrap_err();
+    assert!(e.contains("dynamics.roller_cage.law"), "{e}");
+    assert!(e.contains("lubricated") && !e.contains('\n'), "{e}");
+    let e = with_dynamics("[dynamics.roller_cage]\nlaw = \"lubricated\"\nexponent = 0.5\n")
+        .unwrap_err();
+    assert!(e.contains("dynamics.roller_cage.exponent"), "{e}");
 }

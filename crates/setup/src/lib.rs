@@ -283,6 +283,37 @@ fn contact_parameters(
     c
 }
 
+/// `[dynamics.roller_cage] law`: for "lubricated" the oil film between roller and bar
+/// (`rolldyn_contact::bar_force::BarFilm::of_bearing`, the oil's viscosity at the cage
+/// temperature `cage_k`), and without a `damping` key `C_h = 0`: the film is the damper the
+/// elastic law's `C_h` stands for, so both would count it twice (docs/theory.md §2.3.1).
+fn with_roller_cage_law(
+    mut parameters: ContactParameters,
+    bearing: &rolldyn_geometry::CylindricalRollerBearing,
+    lubrication: &rolldyn_model::Lubrication,
+    cage_k: f64,
+    inputs: &rolldyn_model::DynamicsInputs,
+) -> Result<ContactParameters, SetupError> {
+    if inputs.roller_cage_law != rolldyn_model::RollerCageLaw::Lubricated {
+        return Ok(parameters);
+    }
+    let oil = &lubrication.oil;
+    let viscosity = oil
+        .dynamic_viscosity(oil.clamp_temperature(cage_k))
+        .map_err(|e| SetupError(format!("dynamics.roller_cage.law: oil viscosity: {e}")))?;
+    let film = rolldyn_contact::bar_force::BarFilm::of_bearing(
+        bearing,
+        viscosity,
+        &rolldyn_contact::bar_force::BarFilmSettings::default(),
+    )
+    .ok_or_else(|| SetupError("dynamics.roller_cage.law: the bearing has no cage".into()))?;
+    parameters.roller_cage_film = Some(film);
+    if inputs.roller_cage.c_h.is_none() {
+        parameters.roller_cage.c_h = 0.0;
+    }
+    Ok(parameters)
+}
+
 /// A simulation of `model` ready to run, and its cage revolution period [s] (`None`: the
 /// rings start at rest, see [`Prepared::revolution_s`]).
 pub fn prepare(
@@ -392,8 +423,14 @@ pub fn prepare_with(
         }
         settings.integrator.tolerance = tol;
     }
-    let parameters = contact_parameters(bearing, inputs);
     let cage_temperature = conditions.temperatures.cage_k;
+    let parameters = with_roller_cage_law(
+        contact_parameters(bearing, inputs),
+        bearing,
+        lubrication,
+        cage_temperature,
+        inputs,
+    )?;
     let land_contact = rolldyn_dynamics::TwoLevelLand {
         parameters: parameters.cage_land,
     };
@@ -532,6 +569,37 @@ mod tests {
         );
         assert_eq!(p.cage_land, default.cage_land);
         assert_eq!(p.inner_raceway, default.inner_raceway);
+        assert_eq!(p.roller_cage_film, None);
+    }
+
+    /// `law = "lubricated"` gives the dynamics the film of the bearing's oil at the cage
+    /// temperature, and C_h = 0 unless the file sets `damping`.
+    #[test]
+    fn lubricated_roller_cage_law_reaches_the_parameters() {
+        let text = format!(
+            "{}\n[dynamics.roller_cage]\nlaw = \"lubricated\"\n",
+            &rolldyn_model::DEFAULT_MODEL[..rolldyn_model::DEFAULT_MODEL
+                .find("[dynamics.roller_cage]")
+                .expect("the example's bar law")]
+        );
+        let model = rolldyn_model::parse(&text, "m.toml").unwrap();
+        let (bearing, oil) = bearing_and_oil(&model).unwrap();
+        let p = with_roller_cage_law(
+            contact_parameters(bearing, &model.dynamics),
+            bearing,
+            oil,
+            373.15,
+            &model.dynamics,
+        )
+        .unwrap();
+        let film = p.roller_cage_film.expect("a film");
+        assert_eq!(film.radius, 0.5 * bearing.roller.diameter);
+        assert!(film.viscosity > 0.0 && film.cutoff > film.contact_film);
+        assert_eq!(p.roller_cage.c_h, 0.0);
+        assert!(matches!(
+            p.roller_cage_law(5e-3),
+            rolldyn_contact::bar_force::BarForceLaw::Lubricated(_)
+        ));
     }
 
     fn model_1032930() -> rolldyn_model::Model {

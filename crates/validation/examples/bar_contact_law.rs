@@ -6,16 +6,15 @@
 //!
 //! `cargo run --release -p rolldyn-validation --example bar_contact_law`
 
+use rolldyn_contact::bar_force::BarFilmSettings;
 use rolldyn_contact::cage_bar::{
-    BarLawInputs, DerivationSettings, DerivedBarLaw, Impact, ImpactSettings, PowerLaw,
-    critical_damping, derive_for_bearing, film_impact, matching_damping, step_law_impact,
+    BarLawInputs, BarLawKind, DerivationSettings, DerivedBarLaw, Impact, ImpactSettings, PowerLaw,
+    critical_damping, derive_for_bearing, film_impact, impact, matching_damping, step_law_impact,
 };
 use rolldyn_contact::damping::SliceDamping;
 use rolldyn_contact::hertz::LineApproachModel;
 use rolldyn_dynamics::PairParameters;
 use rolldyn_geometry::{BearingModel, CylindricalRollerBearing};
-use rolldyn_reynolds::line_contact::analytic;
-use rolldyn_reynolds::line_contact::transient::{RigidIsoviscous, TransientOptions, simulate};
 use std::path::Path;
 
 /// Impact speeds of the restitution table (m/s).
@@ -68,10 +67,15 @@ fn print_case(
     print_film_table(&inputs, &law);
     let spin = b.epicyclic_roller_speed(inner_rpm * std::f64::consts::PI / 30.0, 0.0);
     println!(
-        "\nwith the hydrodynamic lift (roller spin {:.0} rad/s at {inner_rpm} rpm), film only, reynolds::line_contact::transient:\n",
+        "\nwith the hydrodynamic lift (roller spin {:.0} rad/s at {inner_rpm} rpm), the library's lubricated law (bar_force, theory (9f)):\n",
         spin.abs()
     );
-    let c_h = lift_damping(&inputs, &law, spin.abs() * inputs.film.radius, &settings)?;
+    let c_h = lift_damping(
+        &inputs,
+        &law,
+        0.5 * spin.abs() * inputs.film.radius,
+        &settings,
+    )?;
     print_reference_rows(
         inputs.roller_mass,
         law.elastic,
@@ -162,26 +166,29 @@ fn print_film_table(inputs: &BarLawInputs, law: &DerivedBarLaw) {
     }
 }
 
-/// The film with the lift per speed; returns the chosen C_h: matched to the film with the lift
+/// The lubricated law per speed; returns the chosen C_h: matched to the film with the lift
 /// where it turns the roller above d at the reference speed, else the squeeze-film value.
 fn lift_damping(
     inputs: &BarLawInputs,
     law: &DerivedBarLaw,
-    sum_speed: f64,
+    entrainment_speed: f64,
     settings: &DerivationSettings,
 ) -> Result<f64, String> {
-    println!("| impact speed (m/s) | e | thinnest film (µm) | peak film force (N) |");
+    println!(
+        "| impact speed (m/s) | e | thinnest film (µm; < 0: elastic approach) | peak force (N) |"
+    );
     println!("|---|---|---|---|");
     for v in SPEEDS {
-        let (e, h_min, peak) = lift_impact(inputs, sum_speed, v)?;
-        if h_min < law.d {
-            println!("| {v} | — | below d: the asperities meet (tables above) | — |");
+        let (e, h_min, peak) = lift_impact(inputs, law, entrainment_speed, v);
+        let note = if h_min < law.d {
+            " (asperities meet)"
         } else {
-            println!("| {v} | {e:.3} | {:.2} | {peak:.1} |", h_min * 1e6);
-        }
+            ""
+        };
+        println!("| {v} | {e:.3} | {:.2}{note} | {peak:.1} |", h_min * 1e6);
     }
     let (m, v_ref) = (inputs.roller_mass, settings.reference_speed);
-    let (e_lift, h_min, _) = lift_impact(inputs, sum_speed, v_ref)?;
+    let (e_lift, h_min, _) = lift_impact(inputs, law, entrainment_speed, v_ref);
     if h_min < law.d {
         println!(
             "\nchosen: the asperities meet at {v_ref} m/s even with the lift: C_h = {:.0} N·s/m (squeeze film and contact) at d = {:.2} µm",
@@ -232,6 +239,7 @@ fn print_reference_rows(mass: f64, elastic: PowerLaw, chosen: SliceDamping) {
         let Impact {
             restitution,
             peak_force,
+            ..
         } = step_law_impact(mass, 0.1, elastic, damping, ImpactSettings::default());
         println!(
             "| {name} | {:.3e} | {:.2} | {:.1} | {:.2} | {restitution:.3} | {peak_force:.1} |",
@@ -243,47 +251,28 @@ fn print_reference_rows(mass: f64, elastic: PowerLaw, chosen: SliceDamping) {
     }
 }
 
-/// Cross-check with the project's Reynolds crate: the film alone, squeeze *and* the
-/// hydrodynamic lift of the roller spinning against the bar (seed 002 (5.7), rigid isoviscous
-/// (3.17)–(3.20) with the exact W₀′, W₁′), no external force, from a 50 µm gap at −v back to it.
-/// Returns the restitution, the thinnest film (m) and the largest film force (N).
+/// A roller striking the bar through the library's lubricated law (squeeze and wedge film,
+/// then the elastic law; theory (9f)) at `speed` from a 50 µm gap, RK4 until it is back there.
+/// Returns the restitution, the thinnest gap (m, negative = elastic approach) and the largest
+/// force (N).
 fn lift_impact(
     inputs: &BarLawInputs,
-    sum_speed: f64,
+    law: &DerivedBarLaw,
+    entrainment_speed: f64,
     speed: f64,
-) -> Result<(f64, f64, f64), String> {
-    let (w0c, w1c) = analytic::load_coefficients().map_err(|e| e.to_string())?;
-    let film = RigidIsoviscous {
-        mu: inputs.film.viscosity,
-        v: sum_speed,
-        r: inputs.film.radius,
-        length: inputs.film.length,
-        w0c,
-        w1c,
-    };
-    let h0 = 50e-6;
-    let samples = simulate(
-        &film,
+) -> (f64, f64, f64) {
+    let lubricated = law.force_law(inputs, BarLawKind::Lubricated, &BarFilmSettings::default());
+    let (h0, length) = (50e-6, inputs.film.length);
+    let film_damping = inputs.film.damping(inputs.contact_film);
+    let i = impact(
         inputs.roller_mass,
-        &|_| 0.0,
-        h0,
-        -speed,
-        20.0 * h0 / speed,
-        &TransientOptions::default(),
-    )
-    .map_err(|e| e.to_string())?;
-    let h_min = samples.iter().map(|s| s.h).fold(f64::INFINITY, f64::min);
-    let peak = samples.iter().map(|s| s.reaction).fold(0.0, f64::max);
-    // the first outward crossing of h0, ḣ interpolated linearly in h between the samples
-    let back = samples
-        .windows(2)
-        .find(|w| w[1].hdot > 0.0 && w[0].h < h0 && w[1].h >= h0)
-        .map(|w| {
-            let t = (h0 - w[0].h) / (w[1].h - w[0].h);
-            w[0].hdot + t * (w[1].hdot - w[0].hdot)
-        })
-        .ok_or("the roller did not leave the film within the time span")?;
-    Ok((back / speed, h_min, peak))
+        speed,
+        law.elastic,
+        film_damping,
+        |d, v| lubricated.normal_force(h0 - d, -v, entrainment_speed, length),
+        ImpactSettings::default(),
+    );
+    (i.restitution, h0 - i.max_penetration, i.peak_force)
 }
 
 fn run() -> Result<(), String> {

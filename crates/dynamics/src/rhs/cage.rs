@@ -99,9 +99,10 @@ pub(super) fn detect(
 
 /// Roller `j` ↔ the walls of its pocket: every slice of the roller (its profiled radius) against
 /// both walls, each wall the nearest of its faces and lips, the normal from the geometry. Each
-/// slice carries the share `l_i/L_b` of the pair's `K_p` and `C_h`
-/// ([`Model::bar_slice_share`]): `Q = K_p' δⁿ + C(δ) δ̇` (seed 000 (2.5)–(2.8)), friction
-/// `μ(v_s) Q` against the sliding velocity. Adds the forces to the roller and their reaction to
+/// slice carries the share `l_i/L_b` of the pair's law ([`Model::bar_slice_share`],
+/// [`rolldyn_contact::bar_force::BarForceLaw`]): elastic `Q = K_p' δⁿ + C(δ) δ̇` (seed 000
+/// (2.5)–(2.8)), or the oil film's squeeze and wedge force within its reach plus that law on
+/// touch; friction `μ(v_s) Q` against the sliding velocity. Adds the forces to the roller and their reaction to
 /// the cage.
 #[inline(always)]
 pub(super) fn bar_contacts(
@@ -114,7 +115,8 @@ pub(super) fn bar_contacts(
     violation: &mut Option<Violation>,
 ) -> BarSums {
     let mut sums = BarSums::default();
-    if pockets.clearance_bound[j] > 0.0 {
+    let law = &model.bar_law;
+    if pockets.clearance_bound[j] > law.reach() {
         return sums;
     }
     let bar = &model.params.roller_cage;
