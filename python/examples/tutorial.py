@@ -22,7 +22,7 @@ out.mkdir(parents=True, exist_ok=True)
 # %% [markdown]
 # ## The bearing
 # The cylindrical roller bearing 2002834 of seed 000 (gas-turbine main shaft): 18 rollers of
-# 15 × 11 mm on a 180 mm pitch circle, an outer-land-guided machined cage, 8163 rpm and 1860 N
+# 15 × 11 mm on a 180 mm pitch circle, an inner-land-guided machined cage, 8163 rpm and 1600 N
 # rotating with the inner ring. `check` gives the derived quantities.
 
 # %%

@@ -174,6 +174,6 @@ fn lubricant_errors_name_the_key() {
     );
     let m = error_after("density = \"930 kg/m3\"", "density = \"-930 kg/m3\"");
     assert!(m.contains("lubricant") && m.contains("density"), "{m}");
-    let m = error_after("radial_load = \"1860 N\"", "radial_load = \"1000 mm\"");
+    let m = error_after("radial_load = \"1600 N\"", "radial_load = \"1000 mm\"");
     assert!(m.contains("operating.radial_load"), "{m}");
 }
