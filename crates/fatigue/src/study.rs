@@ -59,6 +59,10 @@ impl Default for FatigueSettings {
     }
 }
 
+/// The stress safety factor the cage must meet: the seed's "1.5" (seed 000 §3.1.1.8) read as a
+/// requirement on [`FatigueAnswer::stress_safety_factor`], not a measured margin.
+pub const REQUIRED_STRESS_SAFETY_FACTOR: f64 = 1.5;
+
 /// The cage of `bearing` as the stress models see it: its ring, material and pocket profile,
 /// with the fillet radius `fillet_radius_m` when given (else the model's).
 pub fn cage_geometry(
@@ -168,6 +172,9 @@ pub struct FatigueAnswer {
     /// allowable amplitude at the knee of the S–N curve over the largest equivalent amplitude at
     /// the critical location: ≥ 1 means no damage (seed 000 §3.1.1.8 "stress margin")
     pub endurance_margin: f64,
+    /// the stress safety factor the cage meets: the endurance margin times the safety factor
+    /// already applied to the S–N curve (the margin on the coated curve alone)
+    pub stress_safety_factor: f64,
     pub maxima: Option<RevolutionMaxima>,
     pub inclusion_life_revolutions: Option<f64>,
     pub inclusion_max_stress_pa: Option<f64>,
@@ -286,6 +293,8 @@ pub fn evaluate(
         critical_point_m: fatigue[critical].point_m,
         max_stress_pa: max_stress,
         endurance_margin: endurance / largest_equivalent,
+        stress_safety_factor: endurance / largest_equivalent
+            * settings.sn.settings().stress_safety_factor,
         maxima,
         inclusion_life_revolutions: None,
         inclusion_max_stress_pa: None,

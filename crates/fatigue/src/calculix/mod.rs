@@ -18,6 +18,7 @@ use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
+pub use geometry::{geo_script, window_bands};
 pub use points::fillet_arc_midpoint;
 
 /// Knobs of the solid model.
