@@ -11,9 +11,7 @@
 //! under a rotation of the cage by whole pitches, which is how a unit load case at pocket 0
 //! gives the stresses for a load at any pocket (cyclic symmetry of the cage).
 
-use rolldyn_geometry::{
-    BarSection, CagePocket, GeometryError, PocketContext, PocketWalls,
-};
+use rolldyn_geometry::{BarSection, CagePocket, GeometryError, PocketContext, PocketWalls};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
@@ -121,7 +119,9 @@ impl CageGeometry {
         let mut h = self.half_window_at(rho);
         for _ in 0..50 {
             let next = (r * r - h * h).max(0.0).sqrt();
-            let next_h = self.half_window_at(next).min(self.half_window_at(next + 1e-12));
+            let next_h = self
+                .half_window_at(next)
+                .min(self.half_window_at(next + 1e-12));
             if (next_h - h).abs() < 1e-15 && (next - rho).abs() < 1e-15 {
                 break;
             }
@@ -168,9 +168,7 @@ impl CageGeometry {
             && f < narrowest
             && f < 0.5 * section.width_min)
         {
-            out.push(
-                "the fillet radius must be below half the rim, window and bar sizes".into(),
-            );
+            out.push("the fillet radius must be below half the rim, window and bar sizes".into());
         }
         out
     }

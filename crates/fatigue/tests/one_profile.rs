@@ -61,7 +61,10 @@ fn one_profile_key_moves_stress_contact_section_and_mass() {
     // a wider lip window: a narrower bar at the lip and less cage; the lip's fillet moves
     // inwards (its stress `M z/I` falls with `z` faster than `I` does)
     let (s0, s1) = (section(&base), section(&wider));
-    assert!(s1.area < s0.area && s1.width_outer < s0.width_outer, "{s0:?} {s1:?}");
+    assert!(
+        s1.area < s0.area && s1.width_outer < s0.width_outer,
+        "{s0:?} {s1:?}"
+    );
     assert_eq!(s1.width_inner, s0.width_inner);
     assert!(mass(&wider) < mass(&base));
     let (f0, f1) = (outer_fillet_stress(&base), outer_fillet_stress(&wider));

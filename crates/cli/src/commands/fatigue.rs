@@ -260,7 +260,10 @@ fn run_life(args: Args) -> Result<(), Failure> {
         }
     };
     // an export read back keeps its model's fillet unless the command line overrides it
-    export.header.cage = export.header.cage.with_fillet_radius(settings.fillet_radius_m);
+    export.header.cage = export
+        .header
+        .cage
+        .with_fillet_radius(settings.fillet_radius_m);
     let dynamics_s = wall.elapsed().as_secs_f64();
     let unit = unit_stresses(&args, &export, &settings)?;
     let result = evaluate(&unit, &export, maxima, &settings).map_err(Failure::Run)?;

@@ -78,12 +78,7 @@ pub fn geo_script(cage: &CageGeometry, settings: &CalculixSettings) -> String {
     let _ = writeln!(
         s,
         "ri = {:e}; ro = {:e}; w = {:e}; pa = {:e}; f = {:e}; Z = {};",
-        cage.inner_radius,
-        cage.outer_radius,
-        cage.width,
-        cage.pocket.axial,
-        f,
-        cage.pockets
+        cage.inner_radius, cage.outer_radius, cage.width, cage.pocket.axial, f, cage.pockets
     );
     s.push_str(SECTOR);
     for (k, (r0, r1, hw)) in window_bands(cage).into_iter().enumerate() {

@@ -90,8 +90,8 @@ mod tests {
             let (s, c) = cage.pocket_angle(pocket).sin_cos();
             let across = -m[0] * s + m[1] * c;
             let half = cage.window_edge_on(r)[1];
-            let from_axis = (across.abs() - (half - f))
-                .hypot(m[2].abs() - (0.5 * cage.pocket.axial - f));
+            let from_axis =
+                (across.abs() - (half - f)).hypot(m[2].abs() - (0.5 * cage.pocket.axial - f));
             assert!((from_axis - f).abs() < 1e-12);
         }
     }

@@ -109,7 +109,11 @@ fn radial(angle: f64) -> [f64; 3] {
 }
 
 impl Frame {
-    fn build(cage: &CageGeometry, bar_z: f64, settings: &FrameSettings) -> Result<Self, FrameError> {
+    fn build(
+        cage: &CageGeometry,
+        bar_z: f64,
+        settings: &FrameSettings,
+    ) -> Result<Self, FrameError> {
         let bar = cage
             .bar_section()
             .map_err(|e| FrameError::Geometry(e.to_string()))?;
