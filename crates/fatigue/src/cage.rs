@@ -11,10 +11,13 @@
 //! under a rotation of the cage by whole pitches, which is how a unit load case at pocket 0
 //! gives the stresses for a load at any pocket (cyclic symmetry of the cage).
 
+use rolldyn_geometry::{BarSection, CagePocket, GeometryError, PocketContext, PocketWalls};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
-/// Geometry and material of a bar-type (machined window) cage, SI.
+/// Geometry and material of a bar-type (machined window) cage, SI: the ring, and its pocket
+/// as [`CagePocket`] (faces, retaining lips, axial size, fillet radius) resolved with the
+/// roller and pitch radii — the one profile that also feeds the contact law and the mass.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct CageGeometry {
     /// number of pockets Z
@@ -25,14 +28,13 @@ pub struct CageGeometry {
     pub outer_radius: f64,
     /// axial width, m
     pub width: f64,
-    /// axial size of a window, m
-    pub pocket_axial: f64,
-    /// circumferential size of a window (parallel flanks), m
-    pub pocket_circumferential: f64,
-    /// radius of the roller ↔ bar contact line, m
-    pub bar_contact_radius: f64,
-    /// radius of the window-corner fillet between bar and rim, m
-    pub fillet_radius: f64,
+    /// the pocket profile (`cage.pocket` of the model)
+    pub pocket: CagePocket,
+    /// roller radius and pitch radius, what the profile needs of the bearing, m
+    pub roller_radius: f64,
+    pub pitch_radius: f64,
+    /// where a centred roller touches the bar, pocket coordinates `(ρ, h)` of pocket 0, m
+    pub bar_contact: [f64; 2],
     /// Young's modulus, Pa
     pub youngs_modulus: f64,
     pub poisson_ratio: f64,
@@ -51,9 +53,19 @@ impl CageGeometry {
         self.pocket_angle(b) + PI / self.pockets as f64
     }
 
+    /// Axial size of a window, m.
+    pub fn pocket_axial(&self) -> f64 {
+        self.pocket.axial
+    }
+
+    /// Radius of the window-corner fillet between bar and rim, m.
+    pub fn fillet_radius(&self) -> f64 {
+        self.pocket.fillet_radius
+    }
+
     /// Axial thickness of one rim, m.
     pub fn rim_axial(&self) -> f64 {
-        0.5 * (self.width - self.pocket_axial)
+        0.5 * (self.width - self.pocket.axial)
     }
 
     /// Radial thickness of rims and bars, m.
@@ -61,14 +73,69 @@ impl CageGeometry {
         self.outer_radius - self.inner_radius
     }
 
-    /// Circumferential width of a bar at radius `r` (pitch arc minus the window), m.
-    pub fn bar_width_at(&self, r: f64) -> f64 {
-        2.0 * PI * r / self.pockets as f64 - self.pocket_circumferential
-    }
-
     /// Mean radius of rims and bars, m.
     pub fn mean_radius(&self) -> f64 {
         0.5 * (self.inner_radius + self.outer_radius)
+    }
+
+    /// What the pocket profile needs of the bearing.
+    pub fn context(&self) -> PocketContext {
+        PocketContext {
+            roller_radius: self.roller_radius,
+            pitch_radius: self.pitch_radius,
+            cage_inner_radius: self.inner_radius,
+            cage_outer_radius: self.outer_radius,
+            pockets: self.pockets,
+        }
+    }
+
+    /// The pocket walls ([`CagePocket::walls`]).
+    pub fn walls(&self) -> Result<PocketWalls, GeometryError> {
+        self.pocket.walls(&self.context())
+    }
+
+    /// The bar's cross-section ([`CagePocket::bar_section`]).
+    pub fn bar_section(&self) -> Result<BarSection, GeometryError> {
+        self.pocket.bar_section(&self.context())
+    }
+
+    /// Tangential half-width of the window at `ρ` ([`PocketWalls::half_window_at`]; NaN for a
+    /// profile [`CageGeometry::problems`] refuses), m.
+    pub fn half_window_at(&self, rho: f64) -> f64 {
+        self.walls().map_or(f64::NAN, |w| w.half_window_at(rho))
+    }
+
+    /// Circumferential width of a bar at radius `r` ([`PocketWalls::bar_width_at`]), m.
+    pub fn bar_width_at(&self, r: f64) -> f64 {
+        self.walls()
+            .map_or(f64::NAN, |w| w.bar_width_at(r, self.pockets))
+    }
+
+    /// Where the window's flank meets the cylinder of radius `r`, pocket coordinates `(ρ, h)`:
+    /// `h = w(ρ)` with `ρ² + h² = r²`, by fixed-point iteration from `ρ = r` (a step of the
+    /// profile at the crossing resolves to its narrower side), m.
+    pub fn window_edge_on(&self, r: f64) -> [f64; 2] {
+        let mut rho = r;
+        let mut h = self.half_window_at(rho);
+        for _ in 0..50 {
+            let next = (r * r - h * h).max(0.0).sqrt();
+            let next_h = self
+                .half_window_at(next)
+                .min(self.half_window_at(next + 1e-12));
+            if (next_h - h).abs() < 1e-15 && (next - rho).abs() < 1e-15 {
+                break;
+            }
+            (rho, h) = (next, next_h);
+        }
+        [(r * r - h * h).max(0.0).sqrt(), h]
+    }
+
+    /// The cage with the fillet radius `f` (the command line's override), or as it is.
+    pub fn with_fillet_radius(mut self, f: Option<f64>) -> Self {
+        if let Some(f) = f {
+            self.pocket.fillet_radius = f;
+        }
+        self
     }
 
     /// The reasons this cage cannot be modelled (empty when it can).
@@ -79,17 +146,29 @@ impl CageGeometry {
         }
         if !(self.inner_radius > 0.0 && self.outer_radius > self.inner_radius) {
             out.push("the outside diameter must exceed the bore".into());
+            return out;
         }
-        if !(self.pocket_axial > 0.0 && self.pocket_axial < self.width) {
+        if !(self.pocket.axial > 0.0 && self.pocket.axial < self.width) {
             out.push("the axial window size must be below the cage width".into());
         }
-        if !(self.pocket_circumferential > 0.0 && self.bar_width_at(self.inner_radius) > 0.0) {
-            out.push("the windows leave no bar at the bore".into());
-        }
-        if !(self.fillet_radius >= 0.0
-            && 2.0 * self.fillet_radius < self.rim_axial().min(self.pocket_axial))
+        let section = match self.bar_section() {
+            Ok(s) => s,
+            Err(e) => {
+                out.push(format!("the windows leave no bar: {e}"));
+                return out;
+            }
+        };
+        let narrowest = [self.inner_radius, self.outer_radius]
+            .map(|r| self.window_edge_on(r)[1])
+            .into_iter()
+            .fold(f64::INFINITY, f64::min);
+        let f = self.fillet_radius();
+        if !(f >= 0.0
+            && 2.0 * f < self.rim_axial().min(self.pocket.axial)
+            && f < narrowest
+            && f < 0.5 * section.width_min)
         {
-            out.push("the fillet radius must be below half the rim and window sizes".into());
+            out.push("the fillet radius must be below half the rim, window and bar sizes".into());
         }
         out
     }
@@ -117,7 +196,7 @@ impl PocketSide {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(tag = "kind", rename_all = "snake_case")]
 pub enum Station {
-    /// on the flank of a bar at the bar contact radius, at axial station `end` (0: `z < 0`)
+    /// on the flank of a bar where a centred roller touches it, at axial station `end` (0: `z < 0`)
     Bar { side: PocketSide, end: usize },
     /// on the rim face that closes the window axially (`end` 0: rim 0), at the mean radius
     PocketEnd { end: usize },
@@ -171,19 +250,18 @@ impl Station {
     /// Point of the station of pocket 0 in cage coordinates, m (`bar_z`: the axial position of
     /// the bar stations).
     pub fn point(self, cage: &CageGeometry, bar_z: BarStationZ) -> [f64; 3] {
-        let half_window = 0.5 * cage.pocket_circumferential;
-        let rim_z = 0.5 * (cage.pocket_axial + cage.rim_axial());
+        let rim_z = 0.5 * (cage.pocket.axial + cage.rim_axial());
         let end_sign = |end: usize| if end == 0 { -1.0 } else { 1.0 };
         match self {
             Station::Bar { side, end } => [
-                cage.bar_contact_radius,
-                side.sign() * half_window,
+                cage.bar_contact[0],
+                side.sign() * cage.bar_contact[1].abs(),
                 end_sign(end) * bar_z,
             ],
             Station::PocketEnd { end } => [
                 cage.mean_radius(),
                 0.0,
-                end_sign(end) * 0.5 * cage.pocket_axial,
+                end_sign(end) * 0.5 * cage.pocket.axial,
             ],
             Station::Land { rim, at_bar } => {
                 let angle = if at_bar {
@@ -257,8 +335,9 @@ impl FilletPoint {
         }
     }
 
-    /// Position of the corner the fillet rounds, cage coordinates, m: where the bar flank meets
-    /// the rim face on the outside or bore surface.
+    /// Position of the corner the fillet rounds, cage coordinates, m: where the bar flank (the
+    /// profile's face or lip, [`CageGeometry::window_edge_on`]) meets the rim face on the
+    /// outside or bore surface.
     pub fn corner(self, cage: &CageGeometry) -> [f64; 3] {
         let r = match self.face {
             Face::Outer => cage.outer_radius,
@@ -268,11 +347,10 @@ impl FilletPoint {
             PocketSide::Minus => self.bar,
             PocketSide::Plus => (self.bar + 1) % cage.pockets,
         };
-        // the flank is the plane at distance ±w/2 from the pocket's centre line
-        let flank = -self.side.sign() * 0.5 * cage.pocket_circumferential;
-        let along = (r * r - flank * flank).max(0.0).sqrt();
+        let [along, half] = cage.window_edge_on(r);
+        let flank = -self.side.sign() * half;
         let (s, c) = cage.pocket_angle(pocket).sin_cos();
-        let z = if self.rim == 0 { -1.0 } else { 1.0 } * 0.5 * cage.pocket_axial;
+        let z = if self.rim == 0 { -1.0 } else { 1.0 } * 0.5 * cage.pocket.axial;
         [along * c - flank * s, along * s + flank * c, z]
     }
 
@@ -294,16 +372,28 @@ impl FilletPoint {
 pub(crate) mod tests {
     use super::*;
 
+    /// The 2002834 cage: flat faces 19 mm apart, outer lips on Ø192.5 mm 11.25 mm apart.
     pub(crate) fn cage_2002834() -> CageGeometry {
         CageGeometry {
             pockets: 18,
             inner_radius: 86.75e-3,
             outer_radius: 97.0e-3,
             width: 20e-3,
-            pocket_axial: 11.25e-3,
-            pocket_circumferential: 11.25e-3,
-            bar_contact_radius: 96.25e-3,
-            fillet_radius: 1e-3,
+            pocket: CagePocket {
+                faces: rolldyn_geometry::PocketFaces::Flat,
+                face_clearance: 4e-3,
+                outer_lip: Some(rolldyn_geometry::RetainingLip {
+                    diameter: 192.5e-3,
+                    window: 11.25e-3,
+                    tip_radius: 0.0,
+                }),
+                inner_lip: None,
+                axial: 11.25e-3,
+                fillet_radius: 1e-3,
+            },
+            roller_radius: 7.5e-3,
+            pitch_radius: 90e-3,
+            bar_contact: [96.085e-3, 5.625e-3],
             youngs_modulus: 211e9,
             poisson_ratio: 0.3,
             density: 7850.0,
@@ -319,6 +409,15 @@ pub(crate) mod tests {
     }
 
     #[test]
+    fn outer_corners_sit_on_the_lips_and_bore_corners_on_the_faces() {
+        let cage = cage_2002834();
+        assert!((cage.window_edge_on(cage.outer_radius)[1] - 5.625e-3).abs() < 1e-15);
+        assert!((cage.window_edge_on(cage.inner_radius)[1] - 9.5e-3).abs() < 1e-15);
+        let [rho, h] = cage.window_edge_on(cage.outer_radius);
+        assert!((rho.hypot(h) - cage.outer_radius).abs() < 1e-15);
+    }
+
+    #[test]
     fn corners_sit_on_the_window_flanks() {
         let cage = cage_2002834();
         assert!(cage.problems().is_empty());
@@ -330,7 +429,8 @@ pub(crate) mod tests {
             };
             let (s, c) = cage.pocket_angle(pocket).sin_cos();
             let across = -x * s + y * c;
-            assert!((across.abs() - 0.5 * cage.pocket_circumferential).abs() < 1e-12);
+            let along = x * c + y * s;
+            assert!((across.abs() - cage.half_window_at(along)).abs() < 1e-12);
             // the corner lies between the pocket centre and the bar centre line
             let theta = y.atan2(x).rem_euclid(2.0 * PI);
             let bar = cage.bar_angle(p.bar).rem_euclid(2.0 * PI);

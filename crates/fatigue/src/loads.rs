@@ -96,7 +96,7 @@ pub struct CageLoadExport {
 
 /// Format name and version written to the header.
 pub const FORMAT: &str = "rolldyn-cage-loads";
-pub const VERSION: u32 = 1;
+pub const VERSION: u32 = 2;
 
 /// The header file beside a load table: `loads.parquet` → `loads.json` (any other name gets
 /// `.json` appended).
@@ -228,19 +228,7 @@ mod tests {
 
     #[test]
     fn an_export_reads_back_as_written() {
-        let cage = CageGeometry {
-            pockets: 3,
-            inner_radius: 0.05,
-            outer_radius: 0.06,
-            width: 0.02,
-            pocket_axial: 0.01,
-            pocket_circumferential: 0.01,
-            bar_contact_radius: 0.055,
-            fillet_radius: 5e-4,
-            youngs_modulus: 2e11,
-            poisson_ratio: 0.3,
-            density: 7800.0,
-        };
+        let cage = crate::cage::tests::cage_2002834();
         let set = |angle: f64, contacts: Vec<ContactLoad>| LoadSet {
             cage_angle_deg: angle,
             time_s: angle * 1e-4,

@@ -34,9 +34,9 @@ pub struct FatigueSettings {
     pub settle_revolutions: u32,
     /// output samples per 2° load set (each set is the nearest sample); default 4
     pub samples_per_set: f64,
-    /// radius of the window-corner fillet, m; default 0.5 mm (ASSUMED: seed 000 §3.1.1.8 names
-    /// the fillet but not its radius)
-    pub fillet_radius_m: f64,
+    /// radius of the window-corner fillet, m, overriding the model's `cage.pocket.fillet_radius`
+    /// (`None`: the model's)
+    pub fillet_radius_m: Option<f64>,
     pub frame: FrameSettings,
     pub sn: SnCurve,
     pub mean_stress: MeanStressSettings,
@@ -50,7 +50,7 @@ impl Default for FatigueSettings {
             stress_model: StressModelKind::Frame,
             settle_revolutions: 8,
             samples_per_set: 4.0,
-            fillet_radius_m: 0.5e-3,
+            fillet_radius_m: None,
             frame: FrameSettings::default(),
             sn: SnCurve::aisi_4340(),
             mean_stress: MeanStressSettings::default(),
@@ -59,32 +59,36 @@ impl Default for FatigueSettings {
     }
 }
 
-/// The cage of `bearing` as the stress models see it.
+/// The stress safety factor the cage must meet: the seed's "1.5" (seed 000 §3.1.1.8) read as a
+/// requirement on [`FatigueAnswer::stress_safety_factor`], not a measured margin.
+pub const REQUIRED_STRESS_SAFETY_FACTOR: f64 = 1.5;
+
+/// The cage of `bearing` as the stress models see it: its ring, material and pocket profile,
+/// with the fillet radius `fillet_radius_m` when given (else the model's).
 pub fn cage_geometry(
     bearing: &CylindricalRollerBearing,
-    fillet_radius_m: f64,
+    fillet_radius_m: Option<f64>,
 ) -> Result<CageGeometry, String> {
     let cage = bearing
         .cage
         .as_ref()
         .ok_or("cage fatigue needs a cage ([cage] in the model)")?;
     let ctx = bearing.pocket_context(cage);
-    let walls = cage.pocket.walls(&ctx).map_err(|e| e.to_string())?;
-    let section = cage.pocket.bar_section(&ctx).map_err(|e| e.to_string())?;
     let play = cage.pocket.play(&ctx).map_err(|e| e.to_string())?;
     let geometry = CageGeometry {
-        pockets: bearing.roller_count,
-        inner_radius: 0.5 * cage.inner_diameter,
-        outer_radius: 0.5 * cage.outer_diameter,
+        pockets: ctx.pockets,
+        inner_radius: ctx.cage_inner_radius,
+        outer_radius: ctx.cage_outer_radius,
         width: cage.width,
-        pocket_axial: cage.pocket.axial,
-        pocket_circumferential: 2.0 * walls.half_window_at(section.centroid_radius),
-        bar_contact_radius: 0.5 * play.circumferential_contact_diameter,
-        fillet_radius: fillet_radius_m,
+        pocket: cage.pocket,
+        roller_radius: ctx.roller_radius,
+        pitch_radius: ctx.pitch_radius,
+        bar_contact: play.circumferential_contact,
         youngs_modulus: cage.material.youngs_modulus,
         poisson_ratio: cage.material.poisson_ratio,
         density: cage.material.density,
-    };
+    }
+    .with_fillet_radius(fillet_radius_m);
     let problems = geometry.problems();
     if problems.is_empty() {
         Ok(geometry)
@@ -168,6 +172,9 @@ pub struct FatigueAnswer {
     /// allowable amplitude at the knee of the S–N curve over the largest equivalent amplitude at
     /// the critical location: ≥ 1 means no damage (seed 000 §3.1.1.8 "stress margin")
     pub endurance_margin: f64,
+    /// the stress safety factor the cage meets: the endurance margin times the safety factor
+    /// already applied to the S–N curve (the margin on the coated curve alone)
+    pub stress_safety_factor: f64,
     pub maxima: Option<RevolutionMaxima>,
     pub inclusion_life_revolutions: Option<f64>,
     pub inclusion_max_stress_pa: Option<f64>,
@@ -286,6 +293,8 @@ pub fn evaluate(
         critical_point_m: fatigue[critical].point_m,
         max_stress_pa: max_stress,
         endurance_margin: endurance / largest_equivalent,
+        stress_safety_factor: endurance / largest_equivalent
+            * settings.sn.settings().stress_safety_factor,
         maxima,
         inclusion_life_revolutions: None,
         inclusion_max_stress_pa: None,

@@ -67,7 +67,7 @@ pub fn station_loads(cage: &CageGeometry, bar_z: f64, c: &ContactLoad) -> Vec<St
             let angle = c.point_m[1].atan2(c.point_m[0]).rem_euclid(2.0 * PI);
             let u = angle / half_pitch;
             let (h0, frac) = (u.floor() as usize, u - u.floor());
-            let rim_z = 0.5 * (cage.pocket_axial + cage.rim_axial());
+            let rim_z = 0.5 * (cage.pocket.axial + cage.rim_axial());
             let up = upper_share(c.point_m[2], rim_z);
             let mut out = Vec::with_capacity(4);
             for (h, w_angle) in [(h0, 1.0 - frac), (h0 + 1, frac)] {

@@ -15,7 +15,7 @@ fn reference_cage_at_the_default_mesh() {
     let rolldyn_geometry::BearingModel::Cylindrical(bearing) = &model.bearing else {
         panic!("the embedded model is cylindrical");
     };
-    let cage = cage_geometry(bearing, 1e-3).unwrap();
+    let cage = cage_geometry(bearing, Some(1e-3)).unwrap();
     let settings = CalculixSettings::default();
     let solution = solve(&cage, 4.4e-3, &settings, None).unwrap();
     let r = &solution.report;

@@ -21,7 +21,8 @@ use crate::mass::MassProperties;
 use std::f64::consts::{PI, TAU};
 
 /// Shape of the pocket faces in the cage's transverse plane.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "snake_case")]
 pub enum PocketFaces {
     /// Parallel flat faces (a broached or milled window).
     Flat,
@@ -30,7 +31,7 @@ pub enum PocketFaces {
 }
 
 /// A retaining lip: the window narrows below the roller diameter at the lip circle.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct RetainingLip {
     /// Diameter of the circle through the lip edges [m].
     pub diameter: f64,
@@ -42,7 +43,7 @@ pub struct RetainingLip {
 }
 
 /// The pocket of a machined window cage: faces, lips, axial size and the window-corner fillet.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct CagePocket {
     pub faces: PocketFaces,
     /// Pocket width at the pitch circle minus the roller diameter [m].
@@ -248,6 +249,27 @@ impl PocketWalls {
         w
     }
 
+    /// Tangential width of the bar between two of `pockets` windows at radius `r`, `b(r) =
+    /// 2πr/Z − 2w(r)` [m].
+    pub fn bar_width_at(&self, r: f64, pockets: usize) -> f64 {
+        pitch_arc(r, pockets) - 2.0 * self.half_window_at(r)
+    }
+
+    /// The radii `ρ` where the window half-width steps (the lip edges), ascending [m].
+    pub fn steps(&self) -> Vec<f64> {
+        let mut out: Vec<f64> = [self.inner_lip, self.outer_lip]
+            .into_iter()
+            .flatten()
+            .map(|l| l.rho)
+            .collect();
+        out.sort_by(f64::total_cmp);
+        out
+    }
+
+    pub fn faces(&self) -> PocketFaces {
+        self.faces
+    }
+
     pub fn face_half_width(&self) -> f64 {
         self.face_half_width
     }
@@ -293,6 +315,8 @@ pub struct PocketPlay {
     /// The piece it touches and the diameter of the contact point [m].
     pub circumferential_stop: WallPiece,
     pub circumferential_contact_diameter: f64,
+    /// The contact point in pocket coordinates `(ρ, h)` [m].
+    pub circumferential_contact: [f64; 2],
     /// Radial travel outwards / inwards from the pitch radius to a lip (`None`: no lip stops it
     /// within a roller diameter) [m].
     pub radial_outward: Option<f64>,
@@ -450,6 +474,7 @@ impl CagePocket {
             circumferential_per_side: side,
             circumferential_stop: stop.piece,
             circumferential_contact_diameter: 2.0 * contact[0].hypot(contact[1]),
+            circumferential_contact: contact,
             radial_outward: radial(1.0),
             radial_inward: radial(-1.0),
             closing_displacement: closing,
@@ -460,7 +485,7 @@ impl CagePocket {
     pub fn bar_section(&self, ctx: &PocketContext) -> Result<BarSection, GeometryError> {
         let walls = self.walls(ctx)?;
         let (ri, ro) = (ctx.cage_inner_radius, ctx.cage_outer_radius);
-        let width = |r: f64| TAU * r / ctx.pockets as f64 - 2.0 * walls.half_window_at(r);
+        let width = |r: f64| walls.bar_width_at(r, ctx.pockets);
         let dr = (ro - ri) / SECTION_POINTS as f64;
         let radii = (0..SECTION_POINTS).map(|k| ri + (k as f64 + 0.5) * dr);
         let (mut area, mut first, mut cube) = (0.0, 0.0, 0.0);

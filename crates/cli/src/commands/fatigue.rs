@@ -12,7 +12,8 @@ use rolldyn_fatigue::inclusion::{InclusionSettings, Interface};
 use rolldyn_fatigue::mean_stress::MeanStressCorrection;
 use rolldyn_fatigue::sn::{BelowKnee, SnCurve};
 use rolldyn_fatigue::study::{
-    FatigueError, FatigueSettings, RevolutionMaxima, StressModelKind, evaluate, record_loads,
+    FatigueError, FatigueSettings, REQUIRED_STRESS_SAFETY_FACTOR, RevolutionMaxima,
+    StressModelKind, evaluate, record_loads,
 };
 use rolldyn_fatigue::{
     CageLoadExport, Cycle, HistoryKind, UnitStresses, rainflow, read_history_csv,
@@ -81,9 +82,10 @@ pub struct Args {
     /// Mean-stress correction of the counted cycles.
     #[arg(long, value_enum, default_value = "none")]
     pub mean_stress: MeanStressArg,
-    /// Radius of the window-corner fillet (e.g. 0.5mm).
-    #[arg(long, default_value = "0.5mm")]
-    pub fillet_radius: Quantity<Length>,
+    /// Radius of the window-corner fillet (e.g. 0.5mm), overriding the model's
+    /// `cage.pocket.fillet_radius`.
+    #[arg(long)]
+    pub fillet_radius: Option<Quantity<Length>>,
     /// Stress-concentration factors of the frame model's fillets, `TENSION,BENDING` (default: from
     /// the fillet radius by Roark's shoulder-fillet charts).
     #[arg(long, value_parser = parse_factor_pair)]
@@ -190,7 +192,7 @@ impl Args {
                 stress_concentration: self.stress_concentration,
                 ..defaults.frame.clone()
             },
-            fillet_radius_m: self.fillet_radius.si(),
+            fillet_radius_m: self.fillet_radius.map(|f| f.si()),
             sn,
             inclusion: self.inclusion.map(|interface| InclusionSettings {
                 interface: match interface {
@@ -257,8 +259,11 @@ fn run_life(args: Args) -> Result<(), Failure> {
             (export, Some(maxima))
         }
     };
-    // the fillet is a fatigue input, not part of the dynamics' export
-    export.header.cage.fillet_radius = settings.fillet_radius_m;
+    // an export read back keeps its model's fillet unless the command line overrides it
+    export.header.cage = export
+        .header
+        .cage
+        .with_fillet_radius(settings.fillet_radius_m);
     let dynamics_s = wall.elapsed().as_secs_f64();
     let unit = unit_stresses(&args, &export, &settings)?;
     let result = evaluate(&unit, &export, maxima, &settings).map_err(Failure::Run)?;
@@ -360,8 +365,15 @@ fn print_answer(a: &Answer) {
         println!("  no cycle above the endurance limit: unlimited life");
     }
     println!(
-        "  endurance margin (knee amplitude / largest equivalent amplitude) {:.2}",
-        f.endurance_margin
+        "  endurance margin (knee amplitude / largest equivalent amplitude) {:.2}, stress safety factor {:.2}: required stress safety factor {} {}",
+        f.endurance_margin,
+        f.stress_safety_factor,
+        REQUIRED_STRESS_SAFETY_FACTOR,
+        if f.stress_safety_factor >= REQUIRED_STRESS_SAFETY_FACTOR {
+            "met"
+        } else {
+            "not met"
+        }
     );
     if let Some(life) = f.inclusion_life_revolutions {
         let life = if life.is_finite() {

@@ -520,8 +520,7 @@ fn write_cage_loads(
         .bearing
         .require_cylindrical("--cage-loads")
         .map_err(Failure::Input)?;
-    let fillet = rolldyn_fatigue::study::FatigueSettings::default().fillet_radius_m;
-    let cage = rolldyn_fatigue::study::cage_geometry(bearing, fillet).map_err(Failure::Input)?;
+    let cage = rolldyn_fatigue::study::cage_geometry(bearing, None).map_err(Failure::Input)?;
     let sets = recorder.last_revolution().map_err(|e| {
         Failure::Run(format!(
             "--cage-loads: {e}; run at least one cage revolution (--duration)"

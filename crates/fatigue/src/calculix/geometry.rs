@@ -1,39 +1,112 @@
 //! The gmsh script of one pitch of the solid cage (theory §10.4): a ring sector centred on
-//! pocket 0 and bounded by the centre planes of its two bars, minus the window whose corners
-//! are rounded with the fillet radius, meshed with second-order tetrahedra refined around the
+//! pocket 0 and bounded by the centre planes of its two bars, minus the window of the pocket
+//! profile (faces and lips) whose corners are rounded with the fillet radius, meshed with second-order tetrahedra refined around the
 //! fillet corners; the two cut faces are meshed alike (periodic), so that the sector's copies
 //! ([`super::mesh::Mesh::cyclic`]) join node to node and every pocket has the same mesh.
 
 use super::CalculixSettings;
 use crate::cage::CageGeometry;
+use rolldyn_geometry::PocketFaces;
 use std::fmt::Write;
+
+/// Sub-bands per band of concave faces: their half-width varies along `ρ`, cut as a staircase
+/// of constant-width steps at the sub-band's widest (6 keep the step below 2 % of a face's
+/// sagitta).
+const CONCAVE_STEPS: usize = 6;
+
+/// The window's cross-section as radial bands `(ρ₀, ρ₁, w)` of constant half-width `w` (the
+/// profile's [`rolldyn_geometry::PocketWalls::half_window_at`]; lip steps split the bands), from
+/// inside the bore to outside the cage; each band reaches over a wider neighbour, which its
+/// narrower window fits in, so that the cuts overlap instead of touching.
+pub fn window_bands(cage: &CageGeometry) -> Vec<(f64, f64, f64)> {
+    let Ok(walls) = cage.walls() else {
+        return Vec::new();
+    };
+    let (lo, hi) = (0.5 * cage.inner_radius, 1.1 * cage.outer_radius);
+    let mut edges = vec![lo];
+    edges.extend(walls.steps());
+    edges.push(hi);
+    let steps = match walls.faces() {
+        PocketFaces::Flat => 1,
+        PocketFaces::Concave => CONCAVE_STEPS,
+    };
+    let mut bands = Vec::new();
+    for pair in edges.windows(2) {
+        let (a, b) = (pair[0], pair[1]);
+        for k in 0..steps {
+            let (r0, r1) = (
+                a + (b - a) * k as f64 / steps as f64,
+                a + (b - a) * (k + 1) as f64 / steps as f64,
+            );
+            // the widest of the sub-band (a step's narrow side lies at its ends' insides)
+            let w = (0..=8)
+                .map(|i| walls.half_window_at(r0 + (r1 - r0) * (0.01 + 0.98 * i as f64 / 8.0)))
+                .fold(0.0, f64::max);
+            bands.push((r0, r1, w));
+        }
+    }
+    let reach: Vec<(f64, f64, f64)> = (0..bands.len())
+        .map(|k| {
+            let (mut r0, mut r1, w) = bands[k];
+            if k > 0 && bands[k - 1].2 >= w {
+                r0 = bands[k - 1].0;
+            }
+            if k + 1 < bands.len() && bands[k + 1].2 >= w {
+                r1 = bands[k + 1].1;
+            }
+            (r0, r1, w)
+        })
+        .collect();
+    reach
+}
 
 /// The `.geo` script (OpenCASCADE kernel, SI units) of one pitch of `cage` meshed per
 /// `settings`.
 ///
-/// The window is a rounded rectangle (tangential × axial, corner radius = fillet radius) in the
-/// plane of the pocket, extruded radially through the ring; the rotation about (1,1,1) by
-/// 2π/3 maps the extrusion's (x, y, z) onto (tangential, axial, radial) of pocket 0. The mesh
-/// size is `fillet_mesh_size` within one fillet radius of the points where the fillet axes
-/// pierce the outside and bore surfaces, growing linearly to `mesh_size` over
-/// `refinement_growth`. Mid-side nodes stay on the straight edges (curved ones can invert
-/// the thin tetrahedra at the fillets).
+/// The window is cut band by band ([`window_bands`]): in each, a rounded rectangle (tangential
+/// `2w` × axial, corner radius = fillet radius) in the plane of the pocket, extruded radially
+/// over the band; the rotation about (1,1,1) by 2π/3 maps the extrusion's (x, y, z) onto
+/// (tangential, axial, radial) of pocket 0. The fillet rounds the window's corners where bar
+/// (face or lip) meets rim. The mesh size is `fillet_mesh_size` within one fillet radius of
+/// the points where the fillet axes pierce the outside and bore surfaces, growing linearly to
+/// `mesh_size` over `refinement_growth`. Mid-side nodes stay on the straight edges (curved ones
+/// can invert the thin tetrahedra at the fillets).
 pub fn geo_script(cage: &CageGeometry, settings: &CalculixSettings) -> String {
     let mut s = String::new();
-    let f = cage.fillet_radius;
+    let f = cage.fillet_radius();
     let _ = writeln!(s, "SetFactory(\"OpenCASCADE\");");
     let _ = writeln!(
         s,
-        "ri = {:e}; ro = {:e}; w = {:e}; pa = {:e}; pc = {:e}; f = {:e}; Z = {};",
-        cage.inner_radius,
-        cage.outer_radius,
-        cage.width,
-        cage.pocket_axial,
-        cage.pocket_circumferential,
-        f,
-        cage.pockets
+        "ri = {:e}; ro = {:e}; w = {:e}; pa = {:e}; f = {:e}; Z = {};",
+        cage.inner_radius, cage.outer_radius, cage.width, cage.pocket.axial, f, cage.pockets
     );
-    s.push_str(RING_AND_WINDOWS);
+    s.push_str(SECTOR);
+    for (k, (r0, r1, hw)) in window_bands(cage).into_iter().enumerate() {
+        let _ = writeln!(
+            s,
+            "s = news; Rectangle(s) = {{{:e}, -pa/2, {r0:e}, {:e}, pa, f}};\n\
+             e[] = Extrude {{0, 0, {:e}}} {{ Surface{{s}}; }};\nwindow[{k}] = e[1];",
+            -hw,
+            2.0 * hw,
+            r1 - r0
+        );
+    }
+    s.push_str(CUT);
+    let mut n = 0;
+    for side in [-1.0, 1.0] {
+        for end in [-1.0, 1.0] {
+            for r in [cage.inner_radius, cage.outer_radius] {
+                let t = side * (cage.window_edge_on(r)[1] - f);
+                let _ = writeln!(
+                    s,
+                    "corners[{n}] = newp; Point(corners[{n}]) = {{{:e}, {t:e}, {:e}}};",
+                    (r * r - t * t).sqrt(),
+                    end * (0.5 * cage.pocket.axial - f)
+                );
+                n += 1;
+            }
+        }
+    }
     let _ = writeln!(
         s,
         "Field[1] = Distance;\nField[1].NodesList = {{corners[]}};\n\
@@ -51,30 +124,19 @@ pub fn geo_script(cage: &CageGeometry, settings: &CalculixSettings) -> String {
     s
 }
 
-/// Sector, window, boolean difference, periodic cut faces and the refinement points (both ends
-/// of every fillet axis, on the bore and outside surfaces); uses the parameters set before it.
-const RING_AND_WINDOWS: &str = r#"pitch = 2*Pi/Z;
+/// The ring sector of one pitch centred on pocket 0; uses the parameters set before it.
+const SECTOR: &str = r#"pitch = 2*Pi/Z;
 outer = newv; Cylinder(outer) = {0, 0, -w/2, 0, 0, w, ro, pitch};
 bore = newv; Cylinder(bore) = {0, 0, -w/2, 0, 0, w, ri};
 sector() = BooleanDifference{ Volume{outer}; Delete; }{ Volume{bore}; Delete; };
 Rotate {{0, 0, 1}, {0, 0, 0}, -pitch/2} { Volume{sector()}; }
-s = news; Rectangle(s) = {-pc/2, -pa/2, ri/2, pc, pa, f};
-e[] = Extrude {0, 0, ro} { Surface{s}; };
-Rotate {{1, 1, 1}, {0, 0, 0}, 2*Pi/3} { Volume{e[1]}; }
-cage() = BooleanDifference{ Volume{sector()}; Delete; }{ Volume{e[1]}; Delete; };
+"#;
+
+/// The window's bands turned onto pocket 0 and cut from the sector, and the periodic cut faces.
+const CUT: &str = r#"Rotate {{1, 1, 1}, {0, 0, 0}, 2*Pi/3} { Volume{window[]}; }
+cage() = BooleanDifference{ Volume{sector()}; Delete; }{ Volume{window[]}; Delete; };
 eps = 1e-3*f; c = Cos(pitch/2); sn = Sin(pitch/2);
 minus() = Surface In BoundingBox{ri*c - eps, -ro*sn - eps, -w/2 - eps, ro*c + eps, -ri*sn + eps, w/2 + eps};
 plus() = Surface In BoundingBox{ri*c - eps, ri*sn - eps, -w/2 - eps, ro*c + eps, ro*sn + eps, w/2 + eps};
 Periodic Surface{plus()} = {minus()} Rotate {{0, 0, 1}, {0, 0, 0}, pitch};
-radii[] = {ri, ro};
-n = 0;
-For side In {-1:1:2}
-  For end In {-1:1:2}
-    For k In {0:1}
-      r = radii[k]; t = side*(pc/2 - f);
-      corners[n] = newp; Point(corners[n]) = {Sqrt(r*r - t*t), t, end*(pa/2 - f)};
-      n += 1;
-    EndFor
-  EndFor
-EndFor
 "#;

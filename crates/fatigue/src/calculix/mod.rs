@@ -18,6 +18,7 @@ use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
+pub use geometry::{geo_script, window_bands};
 pub use points::fillet_arc_midpoint;
 
 /// Knobs of the solid model.
@@ -178,10 +179,17 @@ pub(crate) mod tests {
             inner_radius: 20e-3,
             outer_radius: 25e-3,
             width: 12e-3,
-            pocket_axial: 7e-3,
-            pocket_circumferential: 7e-3,
-            bar_contact_radius: 24.5e-3,
-            fillet_radius: 0.8e-3,
+            pocket: rolldyn_geometry::CagePocket {
+                faces: rolldyn_geometry::PocketFaces::Flat,
+                face_clearance: 1e-3,
+                outer_lip: None,
+                inner_lip: None,
+                axial: 7e-3,
+                fillet_radius: 0.8e-3,
+            },
+            roller_radius: 3e-3,
+            pitch_radius: 22.5e-3,
+            bar_contact: [22.5e-3, 3.5e-3],
             youngs_modulus: 211e9,
             poisson_ratio: 0.3,
             density: 7850.0,
@@ -208,10 +216,8 @@ pub(crate) mod tests {
 
     #[test]
     fn an_impossible_cage_is_refused_before_meshing() {
-        let cage = CageGeometry {
-            fillet_radius: 5e-3,
-            ..small_cage()
-        };
+        let mut cage = small_cage();
+        cage.pocket.fillet_radius = 5e-3;
         let err = unit_stresses(&cage, 2e-3, &CalculixSettings::default(), None).unwrap_err();
         assert!(err.to_string().contains("fillet radius"), "{err}");
     }

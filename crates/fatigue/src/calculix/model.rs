@@ -51,7 +51,7 @@ impl Model {
             }
         }
         let evaluation = points::evaluation_nodes(&mesh, &used, cage);
-        let rim_z = -0.5 * (cage.pocket_axial + cage.rim_axial());
+        let rim_z = -0.5 * (cage.pocket.axial + cage.rim_axial());
         let rim_reference = mesh
             .nearest(
                 [cage.outer_radius, 0.0, rim_z],

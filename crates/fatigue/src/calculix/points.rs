@@ -11,7 +11,7 @@ use std::f64::consts::FRAC_1_SQRT_2;
 /// the rim face towards the window centre (the arc's mid-point), m.
 pub fn fillet_arc_midpoint(point: FilletPoint, cage: &CageGeometry) -> [f64; 3] {
     let [x, y, z] = point.corner(cage);
-    let inset = cage.fillet_radius * (1.0 - FRAC_1_SQRT_2);
+    let inset = cage.fillet_radius() * (1.0 - FRAC_1_SQRT_2);
     let pocket = cage.pocket_angle(match point.side {
         PocketSide::Minus => point.bar,
         PocketSide::Plus => (point.bar + 1) % cage.pockets,
@@ -75,7 +75,7 @@ mod tests {
     #[test]
     fn the_arc_midpoint_lies_on_the_fillet_and_the_surface() {
         let cage = crate::calculix::tests::small_cage();
-        let f = cage.fillet_radius;
+        let f = cage.fillet_radius();
         for p in FilletPoint::all(cage.pockets) {
             let m = fillet_arc_midpoint(p, &cage);
             let r = match p.face {
@@ -89,8 +89,9 @@ mod tests {
             };
             let (s, c) = cage.pocket_angle(pocket).sin_cos();
             let across = -m[0] * s + m[1] * c;
-            let from_axis = (across.abs() - (0.5 * cage.pocket_circumferential - f))
-                .hypot(m[2].abs() - (0.5 * cage.pocket_axial - f));
+            let half = cage.window_edge_on(r)[1];
+            let from_axis =
+                (across.abs() - (half - f)).hypot(m[2].abs() - (0.5 * cage.pocket.axial - f));
             assert!((from_axis - f).abs() < 1e-12);
         }
     }

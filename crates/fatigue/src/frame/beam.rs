@@ -1,6 +1,6 @@
 //! The 3-D Timoshenko beam element of the frame model (Przemieniecki, Theory of Matrix
 //! Structural Analysis, 1968, §5.6: the 12 × 12 stiffness with shear deformation) and the
-//! rectangular section it uses.
+//! sections it uses: rectangles (the rims) and the bar's section of the pocket profile.
 
 // matrix algebra on index grids reads best with indices
 #![allow(clippy::needless_range_loop)]
@@ -41,6 +41,48 @@ impl RectangularSection {
     }
 }
 
+/// The section properties a beam element needs (local y, z through the centroid), SI.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Section {
+    pub area: f64,
+    /// second moment about local y (stress varying along z), m⁴
+    pub i_y: f64,
+    /// second moment about local z (stress varying along y), m⁴
+    pub i_z: f64,
+    /// Saint-Venant torsion constant, m⁴
+    pub torsion_constant: f64,
+}
+
+impl From<RectangularSection> for Section {
+    fn from(r: RectangularSection) -> Self {
+        Self {
+            area: r.area(),
+            i_y: r.i_y(),
+            i_z: r.i_z(),
+            torsion_constant: r.torsion_constant(),
+        }
+    }
+}
+
+impl Section {
+    /// A bar of the pocket profile ([`rolldyn_geometry::BarSection`]), local y radial and z
+    /// tangential: `A`, `I_y = ∫ b³/12 dr`, `I_z = ∫ b (r − r̄)² dr` from the profile; the torsion
+    /// constant that of the rectangle of equal depth and area (Roark Table 10.1 case 4: a lip
+    /// widens the bar over a thin band that adds little torsional stiffness beyond its area).
+    pub fn of_bar(bar: &rolldyn_geometry::BarSection) -> Self {
+        let equivalent = RectangularSection {
+            height: bar.depth,
+            width: bar.area / bar.depth,
+        };
+        Self {
+            area: bar.area,
+            i_y: bar.second_moment,
+            i_z: bar.second_moment_radial,
+            torsion_constant: equivalent.torsion_constant(),
+        }
+    }
+}
+
 /// Shear correction factor of a rectangle (Timoshenko), κ = 5/6.
 pub const SHEAR_FACTOR_RECTANGLE: f64 = 5.0 / 6.0;
 
@@ -63,14 +105,10 @@ impl Elastic {
 /// Local stiffness of a Timoshenko beam of length `l`, DOFs `[u, v, w, θx, θy, θz]` at end 1
 /// then end 2 (x along the beam), row-major 12 × 12. The shear parameters are
 /// `Φ_y = 12 E I_z/(κ G A l²)` (bending in x–y) and `Φ_z = 12 E I_y/(κ G A l²)` (x–z).
-pub fn local_stiffness(
-    section: &RectangularSection,
-    material: &Elastic,
-    l: f64,
-) -> [[f64; 12]; 12] {
+pub fn local_stiffness(section: &Section, material: &Elastic, l: f64) -> [[f64; 12]; 12] {
     let (e, g) = (material.youngs_modulus, material.shear_modulus);
-    let a = section.area();
-    let (iy, iz, j) = (section.i_y(), section.i_z(), section.torsion_constant());
+    let a = section.area;
+    let (iy, iz, j) = (section.i_y, section.i_z, section.torsion_constant);
     let shear = SHEAR_FACTOR_RECTANGLE * g * a * l * l;
     let phi_y = 12.0 * e * iz / shear;
     let phi_z = 12.0 * e * iy / shear;
@@ -143,7 +181,7 @@ mod tests {
             height: 0.01,
             width: 0.004,
         };
-        let k = local_stiffness(&s, &Elastic::new(2.1e11, 0.3), 0.02);
+        let k = local_stiffness(&s.into(), &Elastic::new(2.1e11, 0.3), 0.02);
         for r in 0..12 {
             for c in 0..12 {
                 assert!((k[r][c] - k[c][r]).abs() <= 1e-9 * k[r][r].abs().max(1.0));
@@ -170,7 +208,7 @@ mod tests {
         };
         let m = Elastic::new(2.1e11, 0.3);
         let l = 0.011;
-        let k = local_stiffness(&s, &m, l);
+        let k = local_stiffness(&s.into(), &m, l);
         // free end 2: solve the (w2, θy2) block under P along local z
         let (a, b, c, d) = (k[8][8], k[8][10], k[10][8], k[10][10]);
         let p = 1.0;

@@ -1,7 +1,8 @@
 //! The embedded cage stress model ("frame", theory §10.2): the cage as a 3-D frame of Timoshenko
 //! beams — each rim a polygon of straight elements through its section centroid, each bar a
-//! straight beam along the cage axis joined to both rims by rigid links across the rim's half
-//! width — loaded at the stations of pocket 0 and balanced by the cage's rigid-body inertia
+//! straight beam along the cage axis at its section's centroid radius, with the section of the
+//! pocket profile ([`rolldyn_geometry::CagePocket::bar_section`]), joined to both rims by rigid
+//! links across the rim's half width — loaded at the stations of pocket 0 and balanced by the cage's rigid-body inertia
 //! (inertia relief, lumped masses), supported statically determinately (3-2-1) so the supports
 //! carry nothing. The nominal stress at a fillet is the bar-end section stress at the window
 //! edge times the stress-concentration factor of a shouldered flat member ([`scf`]).
@@ -14,7 +15,7 @@ pub mod scf;
 
 use crate::cage::{CageGeometry, Face, FilletPoint, PocketSide, STATIONS, Station};
 use crate::unit_stresses::{Stress, UnitStresses};
-use beam::{Elastic, RectangularSection, local_stiffness, to_global};
+use beam::{Elastic, RectangularSection, Section, local_stiffness, to_global};
 use rolldyn_numerics::skyline::{Skyline, SkylineFactor};
 use scf::{ShoulderLoad, shoulder_fillet_kt};
 use std::f64::consts::TAU;
@@ -59,7 +60,7 @@ pub enum FrameError {
 /// A beam element: its nodes, section, modulus factor and local axes (rows: x, y, z).
 struct Element {
     nodes: [usize; 2],
-    section: RectangularSection,
+    section: Section,
     stiffness_factor: f64,
     axes: [[f64; 3]; 3],
     length: f64,
@@ -80,6 +81,8 @@ struct Frame {
     rim_beside: Vec<[[(usize, usize); 2]; 2]>,
     /// rim-0 node at angle `2πk/N` (k = 0…N−1), rim-1 likewise
     rim_nodes: [Vec<usize>; 2],
+    /// radius of the bars' section centroid (the bar beams' line), m
+    bar_radius: f64,
     material: Elastic,
     density: f64,
 }
@@ -106,14 +109,21 @@ fn radial(angle: f64) -> [f64; 3] {
 }
 
 impl Frame {
-    fn build(cage: &CageGeometry, bar_z: f64, settings: &FrameSettings) -> Self {
+    fn build(
+        cage: &CageGeometry,
+        bar_z: f64,
+        settings: &FrameSettings,
+    ) -> Result<Self, FrameError> {
+        let bar = cage
+            .bar_section()
+            .map_err(|e| FrameError::Geometry(e.to_string()))?;
         let z = cage.pockets;
         let seg = settings.rim_segments_per_pitch;
         let n = seg * z;
         let r = cage.mean_radius();
         let h = cage.radial_thickness();
-        let rim_z = 0.5 * (cage.pocket_axial + cage.rim_axial());
-        let edge_z = 0.5 * cage.pocket_axial;
+        let rim_z = 0.5 * (cage.pocket.axial + cage.rim_axial());
+        let edge_z = 0.5 * cage.pocket.axial;
         let mut positions = Vec::new();
         let mut rim_nodes = [Vec::with_capacity(n), Vec::with_capacity(n)];
         let mut bar_nodes = Vec::with_capacity(z);
@@ -128,6 +138,7 @@ impl Frame {
             if k % seg == seg / 2 {
                 let stations = [-edge_z, -bar_z, 0.0, bar_z, edge_z];
                 let first = positions.len();
+                let [x, y, _] = radial(angle).map(|v| bar.centroid_radius * v);
                 positions.extend(stations.iter().map(|&zz| [x, y, zz]));
                 bar_nodes.push(first);
             }
@@ -136,7 +147,8 @@ impl Frame {
         let rim_section = RectangularSection {
             height: h,
             width: cage.rim_axial(),
-        };
+        }
+        .into();
         for nodes in &rim_nodes {
             for k in 0..n {
                 let (a, b) = (nodes[k], nodes[(k + 1) % n]);
@@ -150,10 +162,7 @@ impl Frame {
                 ));
             }
         }
-        let bar_section = RectangularSection {
-            height: h,
-            width: cage.bar_width_at(r),
-        };
+        let bar_section = Section::of_bar(&bar);
         let mut junctions = Vec::with_capacity(z);
         let mut rim_beside = Vec::with_capacity(z);
         for (b, &first) in bar_nodes.iter().enumerate() {
@@ -190,22 +199,23 @@ impl Frame {
             let beside = |rim: usize| [(rim * n + (k + n - 1) % n, 1), (rim * n + k, 0)];
             rim_beside.push([beside(0), beside(1)]);
         }
-        Self {
+        Ok(Self {
             positions,
             elements,
             junctions,
             rim_beside,
             rim_nodes,
+            bar_radius: bar.centroid_radius,
             material: Elastic::new(cage.youngs_modulus, cage.poisson_ratio),
             density: cage.density,
-        }
+        })
     }
 
     /// Lumped nodal masses, kg.
     fn masses(&self) -> Vec<f64> {
         let mut m = vec![0.0; self.positions.len()];
         for e in self.elements.iter().filter(|e| e.massive) {
-            let half = 0.5 * self.density * e.section.area() * e.length;
+            let half = 0.5 * self.density * e.section.area * e.length;
             m[e.nodes[0]] += half;
             m[e.nodes[1]] += half;
         }
@@ -295,7 +305,7 @@ impl Frame {
 fn element(
     nodes: [usize; 2],
     positions: &[[f64; 3]],
-    section: RectangularSection,
+    section: Section,
     stiffness_factor: f64,
     massive: bool,
     up: Option<[f64; 3]>,
@@ -303,12 +313,16 @@ fn element(
     let d = sub3(positions[nodes[1]], positions[nodes[0]]);
     let length = norm3(d);
     let x = d.map(|v| v / length);
-    // rims: local y radial (outward at the element's middle); bars: the given radial direction
-    let y = up.unwrap_or_else(|| {
+    // rims: local y radial (outward at the element's middle); bars: the given radial direction,
+    // made normal to x (a link from the rim's centroid to the bar's is not quite axial)
+    let up = up.unwrap_or_else(|| {
         let mid = [0, 1, 2].map(|i| 0.5 * (positions[nodes[0]][i] + positions[nodes[1]][i]));
         let r = (mid[0] * mid[0] + mid[1] * mid[1]).sqrt();
         [mid[0] / r, mid[1] / r, 0.0]
     });
+    let along: f64 = (0..3).map(|i| up[i] * x[i]).sum();
+    let y = [0, 1, 2].map(|i| up[i] - along * x[i]);
+    let y = y.map(|v| v / norm3(y));
     let z = cross3(x, y);
     Element {
         nodes,
@@ -414,34 +428,51 @@ fn inertia_inverse(frame: &Frame, masses: &[f64]) -> [[f64; 3]; 3] {
 /// the bar's axial stress and for the rim's hoop stress.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct FilletFactors {
-    /// the bar (width `w`) meets the rim that runs on over the window on both sides: a double
-    /// shoulder with `h` = half the window, `D` = the pitch
-    pub bar: [f64; 2],
+    /// the bar (width `b(r)` of the profile at the outside / bore surface) meets the rim that
+    /// runs on over the window on both sides: a double shoulder with `h` = the window's
+    /// half-width there (a lip's at a lipped surface), `D` = the pitch arc there
+    pub bar_outer: [f64; 2],
+    pub bar_inner: [f64; 2],
     /// the rim (axial width `t`) meets the bar, which spans the window: one side of a double
     /// shoulder of the narrow width `2t`, `h` = half the window's axial size, `D` = the cage
     /// width
     pub rim: [f64; 2],
 }
 
+impl FilletFactors {
+    /// The bar's factors on `face`.
+    pub fn bar(&self, face: Face) -> [f64; 2] {
+        match face {
+            Face::Outer => self.bar_outer,
+            Face::Inner => self.bar_inner,
+        }
+    }
+}
+
 /// The fillet stress-concentration factors (given, or by Roark Table 17.1, [`scf`]).
 pub fn fillet_factors(cage: &CageGeometry, settings: &FrameSettings) -> FilletFactors {
     if let Some(given) = settings.stress_concentration {
         return FilletFactors {
-            bar: given,
+            bar_outer: given,
+            bar_inner: given,
             rim: given,
         };
     }
-    let r = cage.fillet_radius.max(1e-6);
+    let r = cage.fillet_radius().max(1e-6);
     let pair = |h: f64, wide: f64| {
         [
             shoulder_fillet_kt(ShoulderLoad::Tension, h, wide, r),
             shoulder_fillet_kt(ShoulderLoad::InPlaneBending, h, wide, r),
         ]
     };
-    let h_bar = 0.5 * cage.pocket_circumferential;
+    let bar = |surface: f64| {
+        let h = cage.window_edge_on(surface)[1];
+        pair(h, cage.bar_width_at(surface) + 2.0 * h)
+    };
     FilletFactors {
-        bar: pair(h_bar, cage.bar_width_at(cage.mean_radius()) + 2.0 * h_bar),
-        rim: pair(0.5 * cage.pocket_axial, cage.width),
+        bar_outer: bar(cage.outer_radius),
+        bar_inner: bar(cage.inner_radius),
+        rim: pair(0.5 * cage.pocket.axial, cage.width),
     }
 }
 
@@ -450,13 +481,13 @@ pub fn fillet_factors(cage: &CageGeometry, settings: &FrameSettings) -> FilletFa
 /// vanish at a corner; bending about the section's y axis is the in-plane bending of the
 /// cage surface's fillet contour).
 fn corner_stress(
-    section: &RectangularSection,
+    section: &Section,
     kt: [f64; 2],
     (y, z): (f64, f64),
     resultants: &[f64; 6],
 ) -> f64 {
     let [n, _, _, _, my, mz] = *resultants;
-    kt[0] * (n / section.area() - mz * y / section.i_z()) + kt[1] * my * z / section.i_y()
+    kt[0] * (n / section.area - mz * y / section.i_z) + kt[1] * my * z / section.i_y
 }
 
 /// The stress at fillet point `p`: the bar's axial stress at the corner of its window-edge
@@ -469,14 +500,21 @@ fn fillet_stress(
     p: FilletPoint,
     u: &[f64],
 ) -> Stress {
-    let (y, r) = match p.face {
-        Face::Outer => (0.5 * cage.radial_thickness(), cage.outer_radius),
-        Face::Inner => (-0.5 * cage.radial_thickness(), cage.inner_radius),
+    let r = match p.face {
+        Face::Outer => cage.outer_radius,
+        Face::Inner => cage.inner_radius,
     };
+    // the rims' line is the mean radius, the bars' their section's centroid
+    let y = r - cage.mean_radius();
     let bar = &frame.elements[frame.junctions[p.bar][p.rim]];
     let bar_resultants = frame.junction_resultants(frame.junctions[p.bar][p.rim], p.rim, u);
     let bar_z = p.side.sign() * 0.5 * cage.bar_width_at(r);
-    let sigma_zz = corner_stress(&bar.section, kt.bar, (y, bar_z), &bar_resultants);
+    let sigma_zz = corner_stress(
+        &bar.section,
+        kt.bar(p.face),
+        (r - frame.bar_radius, bar_z),
+        &bar_resultants,
+    );
     let (rim_element, end) =
         frame.rim_beside[p.bar][p.rim][usize::from(p.side == PocketSide::Plus)];
     let rim = &frame.elements[rim_element];
@@ -497,10 +535,10 @@ pub fn unit_stresses(
     if !problems.is_empty() {
         return Err(FrameError::Geometry(problems.join("; ")));
     }
-    if !(bar_z > 0.0 && bar_z < 0.5 * cage.pocket_axial) {
+    if !(bar_z > 0.0 && bar_z < 0.5 * cage.pocket.axial) {
         return Err(FrameError::Geometry(format!(
             "bar stations at ±{bar_z:e} m must lie inside the window (±{:e} m)",
-            0.5 * cage.pocket_axial
+            0.5 * cage.pocket.axial
         )));
     }
     let seg = settings.rim_segments_per_pitch.max(2) / 2 * 2;
@@ -511,7 +549,7 @@ pub fn unit_stresses(
             rim_segments_per_pitch: seg,
             ..settings.clone()
         },
-    );
+    )?;
     let k = frame.factor()?;
     let masses = frame.masses();
     let inertia_inv = inertia_inverse(&frame, &masses);
@@ -565,7 +603,7 @@ mod tests {
     #[test]
     fn balanced_loads_have_no_resultant() {
         let c = cage(20e-3);
-        let frame = Frame::build(&c, 4.4e-3, &FrameSettings::default());
+        let frame = Frame::build(&c, 4.4e-3, &FrameSettings::default()).unwrap();
         let masses = frame.masses();
         let inv = inertia_inverse(&frame, &masses);
         let point = [0.09, 0.01, 0.004];
@@ -623,17 +661,14 @@ mod tests {
         let (s, co) = (std::f64::consts::PI / c.pockets as f64).sin_cos();
         let across = |station| -s * u.unit(p, station, 0, 0)[2] + co * u.unit(p, station, 1, 0)[2];
         let sigma = across(2) + across(3);
-        let l = c.pocket_axial;
-        let section = RectangularSection {
-            height: c.radial_thickness(),
-            width: c.bar_width_at(c.mean_radius()),
-        };
+        let l = c.pocket.axial;
+        let section = Section::of_bar(&c.bar_section().unwrap());
         let m = Elastic::new(c.youngs_modulus, c.poisson_ratio);
-        let phi = 12.0 * m.youngs_modulus * section.i_y()
-            / (beam::SHEAR_FACTOR_RECTANGLE * m.shear_modulus * section.area() * l * l);
+        let phi = 12.0 * m.youngs_modulus * section.i_y
+            / (beam::SHEAR_FACTOR_RECTANGLE * m.shear_modulus * section.area * l * l);
         let a = 0.5 * l - bar_z;
         let moment = clamped_end_moment(a, l, phi) + clamped_end_moment(l - a, l, phi);
-        let expected = moment.abs() * 0.5 * c.bar_width_at(c.outer_radius) / section.i_y();
+        let expected = moment.abs() * 0.5 * c.bar_width_at(c.outer_radius) / section.i_y;
         // obtained −8 %: inertia relief puts part of the balancing inertia on the loaded bar's
         // own nodes (its mass is 2.5 % of the cage's, and it sits at the largest radius of the
         // rotational share), so the bar carries less than the two unit loads
