@@ -301,8 +301,10 @@ pub fn drag_and_land_inputs(model: &rolldyn_model::Model) -> Vec<(&'static str, 
                 format!("F = ½ρ_eff C_D D l v², C_D = {c} ([dynamics] roller_drag_coefficient)")
             }
             Some(_) => "none ([dynamics] roller_drag_coefficient = 0)".to_string(),
-            None => "none (default, as seed 000 §3.6: [dynamics] roller_drag_coefficient not given)"
-                .to_string(),
+            None => {
+                "none (default, as seed 000 §3.6: [dynamics] roller_drag_coefficient not given)"
+                    .to_string()
+            }
         },
     ));
     out.push((
