@@ -238,6 +238,10 @@ pub struct OperatingConditions {
     /// Cage viscous drag coefficient c, N·m·s/rad: `M = −c ω_cage` (SPEC §3.6, ⚠ F-22; 2002834
     /// at 100 °C: 6.62·10⁻⁴, [`CAGE_DRAG_2002834_100C`]).
     pub cage_drag_n_m_s: f64,
+    /// Roller drag factor k = ½ ρ_eff C_D D l of the air–oil mixture, kg/m: every roller feels
+    /// F = −k |v| v with v its centre's velocity across its axis, the mixture at rest
+    /// (`rolldyn_lubrication::mixture::roller_drag_factor`; 0 = none, as seed 000 §3.6).
+    pub roller_drag_kg_m: f64,
     /// Misalignment of the inner-ring axis: tilt angle, rad (prescribed, constant).
     pub misalignment_rad: f64,
     /// Direction of the misalignment: the inner-ring axis tilts toward this azimuth, rad from
@@ -269,6 +273,7 @@ impl OperatingConditions {
             gravity_m_s2: [0.0, -9.81, 0.0],
             temperatures: ContactTemperatures::uniform(373.15),
             cage_drag_n_m_s: 0.0,
+            roller_drag_kg_m: 0.0,
             misalignment_rad: 0.0,
             misalignment_azimuth_rad: 0.0,
             clearance_schedule: None,
@@ -409,6 +414,11 @@ impl OperatingConditions {
         if !(self.cage_drag_n_m_s >= 0.0 && self.cage_drag_n_m_s.is_finite()) {
             return Err(DynError::InvalidInput(
                 "cage drag coefficient must be finite and ≥ 0".into(),
+            ));
+        }
+        if !(self.roller_drag_kg_m >= 0.0 && self.roller_drag_kg_m.is_finite()) {
+            return Err(DynError::InvalidInput(
+                "roller drag factor must be finite and ≥ 0".into(),
             ));
         }
         if !(self.misalignment_rad.abs() < 0.02 && self.misalignment_azimuth_rad.is_finite()) {

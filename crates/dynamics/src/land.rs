@@ -134,8 +134,11 @@ pub struct HydrodynamicLand {
 
 impl HydrodynamicLand {
     /// Land of radius `radius_m`, total width `width_m` split over `stations` stations, radial
-    /// clearance `gap_m`, on the inner (`inner_land`) or outer ring; `contact` is the metal
-    /// contact beyond the clearance. Builds the correction table (≈ 0.3 s).
+    /// clearance `gap_m`, on the inner (`inner_land`) or outer ring, its clearance filled with
+    /// oil to the fraction `fill_fraction` (1: flooded; below 1 a starved film on the wetted arc
+    /// around the minimum gap, [`rolldyn_reynolds::cage_land`] module doc); `contact` is the
+    /// metal contact beyond the clearance. Builds the correction table (≈ 0.3 s).
+    #[allow(clippy::too_many_arguments)]
     pub fn new(
         radius_m: f64,
         width_m: f64,
@@ -143,6 +146,7 @@ impl HydrodynamicLand {
         gap_m: f64,
         inner_land: bool,
         viscosity_pa_s: f64,
+        fill_fraction: f64,
         contact: TwoLevelLand,
     ) -> Result<Self, crate::DynError> {
         use rolldyn_reynolds::cage_land::{
@@ -163,7 +167,11 @@ impl HydrodynamicLand {
                 LandPosition::OuterRing
             },
         };
-        let film = CageLand::new(geometry, &CageLandOptions::default())
+        let options = CageLandOptions {
+            fill_fraction,
+            ..CageLandOptions::default()
+        };
+        let film = CageLand::new(geometry, &options)
             .map_err(|e| crate::DynError::InvalidInput(format!("hydrodynamic cage land: {e}")))?;
         Ok(Self {
             film,

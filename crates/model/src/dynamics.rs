@@ -84,6 +84,13 @@ pub struct DynamicsInputs {
     pub cage_drag_n_m_s: Option<f64>,
     /// force law of the cage on its guiding land
     pub cage_land_law: CageLandLaw,
+    /// fill fraction f of the hydrodynamic land's clearance, 0 < f ≤ 1 (`None`: flooded, f = 1)
+    pub cage_land_fill: Option<f64>,
+    /// drag coefficient C_D of a roller in cross flow (`None`: no roller drag, seed 000 §3.6
+    /// neglects it)
+    pub roller_drag_coefficient: Option<f64>,
+    /// volume fraction χ of oil in the bearing cavity (`None`: 0.05, the seed 000 CFD, SPEC §3.6)
+    pub oil_volume_fraction: Option<f64>,
     /// raceway damping C_max of the whole roller–raceway contact, N·s/m (pairs 13, 23)
     pub raceway_damping: Option<f64>,
     /// raceway damping ramp δ*, m
@@ -114,6 +121,13 @@ fn non_negative(key: String, x: Option<f64>) -> Result<Option<f64>, GeometryErro
         Some(v) if !(v >= 0.0 && v.is_finite()) => {
             Err(GeometryError::new(key, "must be finite and ≥ 0"))
         }
+        _ => Ok(x),
+    }
+}
+
+fn fraction(key: &str, x: Option<f64>) -> Result<Option<f64>, GeometryError> {
+    match x {
+        Some(v) if !(v > 0.0 && v <= 1.0) => Err(GeometryError::new(key, "must lie in (0, 1]")),
         _ => Ok(x),
     }
 }
@@ -229,6 +243,15 @@ pub(crate) fn dynamics(section: Option<&DynamicsSection>) -> Result<DynamicsInpu
             None | Some(CageLandLawName::Hydrodynamic) => CageLandLaw::Hydrodynamic,
             Some(CageLandLawName::Contact) => CageLandLaw::Contact,
         },
+        cage_land_fill: fraction("dynamics.cage_land_fill", s.cage_land_fill.map(|q| q.si()))?,
+        roller_drag_coefficient: non_negative(
+            "dynamics.roller_drag_coefficient".into(),
+            s.roller_drag_coefficient.map(|q| q.si()),
+        )?,
+        oil_volume_fraction: fraction(
+            "dynamics.oil_volume_fraction",
+            s.oil_volume_fraction.map(|q| q.si()),
+        )?,
         raceway_damping,
         raceway_damping_ramp,
         roller_cage,

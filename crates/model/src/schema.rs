@@ -410,6 +410,13 @@ pub struct DynamicsSection {
     pub cage_drag: Option<Quantity<RotationalDamping>>,
     /// force law of the cage on its guiding land: "hydrodynamic" or "contact"
     pub cage_land_law: Option<CageLandLawName>,
+    /// fill fraction of the land clearance (oil volume / clearance volume) of the hydrodynamic
+    /// land, 0 < f ≤ 1
+    pub cage_land_fill: Option<Quantity<Dimensionless>>,
+    /// drag coefficient C_D of a roller in cross flow (roller drag in the air–oil mixture)
+    pub roller_drag_coefficient: Option<Quantity<Dimensionless>>,
+    /// volume fraction of oil in the bearing cavity (air–oil mixture density)
+    pub oil_volume_fraction: Option<Quantity<Dimensionless>>,
     /// pairs 13, 23
     pub raceways: Option<RacewayPairSection>,
     /// pair 34

@@ -348,6 +348,9 @@ pub struct FiniteLand {
     pub boundary_friction: f64,
     /// Inner-ring land (cage bore on the land) or outer-ring land.
     pub inner_land: bool,
+    /// Fill fraction of the land clearance (1: flooded; a starved land below 1,
+    /// [`rolldyn_reynolds::cage_land`] module doc). Default 1.
+    pub fill_fraction: f64,
     table: std::sync::Mutex<Option<([f64; 3], rolldyn_reynolds::cage_land::CageLand)>>,
 }
 
@@ -358,6 +361,7 @@ impl FiniteLand {
             max_eccentricity_ratio: 0.98,
             boundary_friction: 0.1,
             inner_land,
+            fill_fraction: 1.0,
             table: std::sync::Mutex::new(None),
         }
     }
@@ -390,6 +394,7 @@ impl FiniteLand {
             };
             let options = CageLandOptions {
                 max_eccentricity: self.max_eccentricity_ratio,
+                fill_fraction: self.fill_fraction,
                 ..CageLandOptions::default()
             };
             *guard = Some((geometry, CageLand::new(geom, &options).ok()?));

@@ -293,6 +293,12 @@ pub struct DragInputs {
     /// `None` (the formula). The dynamics' quasi-static start sets it so that both models see
     /// the same drag.
     pub viscous_coefficient_n_m_s: Option<f64>,
+    /// Roller drag factor k = ½ ρ_eff C_D D l, kg/m: each roller feels F = k (ω₀ d_m/2)²
+    /// against its orbital motion, the mixture at rest
+    /// (`rolldyn_lubrication::mixture::roller_drag_factor`). Default 0 (seed 000 §3.6 neglects
+    /// roller drag); `rolldyn skid` and the dynamics' start set it from `[dynamics]
+    /// roller_drag_coefficient`.
+    pub roller_drag_kg_m: f64,
 }
 
 impl Default for DragInputs {
@@ -306,6 +312,7 @@ impl Default for DragInputs {
             coefficient: DragCoefficient::default(),
             enabled: true,
             viscous_coefficient_n_m_s: None,
+            roller_drag_kg_m: 0.0,
         }
     }
 }

@@ -432,6 +432,10 @@ impl<'a> Setup<'a> {
             rib: self.rib,
             pocket_coefficient: self.pocket_coefficient,
             rolling_friction_m: self.cond.rolling_friction_m,
+            orbital_drag_n: {
+                let v = cage_speed * self.r_c;
+                -self.cond.drag.roller_drag_kg_m * v * v.abs()
+            },
         }
     }
 
@@ -717,6 +721,9 @@ fn finish(
     let bal = ws.balance;
     power.cage_land_w = bal.land_power_w;
     power.drag_w = bal.drag.power_w;
+    power.roller_drag_w = ld.rollers.len() as f64
+        * cond.drag.roller_drag_kg_m
+        * (cage_speed * setup.r_c).abs().powi(3);
     let power_in = power_in + bal.land_torque_n_m * setup.land_speed;
     let c0 = static_load_rating(setup.bearing);
     let warnings = point_warnings(setup, &bal, max_pressure, c0);
@@ -767,9 +774,31 @@ fn finish(
         },
         friction_model: friction_model_name(&setup.traction),
         cage_land_model: land_model.name(),
+        cage_drag_law: cage_drag_law(&cond.drag),
         warnings,
         load_distribution: ld,
     })
+}
+
+/// The drag laws of a point, in words: the cage's (a given linear coefficient or the seed 001
+/// mixture formula) and the rollers'.
+fn cage_drag_law(d: &crate::conditions::DragInputs) -> String {
+    let cage = match (d.enabled, d.viscous_coefficient_n_m_s) {
+        (false, _) => "cage drag off".to_string(),
+        (true, Some(c)) => format!("cage M = −c ω₀, c = {c:.4e} N·m·s (given per model)"),
+        (true, None) => format!(
+            "cage: seed 001 mixture formula (oil volume fraction {})",
+            d.oil_volume_fraction
+        ),
+    };
+    if d.roller_drag_kg_m > 0.0 {
+        format!(
+            "{cage}; rollers F = k v², k = ½ρ_eff C_D D l = {:.4e} kg/m",
+            d.roller_drag_kg_m
+        )
+    } else {
+        format!("{cage}; no roller drag")
+    }
 }
 
 /// Per-roller results of the final state and their sums over the bearing.

@@ -133,8 +133,10 @@ pub struct PowerBreakdown {
     pub rolling_resistance_w: f64,
     /// Cage land.
     pub cage_land_w: f64,
-    /// Air–oil drag.
+    /// Air–oil drag of the cage.
     pub drag_w: f64,
+    /// Air–oil drag of the orbiting rollers.
+    pub roller_drag_w: f64,
 }
 
 impl PowerBreakdown {
@@ -148,6 +150,7 @@ impl PowerBreakdown {
             + self.rolling_resistance_w
             + self.cage_land_w
             + self.drag_w
+            + self.roller_drag_w
     }
 }
 
@@ -242,6 +245,9 @@ pub struct SkidResult {
     pub friction_model: &'static str,
     /// Name of the cage–land model.
     pub cage_land_model: &'static str,
+    /// The drag laws used (cage: the model's linear coefficient or the seed 001 formula;
+    /// rollers).
+    pub cage_drag_law: String,
     /// Warnings (static capacity exceeded, fits lost, film collapse on the land, …).
     pub warnings: Vec<String>,
     /// The frictionless load distribution at the solution.

@@ -6,7 +6,9 @@
 //! 2F_fб of the two roller-end films and the cage-bar force. The tangential balance gives the
 //! roller ↔ bar normal force (seed 001 F_S(i) = ±F_fв ± F_fн ± 2F_fб):
 //!
-//! P = F_fв + F_fн + 2F_fб  (the force the roller exerts on the cage, along e_θ), Q_bar = |P|.
+//! P = F_fв + F_fн + 2F_fб + F_D  (the force the roller exerts on the cage, along e_θ),
+//! Q_bar = |P|, with F_D the drag of the air–oil mixture on the orbiting roller (acting at its
+//! centre: no moment about its axis; Harris & Kotzalas, `rolldyn_lubrication::mixture::roller_drag_factor`).
 //!
 //! Moment about the roller axis (seed 001 ΣT(ε_w), derived here with vectors so that it holds
 //! for either sense of rotation):
@@ -89,6 +91,9 @@ pub struct RollerEnv<'a> {
     pub pocket_coefficient: f64,
     /// f_к, m.
     pub rolling_friction_m: f64,
+    /// Drag of the air–oil mixture on the orbiting roller along e_θ, −k v|v| with
+    /// v = ω₀ d_m/2 ([`crate::conditions::DragInputs::roller_drag_kg_m`]), N.
+    pub orbital_drag_n: f64,
 }
 
 /// Normal loads of one roller from the load distribution.
@@ -205,7 +210,7 @@ impl RollerEnv<'_> {
             }
             None => (0.0, 0.0, 0.0),
         };
-        let push = fi + fo + rib_force;
+        let push = fi + fo + rib_force + self.orbital_drag_n;
         let q_bar = push.abs();
         let v_bar = spin * rw;
         let sb = self.state(

@@ -209,12 +209,14 @@ fn row(
 /// slip vs the loads of [`OBRIEN_TAYLOR_LOADS_N`] (aligned), then vs the misalignments of
 /// [`OBRIEN_TAYLOR_MISALIGNMENTS_ARCMIN`] at 201 N. `bearing` is the model of
 /// `examples/obrien-taylor.toml`; the V-06 surface finish is applied
-/// ([`obrien_taylor_bearing`]). Every series starts from ε₀ = 0 and is warm-started along the
-/// series.
+/// ([`obrien_taylor_bearing`]). `drag` gives the drag inputs at an oil temperature (K): the
+/// model's, so that the study and the dynamics see the same drag. Every series starts from
+/// ε₀ = 0 and is warm-started along the series.
 pub fn obrien_taylor(
     bearing: &CylindricalRollerBearing,
     traction: NviTraction,
     options: &QuasiStaticOptions,
+    drag: &dyn Fn(f64) -> crate::DragInputs,
 ) -> Vec<StudyRow> {
     let b = obrien_taylor_bearing(bearing);
     let mut rows = Vec::new();
@@ -222,7 +224,8 @@ pub fn obrien_taylor(
         let t_c = obrien_taylor_temperature_c(n);
         let mut opts = options.clone();
         for &load in &OBRIEN_TAYLOR_LOADS_N {
-            let c = obrien_taylor_conditions(n, load, 0.0, traction);
+            let mut c = obrien_taylor_conditions(n, load, 0.0, traction);
+            c.drag = drag(celsius(t_c));
             let r = crate::solve(&b, &c, &opts);
             if let Ok(r) = &r {
                 opts.initial_cage_slip = r.cage_slip;
@@ -231,7 +234,8 @@ pub fn obrien_taylor(
         }
         let mut opts = options.clone();
         for &m in &OBRIEN_TAYLOR_MISALIGNMENTS_ARCMIN {
-            let c = obrien_taylor_conditions(n, 201.0, (m / 60.0).to_radians(), traction);
+            let mut c = obrien_taylor_conditions(n, 201.0, (m / 60.0).to_radians(), traction);
+            c.drag = drag(celsius(t_c));
             let r = crate::solve(&b, &c, &opts);
             if let Ok(r) = &r {
                 opts.initial_cage_slip = r.cage_slip;

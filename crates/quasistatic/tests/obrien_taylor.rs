@@ -48,6 +48,7 @@ fn v06_seed000_elastic_traction() {
         &b,
         NviTraction::Seed000Elastic,
         &QuasiStaticOptions::default(),
+        &|_| Default::default(),
     );
     println!(
         "{} points in {:.1} ms",
@@ -77,6 +78,7 @@ fn v06_maxwell_eyring_traction_trends() {
         &b,
         NviTraction::MaxwellEyring { tau0_pa: 5e6 },
         &QuasiStaticOptions::default(),
+        &|_| Default::default(),
     );
     print(
         &rows,

@@ -226,7 +226,97 @@ fn conditions_with_temperature_at(
         .unwrap_or(model.bearing.misalignment().inner_ring_tilt);
     // SPEC §3.6: an input per model (`[dynamics] cage_drag`), none when the file is silent
     c.cage_drag_n_m_s = model.dynamics.cage_drag_n_m_s.unwrap_or(0.0);
+    c.roller_drag_kg_m = roller_drag_factor(model, oil_t)?;
     Ok(c)
+}
+
+/// The roller drag factor k = ½ ρ_eff C_D D l (`rolldyn_lubrication::mixture::roller_drag_factor`)
+/// of the model at oil temperature `oil_temperature_k`: C_D from `[dynamics]
+/// roller_drag_coefficient` (none: no roller drag, seed 000 §3.6), ρ_eff the seed 001 mixture
+/// density of the oil at that temperature with the oil volume fraction `[dynamics]
+/// oil_volume_fraction` (default 0.05, the seed 000 CFD). One value for both models.
+pub fn roller_drag_factor(
+    model: &rolldyn_model::Model,
+    oil_temperature_k: f64,
+) -> Result<f64, SetupError> {
+    use rolldyn_lubrication::mixture::{
+        SEED000_OIL_VOLUME_FRACTION, air_oil_density_seed001, roller_drag_factor,
+    };
+    let Some(c_d) = model.dynamics.roller_drag_coefficient.filter(|&c| c > 0.0) else {
+        return Ok(0.0);
+    };
+    let Some(lubrication) = model.lubrication.as_ref() else {
+        return Err(model
+            .source
+            .error(
+                "dynamics.roller_drag_coefficient",
+                "roller drag needs a [lubricant] section",
+            )
+            .into());
+    };
+    let rho_oil = lubrication
+        .oil
+        .density(lubrication.oil.clamp_temperature(oil_temperature_k))
+        .map_err(|e| model.source.error("lubricant", format!("roller drag: {e}")))?;
+    let chi = model
+        .dynamics
+        .oil_volume_fraction
+        .unwrap_or(SEED000_OIL_VOLUME_FRACTION);
+    let roller = match &model.bearing.require_cylindrical("roller drag") {
+        Ok(b) => &b.roller,
+        Err(reason) => return Err(SetupError(reason.to_string())),
+    };
+    Ok(roller_drag_factor(
+        air_oil_density_seed001(rho_oil, chi),
+        c_d,
+        roller.diameter,
+        roller.length,
+    ))
+}
+
+/// What the model gives, or what stands in for it, for the land film and the drag of the
+/// air–oil mixture (named in the output of `simulate` and `skid`): (input, value and source).
+pub fn drag_and_land_inputs(model: &rolldyn_model::Model) -> Vec<(&'static str, String)> {
+    use rolldyn_lubrication::mixture::SEED000_OIL_VOLUME_FRACTION;
+    let d = &model.dynamics;
+    let mut out = vec![(
+        "cage land fill",
+        match (d.cage_land_law, d.cage_land_fill) {
+            (CageLandLaw::Contact, _) => "— (plain contact land law, no film)".to_string(),
+            (_, Some(f)) => format!("{f} ([dynamics] cage_land_fill)"),
+            (_, None) => "1, flooded (default: [dynamics] cage_land_fill not given)".to_string(),
+        },
+    )];
+    out.push((
+        "cage drag",
+        match d.cage_drag_n_m_s {
+            Some(c) => format!("M = −c ω, c = {c:.4e} N·m·s ([dynamics] cage_drag)"),
+            None => "none in the dynamics; seed 001 mixture formula in skid (default: [dynamics] cage_drag not given)".to_string(),
+        },
+    ));
+    out.push((
+        "roller drag",
+        match d.roller_drag_coefficient {
+            Some(c) if c > 0.0 => {
+                format!("F = ½ρ_eff C_D D l v², C_D = {c} ([dynamics] roller_drag_coefficient)")
+            }
+            Some(_) => "none ([dynamics] roller_drag_coefficient = 0)".to_string(),
+            None => {
+                "none (default, as seed 000 §3.6: [dynamics] roller_drag_coefficient not given)"
+                    .to_string()
+            }
+        },
+    ));
+    out.push((
+        "oil volume fraction",
+        match d.oil_volume_fraction {
+            Some(x) => format!("{x} ([dynamics] oil_volume_fraction)"),
+            None => format!(
+                "{SEED000_OIL_VOLUME_FRACTION} (default: the seed 000 CFD; [dynamics] oil_volume_fraction not given)"
+            ),
+        },
+    ));
+    out
 }
 
 /// The contact parameters of SPEC Table 2.1: the dynamics defaults for the bearing, with every
@@ -456,7 +546,13 @@ pub fn prepare_with(
     // The simulation's own land law is the plain pair-14 contact (`TwoLevelLand`); the
     // hydrodynamic land replaces it where the model asks for it (theory §3.3).
     if inputs.cage_land_law == CageLandLaw::Hydrodynamic
-        && let Some(land) = hydrodynamic_land(bearing, lubrication, cage_temperature, land_contact)?
+        && let Some(land) = hydrodynamic_land(
+            bearing,
+            lubrication,
+            cage_temperature,
+            inputs.cage_land_fill.unwrap_or(1.0),
+            land_contact,
+        )?
     {
         sim.set_cage_land_model(Box::new(land));
     }
@@ -468,11 +564,13 @@ pub fn prepare_with(
 }
 
 /// The hydrodynamic cage land (Reynolds crate, issue 7 item 3) on the land that guides the
-/// cage, with `contact` beyond the film; `None` for a roller-guided cage.
+/// cage, its clearance filled to `fill_fraction` (`[dynamics] cage_land_fill`, flooded = 1),
+/// with `contact` beyond the film; `None` for a roller-guided cage.
 fn hydrodynamic_land(
     bearing: &rolldyn_geometry::CylindricalRollerBearing,
     lubrication: &rolldyn_model::Lubrication,
     cage_temperature_k: f64,
+    fill_fraction: f64,
     contact: rolldyn_dynamics::TwoLevelLand,
 ) -> Result<Option<rolldyn_dynamics::HydrodynamicLand>, SetupError> {
     let Some(cage) = bearing
@@ -503,6 +601,7 @@ fn hydrodynamic_land(
         0.5 * cage.floating_clearance,
         inner,
         viscosity,
+        fill_fraction,
         contact,
     )
     .map(Some)

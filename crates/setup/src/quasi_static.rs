@@ -130,6 +130,7 @@ pub fn quasi_static_conditions(
     t.housing = part(given.housing, file.housing);
     let tilt = model.bearing.misalignment().inner_ring_tilt;
     c.misalignment_rad = (tilt != 0.0).then_some(tilt);
+    c.drag = drag_inputs(model, oil)?;
     c.friction = match overrides.friction {
         RacewayFriction::Muraki => {
             check_traction_oil(model, lubrication)?;
@@ -138,6 +139,24 @@ pub fn quasi_static_conditions(
         RacewayFriction::Seed001 => FrictionModel::Seed001(Default::default()),
     };
     Ok(c)
+}
+
+/// The model's drag inputs at oil temperature `oil_temperature_k`, the same as the dynamics'
+/// (SPEC §3.6): its linear cage drag `[dynamics] cage_drag` when it gives one (else seed 001's
+/// mixture formula), its oil volume fraction and its roller drag ([`crate::roller_drag_factor`]).
+pub fn drag_inputs(
+    model: &Model,
+    oil_temperature_k: f64,
+) -> Result<rolldyn_quasistatic::DragInputs, SetupError> {
+    let mut d = rolldyn_quasistatic::DragInputs {
+        viscous_coefficient_n_m_s: model.dynamics.cage_drag_n_m_s,
+        roller_drag_kg_m: crate::roller_drag_factor(model, oil_temperature_k)?,
+        ..Default::default()
+    };
+    if let Some(chi) = model.dynamics.oil_volume_fraction {
+        d.oil_volume_fraction = chi;
+    }
+    Ok(d)
 }
 
 /// The cage–land model of `bearing` (the finite land on the ring that guides the cage).
@@ -159,13 +178,22 @@ pub fn cage_land_model(
 
 /// The quasi-static land matching the dynamics' land law of `[dynamics] cage_land_law`: the
 /// finite journal bearing for "hydrodynamic" (the film of the dynamics'
-/// `HydrodynamicLand`), [`ContactLand`] with the model's pair-14 parameters for "contact".
+/// `HydrodynamicLand`, filled to `[dynamics] cage_land_fill`), [`ContactLand`] with the model's
+/// pair-14 parameters for "contact".
 pub fn matching_land_model(
     bearing: &CylindricalRollerBearing,
     inputs: &rolldyn_model::DynamicsInputs,
 ) -> Box<dyn QuasiStaticLandModel> {
     match inputs.cage_land_law {
-        CageLandLaw::Hydrodynamic => cage_land_model(bearing, LandChoice::Finite),
+        CageLandLaw::Hydrodynamic => {
+            let inner_land = bearing
+                .cage
+                .as_ref()
+                .is_some_and(|c| c.guidance == CageGuidance::InnerLand);
+            let mut land = FiniteLand::new(inner_land);
+            land.fill_fraction = inputs.cage_land_fill.unwrap_or(1.0);
+            Box::new(land)
+        }
         CageLandLaw::Contact => Box::new(ContactLand {
             friction: crate::contact_parameters(bearing, inputs)
                 .cage_land
@@ -207,6 +235,7 @@ pub fn dynamics_start_conditions(
     qs.temperatures.cage = t.cage_k;
     // the dynamics' drag law, so that the start is the dynamics' own steady state
     qs.drag.viscous_coefficient_n_m_s = Some(conditions.cage_drag_n_m_s);
+    qs.drag.roller_drag_kg_m = conditions.roller_drag_kg_m;
     qs.friction = muraki_friction(lubrication);
     // the dynamics' misalignment (a command-line override included), not the model file's
     qs.misalignment_rad = Some(conditions.misalignment_rad);

@@ -744,6 +744,9 @@ pub fn run_observed(args: Args, observer: Observer<'_>) -> Result<(), Failure> {
         return print_json(&answer);
     }
     print_summary(model.bearing.name(), &summary, &limits);
+    for (name, value) in rolldyn_setup::drag_and_land_inputs(&model) {
+        println!("  {name:<34} {value}");
+    }
     Ok(())
 }
 

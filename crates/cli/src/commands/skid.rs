@@ -318,7 +318,11 @@ pub fn run(args: Args) -> Result<(), Failure> {
     if args.json {
         return print_json(&serde_json::json!({ "variable": swept.key, "points": rows }));
     }
-    print_sweep(name, &swept, &rows);
+    let drag_law = points
+        .iter()
+        .find_map(|p| p.result.as_ref().ok().map(|r| r.cage_drag_law.clone()))
+        .unwrap_or_default();
+    print_sweep(name, &swept, &rows, &drag_law);
     Ok(())
 }
 
@@ -374,8 +378,9 @@ fn write_sweep_files(
 }
 
 /// The sweep as a text table (speeds in rpm).
-fn print_sweep(name: &str, swept: &Swept, rows: &[SweepRow]) {
+fn print_sweep(name: &str, swept: &Swept, rows: &[SweepRow], drag_law: &str) {
     println!("{name}: quasi-static cage slip, sweep over {}", swept.label);
+    println!("  drag laws: {drag_law}");
     for r in rows {
         match (r.cage_slip, &r.error) {
             (Some(s), _) => println!(
@@ -416,6 +421,7 @@ fn print_point(name: &str, r: &SkidResult) {
         format!("{:.4} mm", r.operating_clearance_m * 1e3),
     );
     line("power loss", format!("{:.2} W", r.power_loss_w));
+    line("drag laws", r.cage_drag_law.clone());
     line(
         "min scuffing margin s_cr/s",
         r.min_scuffing_margin

@@ -416,6 +416,19 @@ fn skidding_study(dir: &Path) -> Result<(), Failure> {
             "the O'Brien–Taylor example is a cylindrical bearing".into(),
         ));
     };
+    // the model's drag inputs (cage drag, oil volume fraction, roller drag) at each speed's oil
+    // temperature, as the dynamics uses them
+    let mut drag = std::collections::HashMap::new();
+    for n in studies::OBRIEN_TAYLOR_SPEEDS_RPM {
+        let t = studies::obrien_taylor_temperature_c(n) + 273.15;
+        drag.insert(
+            t.to_bits(),
+            rolldyn_setup::quasi_static::drag_inputs(&model, t)?,
+        );
+    }
+    for (name, value) in rolldyn_setup::drag_and_land_inputs(&model) {
+        println!("{name}: {value}");
+    }
     for (traction, stem, label) in [
         (
             NviTraction::Seed000Elastic,
@@ -428,7 +441,8 @@ fn skidding_study(dir: &Path) -> Result<(), Failure> {
             "Maxwell–Eyring traction, τ0 = 5 MPa (assumed)",
         ),
     ] {
-        let rows = studies::obrien_taylor(bearing, traction, &options);
+        let rows =
+            studies::obrien_taylor(bearing, traction, &options, &|t| drag[&t.to_bits()].clone());
         skid_rows_csv(&dir.join(format!("{stem}.csv")), &rows)?;
         // Per speed the study runs the load series (aligned), then the misalignment series at
         // 201 N.

@@ -5,9 +5,10 @@
 //! 2. contact detection per pair type, for all rollers in vector loops: roller ↔ raceway
 //!    ([`raceways::detect`], SPEC §2.1–2.2), roller ↔ cage bar ([`cage::detect`]), roller end
 //!    ↔ rib and pocket face ([`roller_ends::detect`]);
-//! 3. contact forces: per roller its bars, ribs and pocket faces, then the raceway slices of
-//!    all rollers in one slot loop per raceway and their traction in one batch per raceway
-//!    (SPEC §3.3), and the cage ↔ land contact and cage drag (§3.6);
+//! 3. contact forces: per roller the drag of the air–oil mixture, its bars, ribs and pocket
+//!    faces, then the raceway slices of all rollers in one slot loop per raceway and their
+//!    traction in one batch per raceway (SPEC §3.3), and the cage ↔ land contact and cage drag
+//!    (§3.6);
 //! 4. [`assembly`]: the Newton–Euler equations (seed 000 eqs. (2.1), (2.2)) with loads and
 //!    gravity.
 //!
@@ -25,7 +26,7 @@ pub(crate) use diagnostics::{ContactTable, Diagnostics, Tables};
 
 use crate::ends::ReachColumns;
 use crate::model::Model;
-use crate::vec3::{V3, axpy, dot, scale};
+use crate::vec3::{V3, add, axpy, dot, norm, perp, scale};
 use bodies::{Bodies, RollerColumns};
 use cage::PocketColumns;
 use raceways::RacewayScratch;
@@ -151,7 +152,10 @@ fn roller_contacts(
     let azimuth = sc.rollers.theta[0][j];
     raceways::prepare_slots(model, bodies, j, &rk, azimuth, &mut sc.raceways);
     let mut roller = Wrench {
-        force: scale(model.conditions.gravity_m_s2, model.m_r),
+        force: add(
+            scale(model.conditions.gravity_m_s2, model.m_r),
+            roller_drag(model.conditions.roller_drag_kg_m, &rk),
+        ),
         moment: [0.0; 3],
     };
     let violation = &mut diag.violation;
@@ -210,6 +214,17 @@ fn roller_contacts(
     diag.pocket_power[j] = pocket.power;
     diag.pocket_loads[j].end = pocket.points;
     sc.wrench[j] = roller;
+}
+
+/// Drag of the air–oil mixture (at rest) on a roller moving across its axis, F = −k |v| v
+/// with k = ½ ρ_eff C_D D l (`rolldyn_lubrication::mixture::roller_drag_factor`), N.
+#[inline(always)]
+fn roller_drag(k: f64, rk: &crate::kinematics::RollerKinematics) -> V3 {
+    if k == 0.0 {
+        return [0.0; 3];
+    }
+    let v = perp(rk.v, rk.a);
+    scale(v, -k * norm(v))
 }
 
 /// The raceway contacts of all rollers: slot loops, loaded slices, traction (added to the
