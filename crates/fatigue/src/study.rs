@@ -75,6 +75,10 @@ pub fn cage_geometry(
         .ok_or("cage fatigue needs a cage ([cage] in the model)")?;
     let ctx = bearing.pocket_context(cage);
     let play = cage.pocket.play(&ctx).map_err(|e| e.to_string())?;
+    let walls = cage.pocket.walls(&ctx).map_err(|e| e.to_string())?;
+    // the contact point snapped onto the flank the stress models mesh (they do not round the
+    // lip edge): the window's half-width at the contact radius
+    let [rho, _] = play.circumferential_contact;
     let geometry = CageGeometry {
         pockets: ctx.pockets,
         inner_radius: ctx.cage_inner_radius,
@@ -83,7 +87,7 @@ pub fn cage_geometry(
         pocket: cage.pocket,
         roller_radius: ctx.roller_radius,
         pitch_radius: ctx.pitch_radius,
-        bar_contact: play.circumferential_contact,
+        bar_contact: [rho, walls.half_window_at(rho)],
         youngs_modulus: cage.material.youngs_modulus,
         poisson_ratio: cage.material.poisson_ratio,
         density: cage.material.density,
