@@ -80,6 +80,28 @@ fn check_prints_derived_quantities() {
     let cage = v["epicyclic_cage_speed_rad_s"].as_f64().unwrap();
     // ω_i d_i/(d_i + D_o) on the rolling diameters 165 and 165 + 30 + 0.009 mm
     assert!((cage - 305.778).abs() < 0.001, "{cage}");
+    // the pocket as built: lips on Ø192.5 mm 11.25 mm apart stop a centred roller after
+    // w_L + r_t − √((R_w + r_t)² − (ρ_L + r_t − r_m)²) with ρ_L = √(96.25² − 5.625²) mm
+    let p = &v["cage_pocket"];
+    assert_eq!(p["circumferential_stop"], "outer lip");
+    assert_eq!(p["fits"], true);
+    let (w, rt, rw, rm) = (5.625e-3, 0.2e-3, 7.5e-3, 90e-3);
+    let rho = (96.25e-3f64.powi(2) - w * w).sqrt();
+    let hand = w + rt - ((rw + rt).powi(2) - (rho + rt - rm).powi(2)).sqrt();
+    let play = p["circumferential_play_per_side_m"].as_f64().unwrap();
+    assert!((play - hand).abs() < 1e-9, "{play} vs {hand}");
+    assert!(p["bar_area_m2"].as_f64().unwrap() > 0.0);
+    let text =
+        String::from_utf8_lossy(&rolldyn(&["check", &example("2002834.toml")]).stdout).to_string();
+    for line in [
+        "cage pocket faces",
+        "cage pocket outer lip",
+        "roller play in its pocket",
+        "pocket fit",
+        "cage bar section",
+    ] {
+        assert!(text.contains(line), "{line}: {text}");
+    }
 }
 
 #[test]
@@ -100,6 +122,16 @@ fn bad_model_exits_2_with_one_line_naming_file_line_key() {
             "pocket_axial = \"11.25 mm\"",
             "pocket_axial = \"-1 mm\"",
             "cage.pocket_axial",
+        ),
+        (
+            "window = \"11.25 mm\"",
+            "window = \"8 mm\"",
+            "cage.pocket.outer_lip.window",
+        ),
+        (
+            "face_clearance = \"4 mm\"",
+            "face_clearance = \"-0.2 mm\"",
+            "cage.pocket.face_clearance",
         ),
     ];
     for (k, (from, to, key)) in cases.iter().enumerate() {

@@ -37,7 +37,7 @@ fn outer_fillet_stress(bearing: &CylindricalRollerBearing) -> f64 {
 }
 
 #[test]
-fn one_profile_key_moves_stress_contact_section_and_mass() {
+fn one_profile_key_moves_contact_stress_bar_section_and_mass() {
     let (base, wider) = bearings();
     // the fatigue cage's bar section is the contact law's, key for key
     for b in [&base, &wider] {
@@ -67,6 +67,17 @@ fn one_profile_key_moves_stress_contact_section_and_mass() {
     );
     assert_eq!(s1.width_inner, s0.width_inner);
     assert!(mass(&wider) < mass(&base));
+    // the dynamics' roller–pocket contact reads the same walls (`Model::new` resolves
+    // `cage.pocket` against the bearing): the roller's play to the lip grows
+    let play = |b: &CylindricalRollerBearing| {
+        let cage = b.cage.as_ref().unwrap();
+        cage.pocket
+            .play(&b.pocket_context(cage))
+            .unwrap()
+            .circumferential_per_side
+    };
+    assert!(play(&wider) > play(&base) + 0.5e-3);
+    assert_ne!(base.pocket_walls(), wider.pocket_walls());
     let (f0, f1) = (outer_fillet_stress(&base), outer_fillet_stress(&wider));
     assert!(f0.is_finite() && f1.is_finite() && f0 != 0.0);
     assert!((f1 / f0 - 1.0).abs() > 0.01, "{f0:e} → {f1:e}");
