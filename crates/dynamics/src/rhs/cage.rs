@@ -9,8 +9,7 @@ use crate::kinematics::RollerKinematics;
 use crate::land::LandKinematics;
 use crate::model::Model;
 use crate::output::PointForce;
-use crate::vec3::{V3, add, axpy, cross, dot, norm, perp, power, scale, sub, unit_or};
-use rolldyn_contact::damping::SliceDamping;
+use crate::vec3::{V3, add, axpy, cross, dot, norm, perp, scale, sub, unit_or};
 
 /// Per pocket (struct of arrays): its frame in the cage plane and whether its roller can touch
 /// a wall.
@@ -129,20 +128,21 @@ pub(super) fn bar_contacts(
             let q = axpy(rk.c, x, rk.a);
             let radius = model.rw - model.slice_drop[i];
             let (delta, n) = wall_overlap(model, cage.centre, frame, side, q, radius);
-            if delta <= 0.0 {
+            if -delta >= law.reach() {
                 continue;
             }
             note(violation, "roller ↔ cage pocket", j, delta, model.div_limit);
-            let share = model.bar_slice_share[i];
+            let length = model.bar_slice_share[i] * law.reference_length();
             let cp = axpy(q, -radius, n);
             let r_cp = sub(cp, rk.c);
             let v_roll = add(rk.v, cross(rk.w, r_cp));
             let v_cage = add(cage.velocity, cross(cage.omega, sub(cp, cage.centre)));
             let vrel = sub(v_roll, v_cage);
-            let delta_dot = -dot(vrel, n);
-            let elastic = share * bar.k_p * power(delta, bar.exponent);
-            let qn =
-                SliceDamping::new(share * bar.c_h, bar.d).normal_force(elastic, delta, delta_dot);
+            // entrainment: half the roller's surface speed over the bar (fixed on the cage),
+            // across the roller axis in the contact's tangent plane
+            let rolling = unit_or(cross(rk.a, n), [0.0; 3]);
+            let entrainment = 0.5 * dot(vrel, rolling);
+            let qn = law.normal_force(-delta, dot(vrel, n), entrainment, length);
             if qn <= 0.0 {
                 continue;
             }
