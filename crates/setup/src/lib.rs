@@ -288,6 +288,15 @@ pub fn drag_and_land_inputs(model: &rolldyn_model::Model) -> Vec<(&'static str, 
         },
     )];
     out.push((
+        "roller–cage law",
+        match (d.roller_cage.k_p, d.roller_cage.exponent) {
+            (None, None) => "K_p, n derived at load from the cage pocket, the roller and the oil \
+                             (docs/theory.md §2.3.1; [dynamics.roller_cage] stiffness, exponent not given)"
+                .to_string(),
+            _ => "K_p, n given ([dynamics.roller_cage] stiffness, exponent)".to_string(),
+        },
+    ));
+    out.push((
         "cage drag",
         match d.cage_drag_n_m_s {
             Some(c) => format!("M = −c ω, c = {c:.4e} N·m·s ([dynamics] cage_drag)"),
@@ -373,10 +382,14 @@ fn contact_parameters(
     c
 }
 
-/// `[dynamics.roller_cage] law`: for "lubricated" the oil film between roller and bar
-/// (`rolldyn_contact::bar_force::BarFilm::of_bearing`, the oil's viscosity at the cage
-/// temperature `cage_k`), and without a `damping` key `C_h = 0`: the film is the damper the
-/// elastic law's `C_h` stands for, so both would count it twice (docs/theory.md §2.3.1).
+/// Pair 34 of a bearing with a cage. Without `stiffness` and `exponent` in
+/// `[dynamics.roller_cage]` the elastic law is derived from the cage pocket profile, the roller
+/// and the oil at the cage temperature (`rolldyn_contact::cage_bar::derive_for_bearing`,
+/// docs/theory.md §2.3.1: the bar's section from the one pocket description), and so are
+/// `damping` and `damping_ramp` when not given. For `law = "lubricated"` the oil film between
+/// roller and bar (`rolldyn_contact::bar_force::BarFilm::of_bearing`) is added, and without a
+/// `damping` key `C_h = 0`: the film is the damper the elastic law's `C_h` stands for, so both
+/// would count it twice.
 fn with_roller_cage_law(
     mut parameters: ContactParameters,
     bearing: &rolldyn_geometry::CylindricalRollerBearing,
@@ -384,22 +397,41 @@ fn with_roller_cage_law(
     cage_k: f64,
     inputs: &rolldyn_model::DynamicsInputs,
 ) -> Result<ContactParameters, SetupError> {
-    if inputs.roller_cage_law != rolldyn_model::RollerCageLaw::Lubricated {
+    let given = &inputs.roller_cage;
+    let derive = given.k_p.is_none() && given.exponent.is_none();
+    let lubricated = inputs.roller_cage_law == rolldyn_model::RollerCageLaw::Lubricated;
+    if bearing.cage.is_none() || !(derive || lubricated) {
         return Ok(parameters);
     }
     let oil = &lubrication.oil;
     let viscosity = oil
         .dynamic_viscosity(oil.clamp_temperature(cage_k))
-        .map_err(|e| SetupError(format!("dynamics.roller_cage.law: oil viscosity: {e}")))?;
-    let film = rolldyn_contact::bar_force::BarFilm::of_bearing(
-        bearing,
-        viscosity,
-        &rolldyn_contact::bar_force::BarFilmSettings::default(),
-    )
-    .ok_or_else(|| SetupError("dynamics.roller_cage.law: the bearing has no cage".into()))?;
-    parameters.roller_cage_film = Some(film);
-    if inputs.roller_cage.c_h.is_none() {
-        parameters.roller_cage.c_h = 0.0;
+        .map_err(|e| SetupError(format!("dynamics.roller_cage: oil viscosity: {e}")))?;
+    if derive {
+        let (_, law) = rolldyn_contact::cage_bar::derive_for_bearing(
+            bearing,
+            viscosity,
+            &rolldyn_contact::cage_bar::DerivationSettings::default(),
+        )
+        .ok_or_else(|| {
+            SetupError("dynamics.roller_cage: no bar law derives from this cage".into())
+        })?;
+        let p = &mut parameters.roller_cage;
+        (p.k_p, p.exponent) = (law.elastic.k_p, law.elastic.exponent);
+        p.c_h = given.c_h.unwrap_or(law.c_h);
+        p.d = given.d.unwrap_or(law.d);
+    }
+    if lubricated {
+        let film = rolldyn_contact::bar_force::BarFilm::of_bearing(
+            bearing,
+            viscosity,
+            &rolldyn_contact::bar_force::BarFilmSettings::default(),
+        )
+        .ok_or_else(|| SetupError("dynamics.roller_cage.law: the bearing has no cage".into()))?;
+        parameters.roller_cage_film = Some(film);
+        if given.c_h.is_none() {
+            parameters.roller_cage.c_h = 0.0;
+        }
     }
     Ok(parameters)
 }
@@ -699,6 +731,40 @@ mod tests {
             p.roller_cage_law(5e-3),
             rolldyn_contact::bar_force::BarForceLaw::Lubricated(_)
         ));
+    }
+
+    /// Without stiffness and exponent in `[dynamics.roller_cage]` pair 34 is derived from the
+    /// cage pocket: 2002834's pocket gives the law of docs/validation/bar-contact-law.md
+    /// (K_p = 7.254·10⁸ N/m^1.1106, C_h 1774 N·s/m, d 3.13 µm), and a narrower pocket face
+    /// (reading (b), a wider and stiffer bar) a stiffer law.
+    #[test]
+    fn the_bar_law_follows_the_cage_pocket() {
+        let law = |text: &str| {
+            let model = rolldyn_model::parse(text, "m.toml").unwrap();
+            let (bearing, oil) = bearing_and_oil(&model).unwrap();
+            with_roller_cage_law(
+                contact_parameters(bearing, &model.dynamics),
+                bearing,
+                oil,
+                373.15,
+                &model.dynamics,
+            )
+            .unwrap()
+            .roller_cage
+        };
+        let a = law(rolldyn_model::DEFAULT_MODEL);
+        assert!((a.k_p / 7.254e8 - 1.0).abs() < 1e-3, "{}", a.k_p);
+        assert!((a.exponent - 1.1106).abs() < 1e-3, "{}", a.exponent);
+        assert!((a.c_h / 1774.5 - 1.0).abs() < 1e-2 && (a.d / 3.13e-6 - 1.0).abs() < 1e-2);
+        let narrow = rolldyn_model::DEFAULT_MODEL.replacen(
+            "face_clearance = \"4 mm\"",
+            "face_clearance = \"0.6 mm\"",
+            1,
+        );
+        assert_ne!(narrow, rolldyn_model::DEFAULT_MODEL);
+        let b = law(&narrow);
+        let force = |p: &rolldyn_dynamics::PairParameters| p.k_p * 1e-6f64.powf(p.exponent);
+        assert!(force(&b) > force(&a), "{} vs {}", force(&b), force(&a));
     }
 
     fn model_1032930() -> rolldyn_model::Model {
