@@ -356,10 +356,9 @@ pub(crate) struct Model {
     pub it_c: f64,
     /// the pocket walls of the cage profile, pocket coordinates (docs/theory.md §1.6)
     pub pocket: PocketWalls,
-    /// share `l_i/L_b` of the roller–cage `K_p` and `C_h` carried by each slice: its length over
-    /// the length of the roller's line contact on a flat bar
-    /// ([`rolldyn_geometry::Roller::bar_contact_length`]), for which the pair's law holds
-    pub bar_slice_share: Vec<f64>,
+    /// axial length of each roller slice, m (the pair-34 law takes its share `l_i/L_b` of the
+    /// law for the roller's line contact on a flat bar, [`BarForceLaw::normal_force`])
+    pub slice_length: Vec<f64>,
     pub land: Option<LandGeometry>,
     pub land_model: Box<dyn CageLandModel>,
     // inner ring
@@ -476,11 +475,7 @@ impl Model {
                 .pocket
                 .walls(&bearing.pocket_context(cage))
                 .map_err(|e| DynError::InvalidInput(e.to_string()))?,
-            bar_slice_share: stack
-                .length
-                .iter()
-                .map(|l| l / roller.bar_contact_length())
-                .collect(),
+            slice_length: stack.length.clone(),
             land,
             land_model: Box::new(TwoLevelLand {
                 parameters: params.cage_land,

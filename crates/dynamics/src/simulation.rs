@@ -1200,8 +1200,8 @@ fn energy(model: &Model, t: f64, y: &[f64]) -> f64 {
                 let radius = model.rw - model.slice_drop[sl];
                 let (delta, _) = crate::rhs::wall_overlap(model, cc, (ep, tp), side, q, radius);
                 if delta > 0.0 {
-                    e += model.bar_slice_share[sl] * bar.k_p * delta.powf(bar.exponent + 1.0)
-                        / (bar.exponent + 1.0);
+                    let share = model.slice_length[sl] / model.bar_law.reference_length();
+                    e += share * bar.k_p * delta.powf(bar.exponent + 1.0) / (bar.exponent + 1.0);
                 }
             }
         }
@@ -1256,8 +1256,8 @@ mod tests {
         use rolldyn_contact::damping::SliceDamping;
         let m = model_2002834();
         let p = m.params.roller_cage;
-        let share = m.bar_slice_share[0];
-        let length = share * m.bar_law.reference_length();
+        let length = m.slice_length[0];
+        let share = length / m.bar_law.reference_length();
         let damping = SliceDamping::new(share * p.c_h, p.d);
         for (delta, rate) in [(1e-7_f64, 0.1), (5e-7, -0.02), (2e-6, 0.0)] {
             let seed = damping.normal_force(share * p.k_p * delta.powf(p.exponent), delta, rate);

@@ -18,7 +18,7 @@
 
 use crate::error::GeometryError;
 use crate::mass::MassProperties;
-use std::f64::consts::{PI, TAU};
+use std::f64::consts::TAU;
 
 /// Shape of the pocket faces in the cage's transverse plane.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
@@ -252,7 +252,7 @@ impl PocketWalls {
     /// Tangential width of the bar between two of `pockets` windows at radius `r`, `b(r) =
     /// 2πr/Z − 2w(r)` [m].
     pub fn bar_width_at(&self, r: f64, pockets: usize) -> f64 {
-        pitch_arc(r, pockets) - 2.0 * self.half_window_at(r)
+        TAU * r / pockets as f64 - 2.0 * self.half_window_at(r)
     }
 
     /// The radii `ρ` where the window half-width steps (the lip edges), ascending [m].
@@ -268,14 +268,6 @@ impl PocketWalls {
 
     pub fn faces(&self) -> PocketFaces {
         self.faces
-    }
-
-    pub fn face_half_width(&self) -> f64 {
-        self.face_half_width
-    }
-
-    pub fn band(&self) -> (f64, f64) {
-        self.band
     }
 }
 
@@ -568,11 +560,6 @@ impl CagePocket {
             ..*self
         }
     }
-}
-
-/// Arc length of a pitch at radius `r` for `z` pockets (the bar plus one window).
-pub fn pitch_arc(r: f64, z: usize) -> f64 {
-    2.0 * PI * r / z as f64
 }
 
 #[cfg(test)]

@@ -293,7 +293,8 @@ pub fn drag_and_land_inputs(model: &rolldyn_model::Model) -> Vec<(&'static str, 
             (None, None) => "K_p, n derived at load from the cage pocket, the roller and the oil \
                              (docs/theory.md §2.3.1; [dynamics.roller_cage] stiffness, exponent not given)"
                 .to_string(),
-            _ => "K_p, n given ([dynamics.roller_cage] stiffness, exponent)".to_string(),
+            (Some(_), Some(_)) => "K_p, n given ([dynamics.roller_cage] stiffness, exponent)".to_string(),
+            _ => "K_p or n given, the other the rolldyn default ([dynamics.roller_cage]; give both, or neither to derive them)".to_string(),
         },
     ));
     out.push((

@@ -37,10 +37,11 @@ impl PocketColumns {
     }
 }
 
-/// Pocket coordinates `(ρ, h)` of point `q` in the pocket frame `(e_p, t_p)` of the cage.
+/// Pocket coordinates `(ρ, h)` of point `q` in the pocket frame `(e_p, t_p)` of a cage centred
+/// at `cage_centre`.
 #[inline]
-fn pocket_coordinates(cage: &CageKin, (ep, tp): (V3, V3), q: V3) -> (f64, f64) {
-    let d = sub(q, cage.centre);
+fn pocket_coordinates(cage_centre: V3, (ep, tp): (V3, V3), q: V3) -> (f64, f64) {
+    let d = sub(q, cage_centre);
     (dot(d, ep), dot(d, tp))
 }
 
@@ -56,8 +57,7 @@ pub(crate) fn wall_overlap(
     q: V3,
     radius: f64,
 ) -> (f64, V3) {
-    let d = sub(q, cage_centre);
-    let (rho, h) = (dot(d, ep), dot(d, tp));
+    let (rho, h) = pocket_coordinates(cage_centre, (ep, tp), q);
     let wall = model.pocket.distance(rho, side * h);
     let n = axpy(scale(ep, wall.normal[0]), side * wall.normal[1], tp);
     (radius - wall.distance, n)
@@ -90,7 +90,7 @@ pub(super) fn detect(
     for j in 0..z {
         let centre = [0, 1, 2].map(|k| rollers.centre[k][j]);
         let a = [0, 1, 2].map(|k| rollers.axis[k][j]);
-        let (rho, h) = pocket_coordinates(cage, pockets.frame(j), centre);
+        let (rho, h) = pocket_coordinates(cage.centre, pockets.frame(j), centre);
         let (g, _, _) = model.pocket.clearance(rho, h, model.rw);
         pockets.clearance_bound[j] = g - norm(perp(a, cage.axis)) * model.slice_reach;
     }
@@ -98,11 +98,11 @@ pub(super) fn detect(
 
 /// Roller `j` ↔ the walls of its pocket: every slice of the roller (its profiled radius) against
 /// both walls, each wall the nearest of its faces and lips, the normal from the geometry. Each
-/// slice carries the share `l_i/L_b` of the pair's law ([`Model::bar_slice_share`],
-/// [`rolldyn_contact::bar_force::BarForceLaw`]): elastic `Q = K_p' δⁿ + C(δ) δ̇` (seed 000
+/// slice of length `l_i` ([`Model::slice_length`]) carries its share of the pair's law
+/// ([`rolldyn_contact::bar_force::BarForceLaw`]): elastic `Q = K_p' δⁿ + C(δ) δ̇` (seed 000
 /// (2.5)–(2.8)), or the oil film's squeeze and wedge force within its reach plus that law on
-/// touch; friction `μ(v_s) Q` against the sliding velocity. Adds the forces to the roller and their reaction to
-/// the cage.
+/// touch; friction `μ(v_s) Q` against the sliding velocity. Adds the forces to the roller and
+/// their reaction to the cage.
 #[inline(always)]
 pub(super) fn bar_contacts(
     model: &Model,
@@ -132,7 +132,6 @@ pub(super) fn bar_contacts(
                 continue;
             }
             note(violation, "roller ↔ cage pocket", j, delta, model.div_limit);
-            let length = model.bar_slice_share[i] * law.reference_length();
             let cp = axpy(q, -radius, n);
             let r_cp = sub(cp, rk.c);
             let v_roll = add(rk.v, cross(rk.w, r_cp));
@@ -142,7 +141,7 @@ pub(super) fn bar_contacts(
             // across the roller axis in the contact's tangent plane
             let rolling = unit_or(cross(rk.a, n), [0.0; 3]);
             let entrainment = 0.5 * dot(vrel, rolling);
-            let qn = law.normal_force(-delta, dot(vrel, n), entrainment, length);
+            let qn = law.normal_force(-delta, dot(vrel, n), entrainment, model.slice_length[i]);
             if qn <= 0.0 {
                 continue;
             }
