@@ -1,15 +1,13 @@
-//! The `rolldyn` commands as a library: the binary (`main.rs`) parses the command line and
-//! prints; the Python package (`crates/python`) calls the same commands through [`api`], so that
-//! both answer with the same numbers.
+//! The `rolldyn` program's command line: each command parses its flags into a request of the
+//! `rolldyn` library, runs it and prints the result (text, or JSON with `--json`). The analyses
+//! and their orchestration live in the library; the Python package calls the same library.
 
 // Validation reads `!(x > 0.0)` on purpose: it is also true for NaN, which must be rejected.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
-pub mod api;
 pub mod commands;
-pub mod failure;
+pub use rolldyn::failure;
 pub mod output;
-mod run_record;
 
 use clap::{Parser, Subcommand};
 use failure::Failure;

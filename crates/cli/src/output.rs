@@ -1,62 +1,153 @@
-//! Writing results: JSON on stdout, CSV files, output folders.
+//! How the program asks the library and shows its answers: the context of a run (model file,
+//! command line, progress bar, Ctrl-C-free stop), JSON on stdout, text on stdout.
 
 use crate::failure::Failure;
+use clap::CommandFactory;
+use clap::parser::ValueSource;
+use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use rolldyn::{Analysis, Context, Invocation, ModelSource, Observer, Progress};
 use serde::Serialize;
-use std::path::{Path, PathBuf};
+use std::collections::BTreeMap;
+use std::path::Path;
 
-/// Prints `value` as pretty JSON on stdout; a closed pipe (`| head`) is not an error. Under
-/// [`crate::api`] the value is handed to the caller instead.
+/// Options that change where, how or how fast the answer is given, not what is computed; the
+/// run manifest does not record them.
+const PRESENTATION_FLAGS: [&str; 5] = ["out", "json", "quiet", "report", "jobs"];
+
+/// Prints `value` as pretty JSON on stdout; a closed pipe (`| head`) is not an error.
 pub fn print_json<T: Serialize>(value: &T) -> Result<(), Failure> {
+    let text = serde_json::to_string_pretty(value)?;
+    print_text(&text)
+}
+
+/// Prints `text` and a newline on stdout; a closed pipe is not an error.
+pub fn print_text(text: &str) -> Result<(), Failure> {
     use std::io::Write;
-    if crate::api::capturing() {
-        let value = serde_json::to_value(value).map_err(|e| Failure::Run(e.to_string()))?;
-        crate::api::capture(value);
-        return Ok(());
-    }
-    let text = serde_json::to_string_pretty(value).map_err(|e| Failure::Run(e.to_string()))?;
     match writeln!(std::io::stdout().lock(), "{text}") {
         Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => Err(e.into()),
         _ => Ok(()),
     }
 }
 
-/// Creates the output folder (and parents) and returns it.
-pub fn out_dir(dir: &Path) -> Result<PathBuf, Failure> {
-    std::fs::create_dir_all(dir).map_err(|e| {
-        Failure::Run(format!(
-            "cannot create output folder {}: {e}",
-            dir.display()
-        ))
-    })?;
-    Ok(dir.to_path_buf())
-}
-
-/// Writes a CSV file with a header row and numeric rows.
-pub fn write_csv(
-    path: &Path,
-    header: &[&str],
-    rows: impl Iterator<Item = Vec<f64>>,
+/// Runs analysis `A` and prints its result: as JSON with `json`, else as text.
+pub fn run_and_print<A: Analysis>(
+    request: &A::Request,
+    model: Option<&Path>,
+    json: bool,
 ) -> Result<(), Failure> {
-    let fail = |e: csv::Error| Failure::Run(format!("cannot write {}: {e}", path.display()));
-    let mut writer = csv::Writer::from_path(path).map_err(fail)?;
-    writer.write_record(header).map_err(fail)?;
-    for row in rows {
-        writer
-            .write_record(row.iter().map(|&v| rolldyn_output::csv_field(v)))
-            .map_err(fail)?;
+    let observer = Bar::hidden();
+    let result = A::run(request, &context(model, &observer))?;
+    if json {
+        print_json(&result)
+    } else {
+        print_text(&result.to_string())
     }
-    writer.flush()?;
-    Ok(())
 }
 
-/// Loads a model file, or the embedded default model when `path` is `None`; under
-/// [`crate::api`] with a model given, that model.
-pub fn load_model(path: Option<&Path>) -> Result<rolldyn_model::Model, Failure> {
-    if let Some(model) = crate::api::given_model() {
-        return Ok(model);
+/// The context of a run on the model file `model` (the embedded model when `None`).
+pub fn context<'a>(model: Option<&Path>, observer: &'a dyn Observer) -> Context<'a> {
+    Context {
+        model: ModelSource::file_or_embedded(model),
+        invocation: invocation(),
+        observer,
     }
-    Ok(match path {
-        Some(path) => rolldyn_model::load(path)?,
-        None => rolldyn_model::parse(rolldyn_model::DEFAULT_MODEL, "<embedded 2002834.toml>")?,
-    })
+}
+
+/// The model file `model` (the embedded model when `None`), parsed.
+pub fn load_model(model: Option<&Path>) -> Result<rolldyn_model::Model, Failure> {
+    ModelSource::file_or_embedded(model).load()
+}
+
+/// This process' command line and the options given on it.
+pub fn invocation() -> Invocation {
+    let command: Vec<String> = std::env::args().collect();
+    Invocation {
+        given: given_flags(&command),
+        command,
+    }
+}
+
+/// The flags of `command_line` given on it, as typed (`"--speed": "4000rpm"`), without the
+/// presentation flags.
+fn given_flags(command_line: &[String]) -> BTreeMap<String, String> {
+    let cli = crate::Cli::command();
+    let Ok(matches) = cli.clone().try_get_matches_from(command_line) else {
+        return BTreeMap::new();
+    };
+    let Some((name, given)) = matches.subcommand() else {
+        return BTreeMap::new();
+    };
+    let Some(command) = cli.find_subcommand(name) else {
+        return BTreeMap::new();
+    };
+    command
+        .get_arguments()
+        .filter_map(|arg| {
+            let long = arg.get_long()?;
+            let id = arg.get_id().as_str();
+            if PRESENTATION_FLAGS.contains(&long)
+                || given.value_source(id) != Some(ValueSource::CommandLine)
+            {
+                return None;
+            }
+            let values: Vec<String> = given
+                .try_get_raw(id)
+                .ok()
+                .flatten()
+                .map(|raw| raw.map(|v| v.to_string_lossy().into_owned()).collect())
+                .unwrap_or_default();
+            Some((format!("--{long}"), values.join(",")))
+        })
+        .collect()
+}
+
+/// A progress bar on stderr that watches a long run (hidden with `--quiet`).
+pub struct Bar {
+    bar: ProgressBar,
+}
+
+impl Bar {
+    /// A bar for a run described by `what` ("simulating", "wear", "sweep").
+    pub fn new(quiet: bool, what: &str) -> Self {
+        let bar = ProgressBar::with_draw_target(Some(1000), ProgressDrawTarget::stderr());
+        if quiet {
+            bar.set_draw_target(ProgressDrawTarget::hidden());
+        }
+        bar.set_style(
+            ProgressStyle::with_template(&format!(
+                "{{spinner}} {what} {{msg}} [{{bar:40}}] {{percent}}% ({{elapsed}}, eta {{eta}})"
+            ))
+            .expect("valid template")
+            .progress_chars("=> "),
+        );
+        Self { bar }
+    }
+
+    /// A bar that is never drawn.
+    pub fn hidden() -> Self {
+        Self::new(true, "")
+    }
+
+    /// Removes the bar from the terminal.
+    pub fn finish(&self) {
+        self.bar.finish_and_clear();
+    }
+}
+
+impl Observer for Bar {
+    fn progress(&self, progress: &Progress) {
+        self.bar.set_position((progress.fraction() * 1000.0) as u64);
+        let message = progress.message.clone().unwrap_or_else(|| {
+            format!(
+                "{:.4} of {:.4} {}",
+                progress.done, progress.total, progress.unit
+            )
+        });
+        self.bar.set_message(message);
+    }
+
+    fn warning(&self, message: &str) {
+        self.bar
+            .suspend(|| eprintln!("rolldyn: warning: {message}"));
+    }
 }

@@ -218,21 +218,3 @@ fn a_missing_folder_and_a_report_without_out_folder_are_bad_input() {
         );
     }
 }
-
-#[test]
-fn a_run_through_the_api_records_its_own_arguments() {
-    let dir = scratch("api");
-    let args: Vec<String> = ["simulate", "--duration", "0.5rev", "--out"]
-        .iter()
-        .map(|a| a.to_string())
-        .chain([dir.display().to_string(), "--json".into()])
-        .collect();
-    rolldyn_cli::api::answer(&args, None).expect("the run succeeds");
-    let m = manifest(&dir);
-    assert_eq!(m["command"][0], "rolldyn");
-    assert_eq!(m["command"][1], "simulate");
-    assert_eq!(m["overrides"]["--duration"], "0.5rev");
-    assert_eq!(m["model_file"], serde_json::Value::Null);
-    assert!(m["model_text"].as_str().unwrap().contains("2002834"));
-    std::fs::remove_dir_all(&dir).unwrap();
-}

@@ -1,7 +1,8 @@
 //! `rolldyn contact MODEL.toml --load 1167N`: roller–raceway contact pressure.
 
 use crate::failure::Failure;
-use crate::output::{load_model, out_dir, print_json, write_csv};
+use crate::output::{load_model, print_json};
+use rolldyn::output::{out_dir, write_csv};
 use rolldyn_contact::boussinesq::BoussinesqOptions;
 use rolldyn_contact::roller_raceway::{
     ContactMethod, ContactReport, PressureMap, RollerRacewayContact, SliceLawChoice,

@@ -4,7 +4,8 @@
 //! load step M ḧ + λ(h) ḣ − W₀(h) = −F (`--step-to`).
 
 use crate::failure::Failure;
-use crate::output::{out_dir, print_json, write_csv};
+use crate::output::print_json;
+use rolldyn::output::{out_dir, write_csv};
 use rolldyn_output::{default_reason, mark_non_finite};
 use rolldyn_plot::{Labels, Series, line_plot};
 use rolldyn_reynolds::compliance::half_space::HalfSpace;

@@ -2,7 +2,8 @@
 //! large rib against the reduced curvature (seed 000 §3.2.2, Figs. 3.84–3.88; SPEC §6.7).
 
 use crate::failure::Failure;
-use crate::output::{load_model, out_dir, print_json, write_csv};
+use crate::output::{load_model, print_json};
+use rolldyn::output::{out_dir, write_csv};
 use rolldyn_geometry::{BearingModel, DoubleRowTaperedBearing, TaperedRibFace};
 use rolldyn_plot::{Field, Labels, Series, heat_map_outlined, line_plot};
 use rolldyn_validation::end_rib_limit::{

@@ -4,9 +4,10 @@
 
 use super::operating_args::OperatingArgs;
 use crate::failure::Failure;
-use crate::output::{load_model, out_dir, print_json};
-use crate::run_record::{ModelOrigin, finish_out_folder};
+use crate::output::{load_model, print_json};
 use indicatif::{ProgressBar, ProgressDrawTarget};
+use rolldyn::output::out_dir;
+use rolldyn::run_record::{ModelOrigin, finish_out_folder};
 use rolldyn_fatigue::damage::MeanStressSettings;
 use rolldyn_fatigue::inclusion::{InclusionSettings, Interface};
 use rolldyn_fatigue::mean_stress::MeanStressCorrection;
@@ -283,11 +284,19 @@ fn run_life(args: Args) -> Result<(), Failure> {
         files: files.iter().map(|f| f.display().to_string()).collect(),
     };
     if let Some(dir) = &args.out {
+        let model_source = rolldyn::ModelSource::file_or_embedded(args.model.as_deref());
         let model_file = match args.loads {
             Some(_) => ModelOrigin::None,
-            None => ModelOrigin::of(args.model.as_deref()),
+            None => ModelOrigin::Source(&model_source),
         };
-        finish_out_folder(dir, RunKind::Fatigue, model_file, &answer, args.report)?;
+        finish_out_folder(
+            dir,
+            RunKind::Fatigue,
+            model_file,
+            &crate::output::invocation(),
+            &answer,
+            args.report,
+        )?;
     }
     if args.json {
         return print_json(&answer);

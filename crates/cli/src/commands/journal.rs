@@ -4,7 +4,8 @@
 //! file form (`--file`) adds the elastic liner + housing and the Fourier thermal model.
 
 use crate::failure::Failure;
-use crate::output::{out_dir, print_json, write_csv};
+use crate::output::print_json;
+use rolldyn::output::{out_dir, write_csv};
 use rolldyn_model::journal::{JournalTarget, journal_target, load_journal, parse_grid};
 use rolldyn_output::{default_reason, mark_non_finite};
 use rolldyn_plot::{Field, Labels, Series, heat_map, line_plot};

@@ -7,7 +7,8 @@
 
 use super::operating_args::OperatingArgs;
 use crate::failure::Failure;
-use crate::output::{out_dir, print_json};
+use crate::output::print_json;
+use rolldyn::output::out_dir;
 use rolldyn_geometry::{BearingModel, DoubleRowTaperedBearing};
 use rolldyn_output::{Formats, TableWriter};
 use rolldyn_plot::{Labels, Series, line_plot};

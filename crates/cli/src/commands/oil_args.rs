@@ -1,8 +1,7 @@
 //! Oil selection shared by `oils`, `traction` and `film`: a built-in name or a user TOML file,
 //! and the temperature-range policy (warn, or error with `--strict`).
 
-use crate::failure::Failure;
-use rolldyn_lubrication::{Lubricant, lubricant_by_name};
+use rolldyn::oil::OilChoice;
 use std::path::PathBuf;
 
 #[derive(clap::Args)]
@@ -19,50 +18,12 @@ pub struct OilArgs {
 }
 
 impl OilArgs {
-    /// The selected lubricant.
-    pub fn load(&self) -> Result<Lubricant, Failure> {
-        let Some(path) = &self.oil_file else {
-            return lubricant_by_name(&self.oil).map_err(|e| Failure::Input(e.to_string()));
-        };
-        let file = path.display().to_string();
-        let text = rolldyn_model::read_input_file(path)
-            .map_err(|e| Failure::Input(format!("{file}: {e}")))?;
-        toml::from_str(&text).map_err(|e| {
-            let line = e
-                .span()
-                .map(|s| {
-                    format!(
-                        ":{}",
-                        text[..s.start.min(text.len())].matches('\n').count() + 1
-                    )
-                })
-                .unwrap_or_default();
-            Failure::Input(format!(
-                "{file}{line}: {}",
-                e.message().trim().replace('\n', " ")
-            ))
-        })
-    }
-
-    /// Warns (or fails with `--strict`) when `temperature_k` is outside the oil's range.
-    pub fn check_temperature(&self, oil: &Lubricant, temperature_k: f64) -> Result<(), Failure> {
-        if oil.in_range(temperature_k) {
-            return Ok(());
+    /// The oil chosen.
+    pub fn choice(&self) -> OilChoice {
+        OilChoice {
+            oil: self.oil.clone(),
+            oil_file: self.oil_file.clone(),
+            strict: self.strict,
         }
-        let [lo, hi] = oil.temperature_range_k;
-        let message = format!(
-            "{:.1} °C is outside the documented range of {} ({:.0}…{:.0} °C); properties are clamped to the range",
-            temperature_k - 273.15,
-            oil.name,
-            lo - 273.15,
-            hi - 273.15
-        );
-        if self.strict {
-            return Err(Failure::Input(
-                message.replace("; properties are clamped to the range", ""),
-            ));
-        }
-        eprintln!("rolldyn: warning: {message}");
-        Ok(())
     }
 }

@@ -95,7 +95,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
             oil_file: Some(path),
             strict: false,
         };
-        oils.push(user.load()?);
+        oils.push(user.choice().load()?);
     }
     let rows: Vec<OilRow> = oils.iter().map(|o| row(o, t)).collect();
     if let Some((r, (property, value))) = rows.iter().find_map(|r| outside_law(r).map(|p| (r, p))) {

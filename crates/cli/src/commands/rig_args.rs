@@ -1,21 +1,8 @@
 //! The contact a lubrication command evaluates: a ball on a disc (the PAO1 traction rig of
 //! seed 000 §2.2) or a line contact (roller on raceway), with its elastic data.
 
-use crate::failure::Failure;
-use rolldyn_contact::hertz::reduced_modulus;
-use rolldyn_lubrication::ContactGeometry;
-use rolldyn_lubrication::contact_state::{
-    circular_load_for_max_pressure, line_load_for_max_pressure,
-};
+use rolldyn::oil::{ContactKind, Rig};
 use rolldyn_units::{Dimensionless, Length, Pressure, Quantity};
-
-#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
-pub enum ContactKind {
-    /// Ball on a flat disc (circular point contact; `--radius` is the ball radius).
-    BallOnDisc,
-    /// Line contact of length `--length`; `--radius` is the reduced radius R′ (seed 000 eq. 1.12).
-    Line,
-}
 
 #[derive(clap::Args)]
 pub struct RigArgs {
@@ -37,28 +24,14 @@ pub struct RigArgs {
 }
 
 impl RigArgs {
-    /// Validated geometry: (contact geometry, reduced radius R′, reduced modulus E′).
-    pub fn geometry(&self) -> Result<(ContactGeometry, f64, f64), Failure> {
-        let (r, l) = (self.radius.si(), self.length.si());
-        let (e, nu) = (self.youngs_modulus.si(), self.poisson_ratio.si());
-        if !(r > 0.0) || !(l > 0.0) || !(e > 0.0) || !(0.0..0.5).contains(&nu) {
-            return Err(Failure::Input(
-                "--radius, --length and --youngs-modulus must be positive, 0 ≤ --poisson-ratio < 0.5".into(),
-            ));
+    /// The test contact.
+    pub fn rig(&self) -> Rig {
+        Rig {
+            contact: self.contact,
+            radius: self.radius,
+            length: self.length,
+            youngs_modulus: self.youngs_modulus,
+            poisson_ratio: self.poisson_ratio,
         }
-        let geometry = match self.contact {
-            ContactKind::BallOnDisc => ContactGeometry::Circular,
-            ContactKind::Line => ContactGeometry::Line { length_m: l },
-        };
-        Ok((geometry, r, reduced_modulus(e, nu, e, nu)))
-    }
-
-    /// Normal load giving the maximum Hertz pressure `p_max` on this contact.
-    pub fn load_for_max_pressure(&self, p_max: f64) -> Result<f64, Failure> {
-        let (geometry, r, e) = self.geometry()?;
-        Ok(match geometry {
-            ContactGeometry::Line { length_m } => line_load_for_max_pressure(p_max, length_m, e, r),
-            _ => circular_load_for_max_pressure(p_max, r, e),
-        })
     }
 }

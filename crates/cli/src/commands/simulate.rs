@@ -2,8 +2,9 @@
 //! (SPEC §3), streaming its time series to CSV/Parquet and plotting the main histories.
 
 use crate::failure::Failure;
-use crate::output::{load_model, out_dir, print_json};
+use crate::output::{load_model, print_json};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use rolldyn::output::out_dir;
 use rolldyn_dynamics::output::{OutputSink, RevolutionSummary, RunSummary, Snapshot};
 use rolldyn_dynamics::output_columns::{
     BEARING_COLUMNS, Column, REVOLUTION_COLUMNS, ROLLER_COLUMNS, bearing_row, column_names,
@@ -22,7 +23,7 @@ use std::path::{Path, PathBuf};
 use std::str::FromStr;
 
 use super::operating_args::OperatingArgs;
-use crate::run_record::{ModelOrigin, finish_out_folder};
+use rolldyn::run_record::{ModelOrigin, finish_out_folder};
 use rolldyn_fatigue::{CageLoadExport, CageLoadRecorder, export_output_step};
 use rolldyn_report::RunKind;
 use rolldyn_setup::prepare;
@@ -737,8 +738,16 @@ pub fn run_observed(args: Args, observer: Observer<'_>) -> Result<(), Failure> {
         dir.as_ref().map(|d| d.display().to_string()),
     );
     if let Some(dir) = &dir {
-        let model_file = ModelOrigin::of(args.model.as_deref());
-        finish_out_folder(dir, RunKind::Simulate, model_file, &answer, args.report)?;
+        let model_source = rolldyn::ModelSource::file_or_embedded(args.model.as_deref());
+        let model_file = ModelOrigin::Source(&model_source);
+        finish_out_folder(
+            dir,
+            RunKind::Simulate,
+            model_file,
+            &crate::output::invocation(),
+            &answer,
+            args.report,
+        )?;
     }
     if args.json {
         return print_json(&answer);

@@ -3,8 +3,9 @@
 
 use super::simulate::{Args, check_output_size, checked_output_step, progress_bar};
 use crate::failure::Failure;
-use crate::output::{out_dir, print_json};
-use crate::run_record::{ModelOrigin, finish_out_folder};
+use crate::output::print_json;
+use rolldyn::output::out_dir;
+use rolldyn::run_record::{ModelOrigin, finish_out_folder};
 use rolldyn_dynamics::tapered::{
     SAMPLE_COLUMNS, TaperedRun, TaperedRunSettings, TaperedSample, axial_spectrum, run_recorded,
     sample_row, steady_window, summary_entries,
@@ -76,8 +77,16 @@ pub fn run_tapered(
     }
     let answer = serde_json::Value::Object(map);
     if let Some(dir) = &dir {
-        let model_file = ModelOrigin::of(args.model.as_deref());
-        finish_out_folder(dir, RunKind::Simulate, model_file, &answer, args.report)?;
+        let model_source = rolldyn::ModelSource::file_or_embedded(args.model.as_deref());
+        let model_file = ModelOrigin::Source(&model_source);
+        finish_out_folder(
+            dir,
+            RunKind::Simulate,
+            model_file,
+            &crate::output::invocation(),
+            &answer,
+            args.report,
+        )?;
     }
     if args.json {
         return print_json(&answer);

@@ -2,7 +2,8 @@
 //! operating point, or a sweep over speed, outer-ring speed or radial load.
 
 use crate::failure::Failure;
-use crate::output::{load_model, out_dir, print_json, write_csv};
+use crate::output::{load_model, print_json};
+use rolldyn::output::{out_dir, write_csv};
 use rolldyn_model::{Model, Temperatures};
 use rolldyn_plot::{Labels, Series, line_plot};
 use rolldyn_quasistatic::{

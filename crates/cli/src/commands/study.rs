@@ -3,7 +3,7 @@
 
 use super::contact::plot_pressure_map;
 use crate::failure::Failure;
-use crate::output::{out_dir, write_csv};
+use rolldyn::output::{out_dir, write_csv};
 use rolldyn_geometry::BearingModel;
 use rolldyn_plot::{Labels, Series, line_plot};
 use rolldyn_quasistatic::QuasiStaticOptions;

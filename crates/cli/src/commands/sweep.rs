@@ -4,7 +4,7 @@
 use super::jobs_args::JobsArgs;
 use super::simulate::Duration;
 use crate::failure::Failure;
-use crate::run_record::{ModelOrigin, finish_out_folder};
+use rolldyn::run_record::{ModelOrigin, finish_out_folder};
 use rolldyn_dynamics::output::NullSink;
 use rolldyn_dynamics::tapered::{TaperedRunSettings, run as run_tapered, summary_entries};
 use rolldyn_quasistatic::QuasiStaticOptions;
@@ -449,7 +449,14 @@ pub fn run(args: Args) -> Result<(), Failure> {
         "out": out_dir.display().to_string(),
     });
     let sweep_file = ModelOrigin::File(&args.sweep);
-    finish_out_folder(&out_dir, RunKind::Sweep, sweep_file, &answer, args.report)?;
+    finish_out_folder(
+        &out_dir,
+        RunKind::Sweep,
+        sweep_file,
+        &crate::output::invocation(),
+        &answer,
+        args.report,
+    )?;
     if failed > 0 && failed == outcomes.len() {
         return Err(Failure::Run(
             "every variant failed; see the variants/*.json files".into(),

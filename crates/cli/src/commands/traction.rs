@@ -4,7 +4,8 @@
 use super::oil_args::OilArgs;
 use super::rig_args::RigArgs;
 use crate::failure::Failure;
-use crate::output::{out_dir, print_json, write_csv};
+use crate::output::print_json;
+use rolldyn::output::{out_dir, write_csv};
 use rolldyn_lubrication::{
     ContactState, CriticalSlip, MurakiSettings, Rheology, SlipSearch, TractionModel, critical_slip,
     traction,
@@ -95,7 +96,7 @@ struct Answer<'a> {
 }
 
 fn model(args: &Args) -> Result<TractionModel, Failure> {
-    let oil = args.oil.load()?;
+    let oil = args.oil.choice().load()?;
     let rheology = match args.rheology {
         RheologyName::ViscoElastic => Rheology::ViscoElastic,
         RheologyName::Isothermal => Rheology::Isothermal,
@@ -112,10 +113,10 @@ fn model(args: &Args) -> Result<TractionModel, Failure> {
 }
 
 fn evaluate(args: &Args, model: &TractionModel, t: f64, p_max: f64) -> Result<Case, Failure> {
-    let (geometry, r, e) = args.rig.geometry()?;
+    let (geometry, r, e) = args.rig.rig().geometry()?;
     let u = args.rolling_speed.si();
     let state = ContactState {
-        normal_force_n: args.rig.load_for_max_pressure(p_max)?,
+        normal_force_n: args.rig.rig().load_for_max_pressure(p_max)?,
         geometry,
         reduced_radius_m: r,
         reduced_modulus_pa: e,
@@ -201,7 +202,9 @@ pub fn run(args: Args) -> Result<(), Failure> {
     let mut cases = Vec::new();
     for t in &args.temperature.values {
         if let Some(oil) = &model.config().oil {
-            args.oil.check_temperature(oil, t.si())?;
+            args.oil
+                .choice()
+                .check_temperature(oil, t.si(), &rolldyn::Context::default())?;
         }
         for p in &args.max_pressure.values {
             if !(p.si() > 0.0) {

@@ -4,9 +4,10 @@
 
 use super::operating_args::OperatingArgs;
 use crate::failure::Failure;
-use crate::output::{load_model, out_dir, print_json};
-use crate::run_record::{ModelOrigin, finish_out_folder};
+use crate::output::{load_model, print_json};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use rolldyn::output::out_dir;
+use rolldyn::run_record::{ModelOrigin, finish_out_folder};
 use rolldyn_report::RunKind;
 use rolldyn_units::{Length, Quantity, Time};
 use rolldyn_wear::study::run_wear;
@@ -238,8 +239,16 @@ pub fn run(args: Args) -> Result<(), Failure> {
         )),
     })?;
     bar.finish_and_clear();
-    let model_file = ModelOrigin::of(args.model.as_deref());
-    finish_out_folder(&dir, RunKind::Wear, model_file, &answer, args.report)?;
+    let model_source = rolldyn::ModelSource::file_or_embedded(args.model.as_deref());
+    let model_file = ModelOrigin::Source(&model_source);
+    finish_out_folder(
+        &dir,
+        RunKind::Wear,
+        model_file,
+        &crate::output::invocation(),
+        &answer,
+        args.report,
+    )?;
     if args.json {
         return print_json(&answer);
     }

@@ -5,7 +5,7 @@
 use super::wear::{Args, MethodArg, PeriodArg, output_folder, progress_bar};
 use crate::failure::Failure;
 use crate::output::print_json;
-use crate::run_record::{ModelOrigin, finish_out_folder};
+use rolldyn::run_record::{ModelOrigin, finish_out_folder};
 use rolldyn_report::RunKind;
 use rolldyn_wear::WearError;
 use rolldyn_wear::tapered::write_tapered_report;
@@ -119,8 +119,16 @@ pub fn run(args: &Args, model: &rolldyn_model::Model) -> Result<(), Failure> {
         "out": dir.display().to_string(),
         "plots": plots.iter().map(|p| p.display().to_string()).collect::<Vec<_>>(),
     });
-    let model_file = ModelOrigin::of(args.model.as_deref());
-    finish_out_folder(&dir, RunKind::Wear, model_file, &answer, args.report)?;
+    let model_source = rolldyn::ModelSource::file_or_embedded(args.model.as_deref());
+    let model_file = ModelOrigin::Source(&model_source);
+    finish_out_folder(
+        &dir,
+        RunKind::Wear,
+        model_file,
+        &crate::output::invocation(),
+        &answer,
+        args.report,
+    )?;
     if args.json {
         return print_json(&answer);
     }

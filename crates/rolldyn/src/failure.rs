@@ -1,8 +1,8 @@
-//! Why a command failed, and the exit code that says so.
+//! Why an analysis failed, and the exit code that says so.
 
 use std::fmt;
 
-/// A command failure: bad input (exit 2) or a failure while running (exit 1).
+/// An analysis failure: bad input (exit 2) or a failure while running (exit 1).
 #[derive(Debug)]
 pub enum Failure {
     /// The user's input is wrong: model file, flag value. Exit code 2.
@@ -72,5 +72,14 @@ impl From<rolldyn_report::ReportError> for Failure {
             Folder { .. } | Manifest { .. } => Self::Input(e.to_string()),
             Io { .. } => Self::Run(e.to_string()),
         }
+    }
+}
+
+impl std::error::Error for Failure {}
+
+impl From<serde_json::Error> for Failure {
+    /// A result that cannot be written as JSON is a failed run.
+    fn from(e: serde_json::Error) -> Self {
+        Self::Run(e.to_string())
     }
 }

@@ -1,0 +1,77 @@
+//! The shape every analysis has: a request in, a result out, run in a [`Context`]; and
+//! [`run_json`], which runs any analysis by name from a JSON request (the Python package's
+//! door: a keyword argument that is no field of the request is refused by name).
+
+use crate::failure::Failure;
+use crate::model_source::ModelSource;
+use crate::observer::{Observer, Unobserved};
+use crate::run_record::Invocation;
+use crate::table::{Table, Tables};
+use serde::Serialize;
+use serde::de::DeserializeOwned;
+use std::fmt;
+
+/// What an analysis runs with besides its request: the bearing model (for the analyses that
+/// take one), how it was asked for (recorded in `run.json`), and who watches it.
+pub struct Context<'a> {
+    pub model: ModelSource,
+    pub invocation: Invocation,
+    pub observer: &'a dyn Observer,
+}
+
+impl Default for Context<'_> {
+    /// The embedded model, no invocation recorded, nobody watching.
+    fn default() -> Self {
+        Self {
+            model: ModelSource::Embedded,
+            invocation: Invocation::default(),
+            observer: &Unobserved,
+        }
+    }
+}
+
+impl<'a> Context<'a> {
+    /// A context for `model`, watched by `observer`.
+    pub fn new(model: ModelSource, observer: &'a dyn Observer) -> Self {
+        Self {
+            model,
+            invocation: Invocation::default(),
+            observer,
+        }
+    }
+}
+
+/// One analysis: its request (options with their defaults, quantities in SI or as text with
+/// units), its result (serialised as the `--json` answer, shown as text by `Display`, with its
+/// tables as columns) and how to run it.
+pub trait Analysis {
+    /// The analysis' name: the command's (`"film"`, `"ehl-line"`).
+    const NAME: &'static str;
+    type Request: DeserializeOwned;
+    type Result: Serialize + fmt::Display + Tables;
+    fn run(request: &Self::Request, context: &Context<'_>) -> Result<Self::Result, Failure>;
+}
+
+/// A result as a skin that knows no Rust types sees it.
+#[derive(Clone, Debug, Serialize)]
+pub struct Answer {
+    /// The result serialised (what `--json` prints).
+    pub summary: serde_json::Value,
+    /// The result as the command line prints it.
+    pub text: String,
+    /// The result's tables.
+    #[serde(skip)]
+    pub tables: Vec<Table>,
+}
+
+/// Runs analysis `A` on a request given as JSON.
+pub fn answer<A: Analysis>(request: &str, context: &Context<'_>) -> Result<Answer, Failure> {
+    let request: A::Request =
+        serde_json::from_str(request).map_err(|e| Failure::Input(format!("{}: {e}", A::NAME)))?;
+    let result = A::run(&request, context)?;
+    Ok(Answer {
+        summary: serde_json::to_value(&result)?,
+        text: result.to_string(),
+        tables: result.tables(),
+    })
+}

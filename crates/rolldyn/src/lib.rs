@@ -1,0 +1,52 @@
+//! rolldyn as a library: one typed entry per analysis — a request (the model and the options,
+//! with their defaults; quantities in SI or as text with units) and a result (summary fields,
+//! tables as columns, the files written) — and the orchestration around them: output folders,
+//! checkpoints and resume, run manifests, cage-load export, reports, sweeps.
+//!
+//! The `rolldyn` program (crates/cli) parses its command line into a request, calls
+//! [`Analysis::run`] and prints the result (`--json` prints it serialised); the Python package
+//! (crates/python) builds the same request from keyword arguments through [`run_json`]. Both
+//! therefore answer with the same numbers and the same schema.
+//!
+//! ```no_run
+//! use rolldyn::{Analysis, Context, film};
+//! let request: film::FilmRequest =
+//!     serde_json::from_str(r#"{"load": "1000 N", "rolling_speed": 2.0}"#).unwrap();
+//! let result = film::Film::run(&request, &Context::default()).unwrap();
+//! println!("{result}");
+//! ```
+
+// Validation reads `!(x > 0.0)` on purpose: it is also true for NaN, which must be rejected.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
+pub mod analysis;
+pub mod failure;
+pub mod film;
+pub mod model_source;
+pub mod observer;
+pub mod oil;
+pub mod output;
+pub mod run_record;
+pub mod table;
+
+pub use analysis::{Analysis, Answer, Context};
+pub use failure::Failure;
+pub use model_source::ModelSource;
+pub use observer::{Observer, Progress, Unobserved};
+pub use run_record::Invocation;
+pub use table::{Column, ColumnValues, Table, Tables};
+
+/// The analyses [`run_json`] knows, by name.
+pub const ANALYSES: &[&str] = &[film::Film::NAME];
+
+/// Runs the analysis `name` on a request given as JSON (a field the request does not have is
+/// refused, naming it) and returns its answer.
+pub fn run_json(name: &str, request: &str, context: &Context<'_>) -> Result<Answer, Failure> {
+    match name {
+        film::Film::NAME => analysis::answer::<film::Film>(request, context),
+        _ => Err(Failure::Input(format!(
+            "no analysis named '{name}' (known: {})",
+            ANALYSES.join(", ")
+        ))),
+    }
+}
