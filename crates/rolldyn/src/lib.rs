@@ -25,6 +25,7 @@ pub mod film;
 pub mod model_source;
 pub mod observer;
 pub mod oil;
+pub mod operating;
 pub mod output;
 pub mod run_record;
 pub mod table;

@@ -1,14 +1,8 @@
 //! Command-line overrides of a model's `[operating]` section, shared by the commands that run
 //! the dynamics of one operating point (`simulate`, `bench`, `wear`, `fatigue`).
 
-use rolldyn_setup::{LoadDirection, Overrides};
+use rolldyn::operating::{LoadDirectionName, Operating};
 use rolldyn_units::{Angle, AngularSpeed, Force, Quantity, Temperature};
-
-#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
-pub enum LoadDirectionArg {
-    Fixed,
-    Rotating,
-}
 
 #[derive(clap::Args)]
 pub struct OperatingArgs {
@@ -26,7 +20,7 @@ pub struct OperatingArgs {
     pub axial_load: Option<Quantity<Force>>,
     /// Radial load fixed in space or rotating with the inner ring.
     #[arg(long, value_enum)]
-    pub load_direction: Option<LoadDirectionArg>,
+    pub load_direction: Option<LoadDirectionName>,
     /// Oil temperature of all contacts (overrides operating.temperatures.oil).
     #[arg(long, allow_hyphen_values = true)]
     pub oil_temperature: Option<Quantity<Temperature>>,
@@ -36,30 +30,26 @@ pub struct OperatingArgs {
 }
 
 impl OperatingArgs {
+    /// The overrides as the library takes them.
+    pub fn operating(&self) -> Operating {
+        Operating {
+            speed: self.speed,
+            outer_speed: self.outer_speed,
+            radial_load: self.radial_load,
+            axial_load: self.axial_load,
+            load_direction: self.load_direction,
+            oil_temperature: self.oil_temperature,
+            misalignment: self.misalignment,
+        }
+    }
+
     /// Whether any override is given.
     pub fn any(&self) -> bool {
-        self.speed.is_some()
-            || self.outer_speed.is_some()
-            || self.radial_load.is_some()
-            || self.axial_load.is_some()
-            || self.load_direction.is_some()
-            || self.oil_temperature.is_some()
-            || self.misalignment.is_some()
+        self.operating().any()
     }
 
     /// The overrides in SI.
-    pub fn overrides(&self) -> Overrides {
-        Overrides {
-            speed: self.speed.map(|q| q.si()),
-            outer_speed: self.outer_speed.map(|q| q.si()),
-            radial_load: self.radial_load.map(|q| q.si()),
-            axial_load: self.axial_load.map(|q| q.si()),
-            load_direction: self.load_direction.map(|d| match d {
-                LoadDirectionArg::Fixed => LoadDirection::Fixed,
-                LoadDirectionArg::Rotating => LoadDirection::Rotating,
-            }),
-            oil_temperature: self.oil_temperature.map(|q| q.si()),
-            misalignment: self.misalignment.map(|q| q.si()),
-        }
+    pub fn overrides(&self) -> rolldyn_setup::Overrides {
+        self.operating().overrides()
     }
 }
