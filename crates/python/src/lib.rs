@@ -217,7 +217,7 @@ fn run<'py>(
         tables.append((table.name.as_str(), columns))?;
     }
     let warnings = watch.warnings.into_inner().expect("not poisoned");
-    Ok((answer.summary.to_string(), answer.text, tables, warnings))
+    Ok((answer.summary, answer.text, tables, warnings))
 }
 
 /// Little-endian numbers as Python bytes.
