@@ -20,15 +20,20 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 pub mod analysis;
+pub mod check;
+pub mod contact;
 pub mod failure;
 pub mod film;
 pub mod model_source;
 pub mod observer;
 pub mod oil;
+pub mod oils;
 pub mod operating;
 pub mod output;
+pub mod report;
 pub mod run_record;
 pub mod table;
+pub mod traction;
 
 pub use analysis::{Analysis, Answer, Context};
 pub use failure::Failure;
@@ -38,13 +43,25 @@ pub use run_record::Invocation;
 pub use table::{Column, ColumnValues, Table, Tables};
 
 /// The analyses [`run_json`] knows, by name.
-pub const ANALYSES: &[&str] = &[film::Film::NAME];
+pub const ANALYSES: &[&str] = &[
+    film::Film::NAME,
+    check::Check::NAME,
+    contact::Contact::NAME,
+    oils::Oils::NAME,
+    traction::Traction::NAME,
+    report::Report::NAME,
+];
 
 /// Runs the analysis `name` on a request given as JSON (a field the request does not have is
 /// refused, naming it) and returns its answer.
 pub fn run_json(name: &str, request: &str, context: &Context<'_>) -> Result<Answer, Failure> {
     match name {
         film::Film::NAME => analysis::answer::<film::Film>(request, context),
+        check::Check::NAME => analysis::answer::<check::Check>(request, context),
+        contact::Contact::NAME => analysis::answer::<contact::Contact>(request, context),
+        oils::Oils::NAME => analysis::answer::<oils::Oils>(request, context),
+        traction::Traction::NAME => analysis::answer::<traction::Traction>(request, context),
+        report::Report::NAME => analysis::answer::<report::Report>(request, context),
         _ => Err(Failure::Input(format!(
             "no analysis named '{name}' (known: {})",
             ANALYSES.join(", ")

@@ -1,8 +1,8 @@
 //! `rolldyn study seed004 [--out DIR]`: re-runs a seed's validation study, prints its tables
 //! (Markdown, as in VALIDATION.md) and writes CSV tables and SVG plots.
 
-use super::contact::plot_pressure_map;
 use crate::failure::Failure;
+use rolldyn::contact::plot_pressure_map;
 use rolldyn::output::{out_dir, write_csv};
 use rolldyn_geometry::BearingModel;
 use rolldyn_plot::{Labels, Series, line_plot};
