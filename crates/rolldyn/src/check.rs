@@ -621,8 +621,8 @@ impl fmt::Display for TaperedSummary {
 #[derive(Clone, Debug, Serialize)]
 #[serde(untagged)]
 pub enum CheckResult {
-    Cylindrical(Summary),
-    Tapered(TaperedSummary),
+    Cylindrical(Box<Summary>),
+    Tapered(Box<TaperedSummary>),
 }
 
 impl Tables for CheckResult {}
@@ -661,8 +661,10 @@ impl Analysis for Check {
             .or(model.operating.outer_speed)
             .unwrap_or(0.0);
         Ok(match &model.bearing {
-            BearingModel::Tapered(b) => CheckResult::Tapered(TaperedSummary::of(b, inner)),
-            bearing => CheckResult::Cylindrical(summarise(bearing, inner, outer)),
+            BearingModel::Tapered(b) => {
+                CheckResult::Tapered(Box::new(TaperedSummary::of(b, inner)))
+            }
+            bearing => CheckResult::Cylindrical(Box::new(summarise(bearing, inner, outer))),
         })
     }
 }
