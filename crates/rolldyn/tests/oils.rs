@@ -3,10 +3,16 @@
 
 use rolldyn::{ColumnValues, Context, Failure, run_json};
 
+/// The answer's summary, parsed.
+fn summary(answer: &rolldyn::Answer) -> serde_json::Value {
+    serde_json::from_str(&answer.summary).expect("the summary is JSON")
+}
+
 #[test]
 fn oils_lists_the_library_at_a_temperature_with_unit() {
     let answer = run_json("oils", r#"{"temperature": "60 C"}"#, &Context::default()).unwrap();
-    let rows = answer.summary.as_array().unwrap();
+    let all = summary(&answer);
+    let rows = all.as_array().unwrap();
     let pao = rows.iter().find(|o| o["name"] == "pao1-vg320").unwrap();
     assert!((pao["temperature_k"].as_f64().unwrap() - 333.15).abs() < 1e-9);
     assert!(rows.iter().any(|o| o["name"] == "nvi65"));
