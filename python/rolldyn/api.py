@@ -148,3 +148,265 @@ def film(
     options = dict(locals())
     options["lambda"] = options.pop("lambda_")
     return call("film", options, Result, groups={"oil": OIL, "rig": RIG})
+
+
+def check(model: ModelLike = None, *, speed: Optional[Quantity] = None,
+          outer_speed: Optional[Quantity] = None) -> Result:
+    """Validates a model and gives its derived quantities (`rolldyn check`): geometry,
+    clearances, masses, the cage pocket and its plays, epicyclic speeds.
+
+    Parameters
+    ----------
+    model : Model, path or None
+        The bearing model; None is the embedded 2002834.
+    speed, outer_speed : float or str, optional
+        Ring speeds for the epicyclic speeds (rad/s as numbers), default the model's.
+
+    Returns
+    -------
+    Result
+        Summary keys: {check}.
+    """
+    model = as_model(model)
+    return call("check", dict(speed=speed, outer_speed=outer_speed), Result, model=model)
+
+
+def contact(model: ModelLike = None, *, load: Quantity = "1167N", tilt: Optional[Quantity] = None,
+            cells: Optional[str] = None, width: Optional[Quantity] = None,
+            method: Optional[str] = None, raceway: Optional[str] = None,
+            slice_law: Optional[str] = None, out: Optional[PathLike] = None) -> Contact:
+    """Roller–raceway contact pressure (`rolldyn contact`): Boussinesq solver, slice model or
+    Hertz.
+
+    Parameters
+    ----------
+    model : Model, path or None
+        The bearing whose roller and raceway are pressed together.
+    load : float or str
+        Roller load, N.
+    tilt : float or str, optional
+        Roller tilt relative to the raceway (rad as a number; ``"4arcmin"``).
+    cells : str, optional
+        Boussinesq grid, cells along the roller × across (``"350x9"``).
+    width : float or str, optional
+        Transverse extent of the Boussinesq grid.
+    method : {"boussinesq", "slices", "hertz"}, optional
+    raceway : {"inner", "outer"}, optional
+    slice_law : str, optional
+        Slice law of the slice method.
+    out : path, optional
+        Folder for the pressure map and central line (CSV) and the map's plot.
+
+    Returns
+    -------
+    Contact
+        `pressure`, `x`, `y` (the map as a 2-D array), tables ``pressure_map`` and
+        ``central_line``; summary keys: {contact}.
+    """
+    model = as_model(model)
+    options = dict(load=load, tilt=tilt, cells=cells, width=width, method=method,
+                   raceway=raceway, slice_law=slice_law, out=out)
+    return call("contact", options, Contact, model=model)
+
+
+def oils(*, temperature: Optional[Quantity] = None, oil_file: Optional[PathLike] = None) -> Result:
+    """The lubricant library with each oil's properties at `temperature` (`rolldyn oils`).
+
+    Parameters
+    ----------
+    temperature : float or str, optional
+        Default 40 °C (K as a number).
+    oil_file : path, optional
+        Also list a user oil file.
+
+    Returns
+    -------
+    Result
+        Table ``oils`` (one row per oil); summary keys: {oils}.
+    """
+    return call("oils", dict(temperature=temperature, oil_file=oil_file), Result)
+
+
+def traction(
+    *,
+    oil: Optional[str] = None,
+    oil_file: Optional[PathLike] = None,
+    strict: bool = False,
+    contact: Optional[str] = None,
+    radius: Optional[Quantity] = None,
+    length: Optional[Quantity] = None,
+    youngs_modulus: Optional[Quantity] = None,
+    poisson_ratio: Optional[float] = None,
+    temperature: Union[Quantity, Sequence[Quantity], None] = None,
+    max_pressure: Union[Quantity, Sequence[Quantity], None] = None,
+    rolling_speed: Optional[Quantity] = None,
+    slip_max: Optional[float] = None,
+    points: Optional[int] = None,
+    rheology: Optional[str] = None,
+    out: Optional[PathLike] = None,
+) -> Result:
+    """Muraki thermal EHL traction curve, critical slip (scuffing criterion) and film of a
+    lubricated contact (`rolldyn traction`); a list of temperatures or maximum pressures gives
+    a family of curves.
+
+    Parameters
+    ----------
+    oil, oil_file, strict, contact, radius, length, youngs_modulus, poisson_ratio
+        The oil and the test contact, as in `film`.
+    temperature : float, str or a sequence of them, optional
+        Default 40 °C.
+    max_pressure : float, str or a sequence of them, optional
+        Maximum Hertz pressure, default 1 GPa.
+    rolling_speed : float or str, optional
+    slip_max : float, optional
+        Largest slide-to-roll ratio of the curve.
+    points : int, optional
+        Points of the curve.
+    rheology : {"visco-elastic", "isothermal", "linear-elastic"}, optional
+    out : path, optional
+        Folder for the curves (CSV) and their plot.
+
+    Returns
+    -------
+    Result
+        Tables ``traction`` (the curves) and ``cases``; summary keys: {traction}.
+    """
+    options = dict(locals())
+    for key in ("temperature", "max_pressure"):
+        if options[key] is not None and not isinstance(options[key], (list, tuple)):
+            options[key] = [options[key]]
+    return call("traction", options, Result, groups={"oil": OIL, "rig": RIG})
+
+
+def report(folder: PathLike) -> Result:
+    """Writes the HTML report of an output folder of `simulate`, `sweep`, `wear` or `fatigue`
+    (`rolldyn report`, docs/outputs.md).
+
+    Returns
+    -------
+    Result
+        Summary keys: {report}.
+    """
+    return call("report", dict(dir=folder), Result)
+
+
+def skid(model: ModelLike = None, *, speed=None, outer_speed=None, radial_load=None,
+         temperatures=None, friction: Optional[str] = None, cage_land: Optional[str] = None,
+         out: Optional[PathLike] = None) -> Result:
+    """Quasi-static roller and cage skidding (`rolldyn skid`, seed 001), at one point or over a
+    range of speed or load.
+
+    Parameters
+    ----------
+    model : Model, path or None
+    speed, outer_speed, radial_load : float, str or range, optional
+        One value (``"4000rpm"``) or a range ``"100N..700N:50N"`` (one of them).
+    temperatures : str, optional
+        Part temperatures.
+    friction : {"muraki", "seed001"}, optional
+    cage_land : {"finite", "short"}, optional
+    out : path, optional
+
+    Returns
+    -------
+    Result
+        Summary keys: {skid}; a range gives the table of its points, the varied variable
+        first.
+    """
+    model = as_model(model)
+    options = dict(speed=speed, outer_speed=outer_speed, radial_load=radial_load,
+                   temperatures=temperatures, friction=friction, cage_land=cage_land, out=out)
+    return call("skid", options, Result, model=model)
+
+
+def loads(model: ModelLike, *, speed=None, outer_speed=None, radial_load=None, axial_load=None,
+          load_direction: Optional[str] = None, oil_temperature=None, misalignment=None,
+          moment=None, row_offset: Optional[float] = None,
+          out: Optional[PathLike] = None) -> Result:
+    """Quasi-static load distribution of a double-row tapered bearing (`rolldyn loads`): roller
+    and rib loads and load zones per row.
+
+    Parameters
+    ----------
+    model : Model or path
+        A double-row tapered bearing.
+    speed, outer_speed, radial_load, axial_load, load_direction, oil_temperature, misalignment
+        Overrides of the model's operating point.
+    moment : float or str, optional
+        Tilting moment, N·m.
+    row_offset : float, optional
+    out : path, optional
+
+    Returns
+    -------
+    Result
+        Summary keys: {loads}.
+    """
+    model = as_model(model)
+    options = dict(locals())
+    options.pop("model")
+    return call("loads", options, Result, model=model, groups={"operating": OPERATING})
+
+
+def journal(*, file: Optional[PathLike] = None, radius=None, length=None, clearance=None,
+            viscosity=None, speed=None, eccentricity: Optional[float] = None, load=None,
+            temperature=None, cavitation: Optional[str] = None, grid: Optional[str] = None,
+            film_start: Optional[str] = None, no_coefficients: bool = False,
+            out: Optional[PathLike] = None) -> Result:
+    """Finite journal bearing by the Reynolds equation (`rolldyn journal`): load, attitude,
+    friction, stiffness and damping, from keyword arguments or a journal file.
+
+    Parameters
+    ----------
+    file : path, optional
+        A journal file (examples/journal/), instead of the geometry arguments.
+    radius, length, clearance, viscosity, speed : float or str
+    eccentricity : float, optional
+        Eccentricity ratio (or give `load`).
+    load : float or str, optional
+    temperature : float or str, optional
+    cavitation : {"reynolds", "jfo", "none"}, optional
+    grid : str, optional
+        ``"72x24"``.
+    film_start : {"max-gap", "free"}, optional
+    no_coefficients : bool
+        Skip the stiffness and damping coefficients.
+    out : path, optional
+
+    Returns
+    -------
+    Result
+        Summary keys: {journal}.
+    """
+    return call("journal", dict(locals()), Result)
+
+
+def ehl_line(*, radius, viscosity, rolling_speed, min_film=None, load_per_length=None,
+             piezo=None, law: Optional[str] = None, density: Optional[str] = None,
+             elastic: Optional[str] = None, modulus=None, poisson: Optional[float] = None,
+             squeeze_velocity=None, nodes: Optional[int] = None, step_to=None, duration=None,
+             contact_length=None, mass=None, out: Optional[PathLike] = None) -> Result:
+    """Lubricated roller–plate line contact: rigid, piezoviscous or full EHL, and load steps
+    (`rolldyn ehl-line`).
+
+    Parameters
+    ----------
+    radius, viscosity, rolling_speed : float or str
+    min_film, load_per_length : float or str, optional
+        The film (or the load) to solve for.
+    piezo : float or str, optional
+        Pressure–viscosity coefficient α.
+    law : {"barus", "roelands"}, optional
+    density : {"incompressible", "dowson-higginson"}, optional
+    elastic : str, optional
+    modulus, poisson : optional
+    squeeze_velocity, nodes, step_to, duration, contact_length, mass : optional
+        The transient load step.
+    out : path, optional
+
+    Returns
+    -------
+    Result
+        Summary keys: {ehl_line}.
+    """
+    return call("ehl-line", dict(locals()), Result)

@@ -46,7 +46,7 @@ def test_a_result_shows_itself():
         (lambda: rolldyn.contact(load="1167N", cells="60x3"), "pressure_map"),
         (lambda: rolldyn.skid(MODEL, radial_load="200N..600N:200N"), "points"),
         (lambda: rolldyn.oils(), "oils"),
-        (lambda: rolldyn.traction(max_pressure="1GPa", rolling_speed="2.5m/s"), "curve"),
+        (lambda: rolldyn.traction(max_pressure="1GPa", rolling_speed="2.5m/s"), "traction"),
     ],
 )
 def test_every_table_is_a_dataframe(call, table):
