@@ -20,14 +20,18 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 pub mod analysis;
+pub mod ehl_line;
 pub mod failure;
 pub mod film;
+pub mod journal;
+pub mod loads;
 pub mod model_source;
 pub mod observer;
 pub mod oil;
 pub mod operating;
 pub mod output;
 pub mod run_record;
+pub mod skid;
 pub mod table;
 
 pub use analysis::{Analysis, Answer, Context};
@@ -38,13 +42,23 @@ pub use run_record::Invocation;
 pub use table::{Column, ColumnValues, Table, Tables};
 
 /// The analyses [`run_json`] knows, by name.
-pub const ANALYSES: &[&str] = &[film::Film::NAME];
+pub const ANALYSES: &[&str] = &[
+    film::Film::NAME,
+    skid::Skid::NAME,
+    loads::Loads::NAME,
+    journal::Journal::NAME,
+    ehl_line::EhlLine::NAME,
+];
 
 /// Runs the analysis `name` on a request given as JSON (a field the request does not have is
 /// refused, naming it) and returns its answer.
 pub fn run_json(name: &str, request: &str, context: &Context<'_>) -> Result<Answer, Failure> {
     match name {
         film::Film::NAME => analysis::answer::<film::Film>(request, context),
+        skid::Skid::NAME => analysis::answer::<skid::Skid>(request, context),
+        loads::Loads::NAME => analysis::answer::<loads::Loads>(request, context),
+        journal::Journal::NAME => analysis::answer::<journal::Journal>(request, context),
+        ehl_line::EhlLine::NAME => analysis::answer::<ehl_line::EhlLine>(request, context),
         _ => Err(Failure::Input(format!(
             "no analysis named '{name}' (known: {})",
             ANALYSES.join(", ")
