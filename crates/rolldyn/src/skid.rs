@@ -391,7 +391,8 @@ const SWEEP_COLUMNS: [&str; 6] = [
 #[derive(Clone, Debug, Serialize)]
 #[serde(untagged)]
 pub enum SkidResult {
-    Point(SkidPoint),
+    /// Boxed: a point carries every roller's contacts.
+    Point(Box<SkidPoint>),
     Sweep(SkidSweep),
 }
 
@@ -672,10 +673,10 @@ impl Analysis for Skid {
             let result =
                 rolldyn_quasistatic::solve_with_land_model(bearing, &base, &options, land.as_ref())
                     .map_err(|e| solve_failure(&model, e))?;
-            return Ok(SkidResult::Point(SkidPoint {
+            return Ok(SkidResult::Point(Box::new(SkidPoint {
                 result,
                 model: name,
-            }));
+            })));
         };
         let total = swept.values.len() as f64;
         context.observer.progress(&Progress {

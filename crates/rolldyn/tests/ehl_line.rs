@@ -20,9 +20,8 @@ fn martin_load_from_json() {
 
 #[test]
 fn load_step_history_is_a_table() {
-    let request = format!(
-        r#"{{{CONTACT}, "load_per_length": "2kN/m", "step_to": "4kN/m", "nodes": 200}}"#
-    );
+    let request =
+        format!(r#"{{{CONTACT}, "load_per_length": "2kN/m", "step_to": "4kN/m", "nodes": 200}}"#);
     let answer = run_json("ehl-line", &request, &Context::default()).unwrap();
     let samples = answer.summary["transient"]["samples"].as_u64().unwrap() as usize;
     let history = &answer.tables[1];
