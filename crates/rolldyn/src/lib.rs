@@ -22,8 +22,11 @@
 pub mod analysis;
 pub mod check;
 pub mod contact;
+pub mod ehl_line;
 pub mod failure;
 pub mod film;
+pub mod journal;
+pub mod loads;
 pub mod model_source;
 pub mod observer;
 pub mod oil;
@@ -32,6 +35,7 @@ pub mod operating;
 pub mod output;
 pub mod report;
 pub mod run_record;
+pub mod skid;
 pub mod table;
 pub mod traction;
 
@@ -50,6 +54,10 @@ pub const ANALYSES: &[&str] = &[
     oils::Oils::NAME,
     traction::Traction::NAME,
     report::Report::NAME,
+    skid::Skid::NAME,
+    loads::Loads::NAME,
+    journal::Journal::NAME,
+    ehl_line::EhlLine::NAME,
 ];
 
 /// Runs the analysis `name` on a request given as JSON (a field the request does not have is
@@ -62,6 +70,10 @@ pub fn run_json(name: &str, request: &str, context: &Context<'_>) -> Result<Answ
         oils::Oils::NAME => analysis::answer::<oils::Oils>(request, context),
         traction::Traction::NAME => analysis::answer::<traction::Traction>(request, context),
         report::Report::NAME => analysis::answer::<report::Report>(request, context),
+        skid::Skid::NAME => analysis::answer::<skid::Skid>(request, context),
+        loads::Loads::NAME => analysis::answer::<loads::Loads>(request, context),
+        journal::Journal::NAME => analysis::answer::<journal::Journal>(request, context),
+        ehl_line::EhlLine::NAME => analysis::answer::<ehl_line::EhlLine>(request, context),
         _ => Err(Failure::Input(format!(
             "no analysis named '{name}' (known: {})",
             ANALYSES.join(", ")
