@@ -410,3 +410,77 @@ def ehl_line(*, radius, viscosity, rolling_speed, min_film=None, load_per_length
         Summary keys: {ehl_line}.
     """
     return call("ehl-line", dict(locals()), Result)
+
+
+def simulate(
+    model: ModelLike = None,
+    *,
+    duration: Union[str, float] = "2rev",
+    speed: Optional[Quantity] = None,
+    outer_speed: Optional[Quantity] = None,
+    radial_load: Optional[Quantity] = None,
+    axial_load: Optional[Quantity] = None,
+    load_direction: Optional[str] = None,
+    oil_temperature: Optional[Quantity] = None,
+    misalignment: Optional[Quantity] = None,
+    output_step: Optional[Quantity] = None,
+    max_output: Optional[str] = None,
+    tolerance: Optional[float] = None,
+    integrator: Optional[str] = None,
+    checkpoint: Optional[PathLike] = None,
+    checkpoint_interval: Optional[Union[str, float]] = None,
+    resume: Optional[PathLike] = None,
+    out: Optional[PathLike] = None,
+    report: bool = False,
+    cage_loads: Optional[PathLike] = None,
+    row_offset: Optional[float] = None,
+    tables: bool = True,
+    progress: Progress = None,
+) -> Run:
+    """Time-domain 6-DOF dynamics of the bearing (`rolldyn simulate`).
+
+    Parameters
+    ----------
+    model : Model, path or None
+        The bearing model; None is the embedded 2002834.
+    duration : str or float
+        Cage revolutions (``"20rev"``) or a time (``"0.2s"``; seconds as a number).
+    speed, outer_speed, radial_load, axial_load, load_direction, oil_temperature, misalignment
+        Overrides of the model's operating point (SI numbers or text with units).
+    output_step : float or str, optional
+        Sampling step of the tables, default 0.05 ms.
+    max_output : str, optional
+        Largest size of the output folder (``"2GB"``).
+    tolerance : float, optional
+        Relative error tolerance of the integrator.
+    integrator : {"dopri5", "rosenbrock-w"}, optional
+    checkpoint, checkpoint_interval, resume : optional
+        Write a checkpoint file every interval; resume from one.
+    out : path, optional
+        Output folder (tables as CSV and Parquet, plots, run.json).
+    report : bool
+        Write ``out/report.html`` at the end.
+    cage_loads : path, optional
+        Export the cage loads of one steady revolution (for `fatigue`).
+    row_offset : float, optional
+        Second row of a double-row tapered bearing.
+    tables : bool
+        Keep the time series in memory as DataFrames (`bearing`, `rollers`, `revolutions`; a
+        double-row tapered bearing keeps none: give `out`).
+    progress : bool or callable, optional
+        True shows a tqdm bar; a function is called as ``progress(fraction, simulated_time_s)``
+        every 0.1 s. Ctrl-C (or an exception in `progress`) stops the run at its last accepted
+        step and raises KeyboardInterrupt (or that exception).
+
+    Returns
+    -------
+    Run
+        Tables ``bearing``, ``rollers``, ``revolutions``; summary keys: {simulate}.
+    """
+    model = as_model(model)
+    options = dict(locals())
+    for name in ("model", "tables", "progress"):
+        options.pop(name)
+    options["keep_tables"] = tables
+    return call("simulate", options, Run, model=model, groups={"operating": OPERATING},
+                progress=progress)

@@ -44,7 +44,7 @@ def test_a_result_shows_itself():
     [
         (lambda: rolldyn.simulate(duration="0.5rev", tables=True), "bearing"),
         (lambda: rolldyn.contact(load="1167N", cells="60x3"), "pressure_map"),
-        (lambda: rolldyn.skid(MODEL, radial_load="200N..600N:200N"), "points"),
+        (lambda: rolldyn.skid(MODEL, radial_load="200N..600N:200N"), "skid_sweep"),
         (lambda: rolldyn.oils(), "oils"),
         (lambda: rolldyn.traction(max_pressure="1GPa", rolling_speed="2.5m/s"), "traction"),
     ],
