@@ -20,6 +20,7 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 pub mod analysis;
+pub mod bench;
 pub mod failure;
 pub mod film;
 pub mod model_source;
@@ -28,6 +29,8 @@ pub mod oil;
 pub mod operating;
 pub mod output;
 pub mod run_record;
+pub mod simulate;
+pub mod startup;
 pub mod table;
 
 pub use analysis::{Analysis, Answer, Context};
@@ -38,13 +41,21 @@ pub use run_record::Invocation;
 pub use table::{Column, ColumnValues, Table, Tables};
 
 /// The analyses [`run_json`] knows, by name.
-pub const ANALYSES: &[&str] = &[film::Film::NAME];
+pub const ANALYSES: &[&str] = &[
+    film::Film::NAME,
+    simulate::Simulate::NAME,
+    bench::Bench::NAME,
+    startup::Startup::NAME,
+];
 
 /// Runs the analysis `name` on a request given as JSON (a field the request does not have is
 /// refused, naming it) and returns its answer.
 pub fn run_json(name: &str, request: &str, context: &Context<'_>) -> Result<Answer, Failure> {
     match name {
         film::Film::NAME => analysis::answer::<film::Film>(request, context),
+        simulate::Simulate::NAME => analysis::answer::<simulate::Simulate>(request, context),
+        bench::Bench::NAME => analysis::answer::<bench::Bench>(request, context),
+        startup::Startup::NAME => analysis::answer::<startup::Startup>(request, context),
         _ => Err(Failure::Input(format!(
             "no analysis named '{name}' (known: {})",
             ANALYSES.join(", ")
