@@ -20,6 +20,7 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 pub mod analysis;
+pub mod bench;
 pub mod check;
 pub mod contact;
 pub mod ehl_line;
@@ -35,7 +36,9 @@ pub mod operating;
 pub mod output;
 pub mod report;
 pub mod run_record;
+pub mod simulate;
 pub mod skid;
+pub mod startup;
 pub mod table;
 pub mod traction;
 
@@ -58,6 +61,9 @@ pub const ANALYSES: &[&str] = &[
     loads::Loads::NAME,
     journal::Journal::NAME,
     ehl_line::EhlLine::NAME,
+    simulate::Simulate::NAME,
+    bench::Bench::NAME,
+    startup::Startup::NAME,
 ];
 
 /// Runs the analysis `name` on a request given as JSON (a field the request does not have is
@@ -74,6 +80,9 @@ pub fn run_json(name: &str, request: &str, context: &Context<'_>) -> Result<Answ
         loads::Loads::NAME => analysis::answer::<loads::Loads>(request, context),
         journal::Journal::NAME => analysis::answer::<journal::Journal>(request, context),
         ehl_line::EhlLine::NAME => analysis::answer::<ehl_line::EhlLine>(request, context),
+        simulate::Simulate::NAME => analysis::answer::<simulate::Simulate>(request, context),
+        bench::Bench::NAME => analysis::answer::<bench::Bench>(request, context),
+        startup::Startup::NAME => analysis::answer::<startup::Startup>(request, context),
         _ => Err(Failure::Input(format!(
             "no analysis named '{name}' (known: {})",
             ANALYSES.join(", ")

@@ -3,11 +3,11 @@
 //! operating point, a short 6-DOF dynamics run, and the inner-raceway contact of the most
 //! loaded roller by Hertz, slices and the Boussinesq solver at 0′/4′/8′ tilt.
 
-use super::simulate::{print_summary, step_limits};
 use crate::failure::Failure;
 use crate::output::{load_model, print_json};
 use rolldyn::check::summarise;
 use rolldyn::contact::{LawName, Method, solve};
+use rolldyn::simulate::{step_limits, summary_json, summary_text};
 use rolldyn_contact::roller_raceway::{ContactReport, RollerRacewayContact};
 use rolldyn_dynamics::output::NullSink;
 use rolldyn_geometry::BearingModel;
@@ -90,11 +90,8 @@ pub fn run(args: Args) -> Result<(), Failure> {
             "\nDynamics, {} cage revolutions from the default start:",
             args.revolutions
         );
-        print_summary(
-            model.bearing.name(),
-            &dynamics,
-            &step_limits(&sim.step_limits()),
-        );
+        let limits = step_limits(&sim.step_limits());
+        println!("{}", summary_text(model.bearing.name(), &dynamics, &limits));
     }
 
     let roller_load = skid.max_roller_load_n.max(1.0);
@@ -144,7 +141,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
         return print_json(&serde_json::json!({
             "model": summary,
             "quasi_static": skid,
-            "dynamics": super::simulate::summary_json(model.bearing.name(), &dynamics),
+            "dynamics": summary_json(model.bearing.name(), &dynamics),
             "inner_raceway_contact": contacts,
         }));
     }
