@@ -35,6 +35,11 @@
 mod file;
 pub mod frozen;
 mod run;
+mod summary;
 
 pub use file::{Analysis, SweepError, SweepFile, Variant, apply_overrides};
-pub use run::{RunOptions, Shard, VariantAnalysis, VariantOutcome, collect, fingerprint, run};
+pub use run::{
+    Figure, RunOptions, Shard, VariantAnalysis, VariantOutcome, VariantProgress, collect,
+    fingerprint, run,
+};
+pub use summary::{Summary, SummaryColumn, SummaryValues};
