@@ -42,4 +42,4 @@ pub use run::{
     Figure, RunOptions, Shard, VariantAnalysis, VariantOutcome, VariantProgress, collect,
     fingerprint, run,
 };
-pub use summary::{Summary, SummaryColumn, SummaryValues};
+pub use summary::{Summary, SummaryColumn, SummaryValues, varied_columns};

@@ -1,9 +1,9 @@
 //! Running variants in parallel, with shards and resume, and collecting their summaries.
 
 use crate::file::{SweepError, SweepFile, Variant};
+use crate::summary::Summary;
 use rayon::prelude::*;
 use rolldyn_numerics::hash::fnv1a;
-use crate::summary::Summary;
 use serde::{Deserialize, Deserializer, Serialize};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};

@@ -63,7 +63,8 @@ fn summary_rows<'a>(sweep: &'a SweepFile, options: &RunOptions) -> Vec<SummaryRo
         .variants
         .iter()
         .enumerate()
-        .filter_map(|(index, variant)| match stored(&options.out_dir, &variant.name) {
+        .filter_map(|(index, variant)| {
+            match stored(&options.out_dir, &variant.name) {
             Ok(None) => None,
             Err(e) => Some(blank(variant, index, e)),
             Ok(Some(o)) if o.fingerprint != fingerprint(sweep, variant, &options.settings) => {
@@ -80,6 +81,7 @@ fn summary_rows<'a>(sweep: &'a SweepFile, options: &RunOptions) -> Vec<SummaryRo
                 figures: o.summary,
                 error: o.error,
             }),
+        }
         })
         .collect()
 }
@@ -273,6 +275,24 @@ fn figure_column(name: &str, rows: &[SummaryRow]) -> SummaryColumn {
     }
 }
 
+/// One column per model key any variant of `sweep` overrides, one value per variant of the
+/// sweep file (the base model's where a variant does not override the key): whole numbers as
+/// integers, numbers in SI named `<key>_<SI unit>` when given with units, else text.
+pub fn varied_columns(sweep: &SweepFile) -> Vec<SummaryColumn> {
+    sweep
+        .varied_keys()
+        .iter()
+        .map(|key| {
+            let cells: Vec<Option<Cell>> = sweep
+                .variants
+                .iter()
+                .map(|v| sweep.value_of(v, key).as_ref().map(cell))
+                .collect();
+            varied_column(key, &cells)
+        })
+        .collect()
+}
+
 impl Summary {
     /// The summary of the variants stored in `options.out_dir`.
     pub fn of(sweep: &SweepFile, options: &RunOptions) -> Self {
@@ -284,14 +304,22 @@ impl Summary {
             ),
         }];
         let mut varied = Vec::new();
-        for key in sweep.varied_keys() {
-            let cells: Vec<Option<Cell>> = rows
-                .iter()
-                .map(|r| sweep.value_of(r.variant, &key).as_ref().map(cell))
-                .collect();
-            let column = varied_column(&key, &cells);
+        for column in varied_columns(sweep) {
             varied.push(column.name.clone());
-            columns.push(column);
+            let indices = rows.iter().map(|r| r.index);
+            let values = match column.values {
+                SummaryValues::Text(v) => {
+                    SummaryValues::Text(indices.map(|i| v[i].clone()).collect())
+                }
+                SummaryValues::Integer(v) => {
+                    SummaryValues::Integer(indices.map(|i| v[i]).collect())
+                }
+                SummaryValues::Real(v) => SummaryValues::Real(indices.map(|i| v[i]).collect()),
+            };
+            columns.push(SummaryColumn {
+                name: column.name,
+                values,
+            });
         }
         columns.push(SummaryColumn {
             name: "index".into(),

@@ -122,14 +122,22 @@ fn shards_resume_and_collect() {
         &sweep,
         &options(Some("1/2".parse().unwrap()), false),
         &analysis,
-        &|_, _, _| {}, &|| false,
+        &|_, _, _| {},
+        &|| false,
     )
     .unwrap();
     assert_eq!(
         first.iter().map(|o| o.index).collect::<Vec<_>>(),
         vec![0, 2, 4]
     );
-    run(&sweep, &options(None, true), &analysis, &|_, _, _| {}, &|| false).unwrap();
+    run(
+        &sweep,
+        &options(None, true),
+        &analysis,
+        &|_, _, _| {},
+        &|| false,
+    )
+    .unwrap();
     assert_eq!(
         calls.load(Ordering::SeqCst),
         6,
@@ -344,7 +352,13 @@ fn summary_parquet_has_the_variant_and_error_columns_of_the_csv() {
     // Parquet names have no dots: `clearance.radial_m` of the CSV is `clearance_radial_m`
     assert_eq!(
         names,
-        ["variant", "clearance_radial_m", "index", "clearance_m", "error"]
+        [
+            "variant",
+            "clearance_radial_m",
+            "index",
+            "clearance_m",
+            "error"
+        ]
     );
     let rows: Vec<_> = reader
         .get_row_iter(None)
@@ -453,7 +467,14 @@ fn a_stop_request_starts_no_further_variant() {
     )
     .unwrap();
     assert_eq!(ran.len(), 1);
-    let resumed = run(&sweep, &one_job(&out, true), &analysis, &|_, _, _| {}, &|| false).unwrap();
+    let resumed = run(
+        &sweep,
+        &one_job(&out, true),
+        &analysis,
+        &|_, _, _| {},
+        &|| false,
+    )
+    .unwrap();
     assert_eq!(resumed.len(), 2, "resume runs the variants not started");
     std::fs::remove_dir_all(dir).ok();
 }
