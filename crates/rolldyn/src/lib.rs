@@ -21,6 +21,7 @@
 
 pub mod analysis;
 pub mod failure;
+pub mod fatigue;
 pub mod film;
 pub mod model_source;
 pub mod observer;
@@ -28,7 +29,10 @@ pub mod oil;
 pub mod operating;
 pub mod output;
 pub mod run_record;
+pub mod study;
+pub mod sweep;
 pub mod table;
+pub mod wear;
 
 pub use analysis::{Analysis, Answer, Context};
 pub use failure::Failure;
@@ -38,13 +42,25 @@ pub use run_record::Invocation;
 pub use table::{Column, ColumnValues, Table, Tables};
 
 /// The analyses [`run_json`] knows, by name.
-pub const ANALYSES: &[&str] = &[film::Film::NAME];
+pub const ANALYSES: &[&str] = &[
+    film::Film::NAME,
+    sweep::Sweep::NAME,
+    wear::Wear::NAME,
+    fatigue::Fatigue::NAME,
+    fatigue::Rainflow::NAME,
+    study::Study::NAME,
+];
 
 /// Runs the analysis `name` on a request given as JSON (a field the request does not have is
 /// refused, naming it) and returns its answer.
 pub fn run_json(name: &str, request: &str, context: &Context<'_>) -> Result<Answer, Failure> {
     match name {
         film::Film::NAME => analysis::answer::<film::Film>(request, context),
+        sweep::Sweep::NAME => analysis::answer::<sweep::Sweep>(request, context),
+        wear::Wear::NAME => analysis::answer::<wear::Wear>(request, context),
+        fatigue::Fatigue::NAME => analysis::answer::<fatigue::Fatigue>(request, context),
+        fatigue::Rainflow::NAME => analysis::answer::<fatigue::Rainflow>(request, context),
+        study::Study::NAME => analysis::answer::<study::Study>(request, context),
         _ => Err(Failure::Input(format!(
             "no analysis named '{name}' (known: {})",
             ANALYSES.join(", ")
