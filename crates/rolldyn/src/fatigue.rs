@@ -13,8 +13,8 @@ use rolldyn_fatigue::inclusion::{InclusionSettings, Interface};
 use rolldyn_fatigue::mean_stress::MeanStressCorrection;
 use rolldyn_fatigue::sn::{BelowKnee, SnCurve};
 use rolldyn_fatigue::study::{
-    FatigueAnswer, FatigueError, FatigueSettings, REQUIRED_STRESS_SAFETY_FACTOR,
-    RevolutionMaxima, StressModelKind, evaluate, record_loads,
+    FatigueAnswer, FatigueError, FatigueSettings, REQUIRED_STRESS_SAFETY_FACTOR, RevolutionMaxima,
+    StressModelKind, evaluate, record_loads,
 };
 use rolldyn_fatigue::{
     CageLoadExport, Cycle, HistoryKind, UnitStresses, rainflow, read_history_csv,
@@ -369,7 +369,9 @@ impl Analysis for Fatigue {
         let wall = Instant::now();
         let settings = request.settings()?;
         if request.report && request.out.is_none() {
-            return Err(Failure::Input("--report needs an output folder (--out)".into()));
+            return Err(Failure::Input(
+                "--report needs an output folder (--out)".into(),
+            ));
         }
         let (mut export, maxima) = match &request.loads {
             Some(_) if request.operating.any() => {

@@ -257,8 +257,12 @@ fn seed004_study(dir: &Path, t: &mut Out) -> Result<(), Failure> {
 }
 
 fn grid_study(dir: &Path, t: &mut Out) -> Result<(), Failure> {
-    say!(t, "## V-01 seed 004 Table 2 at 1167 N (crowned 3.2 µm, no skew)\n");
-    say!(t, 
+    say!(
+        t,
+        "## V-01 seed 004 Table 2 at 1167 N (crowned 3.2 µm, no skew)\n"
+    );
+    say!(
+        t,
         "| grid | seed approach mm | rolldyn | err | seed p_max MPa | rolldyn | err | seed p_mid MPa | rolldyn | err | iterations | solve ms |"
     );
     say!(t, "|---|---|---|---|---|---|---|---|---|---|---|---|");
@@ -266,7 +270,8 @@ fn grid_study(dir: &Path, t: &mut Out) -> Result<(), Failure> {
     let err = |a: f64, b: f64| 100.0 * (a - b) / b;
     let mut series = Vec::new();
     for (seed, r) in &rows {
-        say!(t, 
+        say!(
+            t,
             "| {}/{} | {:.6} | {:.6} | {:+.1} % | {:.0} | {:.0} | {:+.1} % | {:.0} | {:.0} | {:+.1} % | {} | {:.2} |",
             seed.cells_along,
             seed.cells_across,
@@ -333,7 +338,8 @@ fn grid_study(dir: &Path, t: &mut Out) -> Result<(), Failure> {
         )?;
     }
     let stated = seed004::solve(seed004::TABLE2_PROFILE, 0.0, 2334.0, 150, 3);
-    say!(t, 
+    say!(
+        t,
         "\nAt the stated 2334 N (150/3): approach {:.5} mm, p_max {:.0} MPa, p_mid {:.0} MPa.\n",
         stated.approach_m * 1e3,
         stated.max_pressure_pa * 1e-6,
@@ -344,11 +350,18 @@ fn grid_study(dir: &Path, t: &mut Out) -> Result<(), Failure> {
 
 fn profile_study(dir: &Path, t: &mut Out) -> Result<(), Failure> {
     let cases = seed004::profile_study(150, 15, 0.45e-3);
-    say!(t, "## V-02 profile study (150 × 15 cells over 7.5 × 0.45 mm)\n");
-    say!(t, "| profile | load N | skew ′ | p_max MPa | p_mid MPa | K | edge ratio |");
+    say!(
+        t,
+        "## V-02 profile study (150 × 15 cells over 7.5 × 0.45 mm)\n"
+    );
+    say!(
+        t,
+        "| profile | load N | skew ′ | p_max MPa | p_mid MPa | K | edge ratio |"
+    );
     say!(t, "|---|---|---|---|---|---|---|");
     for c in &cases {
-        say!(t, 
+        say!(
+            t,
             "| {} | {:.0} | {:.0} | {:.0} | {:.0} | {:.3} | {} |",
             PROFILES[c.profile].1,
             c.load_n,
@@ -411,7 +424,10 @@ fn profile_study(dir: &Path, t: &mut Out) -> Result<(), Failure> {
 fn concentration_study(dir: &Path, t: &mut Out) -> Result<(), Failure> {
     let loads: Vec<f64> = (2..=24).map(|k| 125.0 * k as f64).collect();
     let k = seed004::concentration_vs_load(&loads, 300, 61, 0.45e-3);
-    say!(t, "## V-02 concentration factor K = p_max/p̄ vs load, no skew (300 × 61 cells)\n");
+    say!(
+        t,
+        "## V-02 concentration factor K = p_max/p̄ vs load, no skew (300 × 61 cells)\n"
+    );
     put!(t, "| load N |");
     PROFILES.iter().for_each(|p| put!(t, " {} |", p.1));
     say!(t, "\n|---|---|---|---|---|---|");
@@ -458,10 +474,12 @@ fn concentration_study(dir: &Path, t: &mut Out) -> Result<(), Failure> {
 }
 
 fn slices_study(dir: &Path, t: &mut Out) -> Result<(), Failure> {
-    say!(t, 
+    say!(
+        t,
         "## Slices (ISO/TS 16281 laminae, 30 slices) vs Boussinesq (150 × 15), 1167 N, no skew\n"
     );
-    say!(t, 
+    say!(
+        t,
         "| profile | approach slices µm | Boussinesq µm | diff | p_max slices MPa | Boussinesq MPa | diff |"
     );
     say!(t, "|---|---|---|---|---|---|---|");
@@ -469,7 +487,8 @@ fn slices_study(dir: &Path, t: &mut Out) -> Result<(), Failure> {
     for (index, profile) in PROFILES.iter().enumerate() {
         let s = seed004::slices_vs_boussinesq(index, 1167.0, 150, 15, 0.45e-3);
         let diff = |a: f64, b: f64| 100.0 * (a - b) / b;
-        say!(t, 
+        say!(
+            t,
             "| {} | {:.3} | {:.3} | {:+.1} % | {:.0} | {:.0} | {:+.1} % |",
             profile.1,
             s.slices.approach_m * 1e6,
@@ -632,10 +651,14 @@ fn skidding_study(dir: &Path, t: &mut Out) -> Result<(), Failure> {
             *count <= loads
         });
         say!(t, "## V-06 O'Brien–Taylor, quasi-static, {label}\n");
-        say!(t, "| speed rpm | oil °C | load N | cage slip % | max roller load N | failed |");
+        say!(
+            t,
+            "| speed rpm | oil °C | load N | cage slip % | max roller load N | failed |"
+        );
         say!(t, "|---|---|---|---|---|---|");
         for r in &aligned {
-            say!(t, 
+            say!(
+                t,
                 "| {:.0} | {:.1} | {:.0} | {} | {} | {} |",
                 r.inner_speed_rpm,
                 r.temperature_c,
@@ -688,10 +711,14 @@ fn skidding_study(dir: &Path, t: &mut Out) -> Result<(), Failure> {
     ] {
         skid_rows_csv(t, &dir.join(format!("{stem}.csv")), rows)?;
         say!(t, "## V-18 intershaft (assumed geometry), {title}\n");
-        say!(t, "| inner rpm | outer rpm | load N | cage slip | max outer slide-roll | failed |");
+        say!(
+            t,
+            "| inner rpm | outer rpm | load N | cage slip | max outer slide-roll | failed |"
+        );
         say!(t, "|---|---|---|---|---|---|");
         for r in rows.iter() {
-            say!(t, 
+            say!(
+                t,
                 "| {:.0} | {:.0} | {:.0} | {} | {} | {} |",
                 r.inner_speed_rpm,
                 r.outer_speed_rpm,
@@ -731,14 +758,19 @@ fn rib_shape_study(
             sweep.display()
         )));
     }
-    say!(t, 
+    say!(
+        t,
         "## Seed 000 §3.1.1.7 rib shape, 2002834 ({} cage revolutions, the first discarded)\n",
         revolutions
     );
-    say!(t, 
+    say!(
+        t,
         "| variant | rib face | misalignment ′ | mean edge distance mm | min mm | force share on the edge | max force N | mean sliding m/s | max sliding m/s | μ | power W (mean / max) | film share | |yaw| mrad | |pitch| mrad |"
     );
-    say!(t, "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|");
+    say!(
+        t,
+        "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+    );
     let arcmin = |rad: f64| rad.to_degrees() * 60.0;
     let total = rolldyn_sweep::SweepFile::load(sweep).map_or(0, |s| s.variants.len());
     let mut done = 0;
@@ -865,7 +897,6 @@ pub struct MapJson {
     pub reaches_boundary: bool,
 }
 
-
 /// Runs the end–rib limit study on the model file `path` and writes its tables and plots into
 /// `dir/end-rib-limit`, on square cells of `cell_m`.
 fn end_rib_limit(
@@ -971,18 +1002,21 @@ fn print_tables(
     check: &HertzCheck,
     settings: &Settings,
 ) {
-    say!(t, 
+    say!(
+        t,
         "## Seed 000 §3.2.2 end–rib limit force, {} (cells {:.3} mm, bracket ±{:.2} %)\n",
         bearing.name,
         settings.cell_m * 1e3,
         50.0 * settings.force_tolerance
     );
-    say!(t, 
+    say!(
+        t,
         "| case | rib face | Σρ 1/m | Σρ circumferential 1/m | margin mm | limit N (Boussinesq) | limit N (axial profile only) | Hertz criterion N |"
     );
     say!(t, "|---|---|---|---|---|---|---|---|");
     for r in rows {
-        say!(t, 
+        say!(
+            t,
             "| {} | {} | {:.4} | {:.4} | {:.3} | {:.0} | {:.0} | {:.0} |",
             r.case,
             face_label(r.face),
@@ -994,12 +1028,14 @@ fn print_tables(
             r.hertz_limit_n
         );
     }
-    say!(t, 
+    say!(
+        t,
         "\n| rib face | force N | p_max MPa | patch / projection cells | reaches the boundary |"
     );
     say!(t, "|---|---|---|---|---|");
     for m in maps {
-        say!(t, 
+        say!(
+            t,
             "| {} | {:.0} | {:.0} | {:.3} | {} |",
             face_label(m.pair.face),
             m.solution.force_n,
@@ -1010,7 +1046,8 @@ fn print_tables(
     }
     let (along_circle, up_the_rib) = check.semi_axes_m();
     let s = &check.map.solution;
-    say!(t, 
+    say!(
+        t,
         "\nHertz check, {} rib at {:.0} N: p_max {:.1} / {:.1} MPa, semi-axes {:.3} × {:.3} / {:.3} × {:.3} mm, approach {:.2} / {:.2} µm (Boussinesq / Hertz)",
         face_label(check.map.pair.face),
         s.force_n,

@@ -8,8 +8,8 @@ use crate::observer::Progress;
 use crate::operating::{Duration, jobs_or_cores};
 use crate::run_record::{ModelOrigin, finish_out_folder};
 use crate::table::{Table, Tables};
-use rolldyn_dynamics::output::NullSink;
 use rolldyn_dynamics::SummaryValue;
+use rolldyn_dynamics::output::NullSink;
 use rolldyn_dynamics::tapered::{TaperedRunSettings, run as run_tapered, summary_entries};
 use rolldyn_fatigue::study::{FatigueSettings, StressModelKind, evaluate, record_loads};
 use rolldyn_quasistatic::QuasiStaticOptions;
@@ -103,9 +103,10 @@ impl Tables for SweepResult {
         let mut table = Table::new("summary");
         for c in &summary.columns {
             table = match &c.values {
-                SummaryValues::Text(v) => {
-                    table.text(&c.name, v.iter().map(|s| s.clone().unwrap_or_default()).collect())
-                }
+                SummaryValues::Text(v) => table.text(
+                    &c.name,
+                    v.iter().map(|s| s.clone().unwrap_or_default()).collect(),
+                ),
                 SummaryValues::Integer(v) if v.iter().all(Option::is_some) => {
                     table.integer(&c.name, v.iter().flatten().copied().collect())
                 }

@@ -17,8 +17,8 @@ use rolldyn_wear::tapered::{
     TaperedPeriod, TaperedWearSettings, run_tapered_life, write_tapered_report,
 };
 use rolldyn_wear::{
-    ExposureWidth, OperabilityLimits, PeriodControl, PressureModel, StopReason, Surface,
-    WearError, WearMethod, WearSettings,
+    ExposureWidth, OperabilityLimits, PeriodControl, PressureModel, StopReason, Surface, WearError,
+    WearMethod, WearSettings,
 };
 use serde::de::{self, Deserializer};
 use serde::{Deserialize, Serialize};
@@ -369,12 +369,7 @@ impl Tables for WearResult {
                         column(&|p| p.max_depth_m.get(s)),
                     );
                 }
-                vec![
-                    table.real(
-                        "clearance_increase_m",
-                        column(&|p| p.clearance_increase_m),
-                    ),
-                ]
+                vec![table.real("clearance_increase_m", column(&|p| p.clearance_increase_m))]
             }
             WearResult::Tapered(t) => {
                 let column = |f: &dyn Fn(&TaperedPeriodRow) -> f64| {
@@ -386,7 +381,10 @@ impl Tables for WearResult {
                         .real("max_depth_roller_um", column(&|p| p.depth_um.roller))
                         .real("max_depth_cone_um", column(&|p| p.depth_um.cone))
                         .real("max_depth_cup_um", column(&|p| p.depth_um.cup))
-                        .real("max_depth_roller_end_um", column(&|p| p.depth_um.roller_end))
+                        .real(
+                            "max_depth_roller_end_um",
+                            column(&|p| p.depth_um.roller_end),
+                        )
                         .real("max_depth_rib_um", column(&|p| p.depth_um.rib))
                         .real("rib_force_mean_n", column(&|p| p.rib_force_mean_n))
                         .real("yaw_max_deg", column(&|p| p.yaw_max_deg)),
@@ -495,7 +493,14 @@ fn tapered_text(f: &mut fmt::Formatter<'_>, t: &TaperedWearResult) -> fmt::Resul
         writeln!(
             f,
             "{:>8.0} {:>9.4} {:>9.4} {:>9.4} {:>9.4} {:>9.4} {:>10.1} {:>9.4}",
-            p.time_h, d.roller, d.cone, d.cup, d.roller_end, d.rib, p.rib_force_mean_n, p.yaw_max_deg
+            p.time_h,
+            d.roller,
+            d.cone,
+            d.cup,
+            d.roller_end,
+            d.rib,
+            p.rib_force_mean_n,
+            p.yaw_max_deg
         )?;
     }
     writeln!(
@@ -557,7 +562,12 @@ fn output_folder(request: &WearRequest, context: &Context<'_>, tapered: bool) ->
 }
 
 /// Progress through the life, and the caller's stop request.
-fn period_done(context: &Context<'_>, time_h: f64, life_h: f64, message: String) -> ControlFlow<()> {
+fn period_done(
+    context: &Context<'_>,
+    time_h: f64,
+    life_h: f64,
+    message: String,
+) -> ControlFlow<()> {
     context.observer.progress(&Progress {
         done: time_h,
         total: life_h,

@@ -3,7 +3,6 @@
 //! requested life or an operability limit; with the automatic period, a period whose rates
 //! change too much is halved and recomputed.
 
-use std::ops::ControlFlow;
 use crate::WearError;
 use crate::bearing_data::WearData;
 use crate::rates::{ContactDiagnostics, SurfaceWear};
@@ -15,6 +14,7 @@ use rolldyn_dynamics::conditions::OperatingConditions;
 use rolldyn_dynamics::output::NullSink;
 use rolldyn_geometry::CylindricalRollerBearing;
 use rolldyn_model::{DynamicsInputs, Lubrication};
+use std::ops::ControlFlow;
 use std::time::Instant;
 
 /// One period of the life loop.
