@@ -782,7 +782,7 @@ fn rib_shape_study(
             unit: "variants",
             message: Some(r.variant.clone()),
         });
-        say!(t, 
+        say!(t,
             "| {} | {} | {:.0} | {:.3} | {:.3} | {:.3} | {:.1} | {:.2} | {:.2} | {:.3} | {:.2} / {:.1} | {:.2} | {:.2} | {:.2} |",
             r.variant,
             r.face_label(),
