@@ -1,35 +1,19 @@
 """rolldyn — roller-bearing dynamics with contact hydrodynamics, wear and cage fatigue.
 
-The analyses of the `rolldyn` program, called in-process: the same inputs (keyword arguments
-named like the command's flags, engineering units as text) and the same numbers.
+The analyses of the rolldyn library, called in-process: keyword arguments named like the
+command line's flags, quantities as SI numbers or text with units, typed results with their
+tables as pandas DataFrames.
 
 >>> import rolldyn
 >>> m = rolldyn.load_model("examples/2002834.toml")
 >>> run = rolldyn.simulate(m, duration="2rev")
->>> run.summary["cage_slip_mean"]
+>>> run.cage_slip_mean
 """
 
 from . import _native
-from ._commands import InputError, RunError
-from .api import (
-    Contact,
-    Model,
-    Run,
-    check,
-    contact,
-    ehl_line,
-    fatigue,
-    film,
-    journal,
-    load_model,
-    loads,
-    report,
-    simulate,
-    skid,
-    traction,
-    wear,
-)
-from .sweep import read_summary, sweep, write_sweep_file
+from ._core import InputError, RunError
+from .api import Model, film, load_model
+from .results import Contact, Result, Run, Sweep
 
 __version__ = _native.version()
 
@@ -37,22 +21,10 @@ __all__ = [
     "Contact",
     "InputError",
     "Model",
+    "Result",
     "Run",
     "RunError",
-    "check",
-    "contact",
-    "ehl_line",
-    "fatigue",
+    "Sweep",
     "film",
-    "journal",
     "load_model",
-    "loads",
-    "read_summary",
-    "report",
-    "simulate",
-    "skid",
-    "sweep",
-    "traction",
-    "wear",
-    "write_sweep_file",
 ]

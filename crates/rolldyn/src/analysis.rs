@@ -53,14 +53,13 @@ pub trait Analysis {
 }
 
 /// A result as a skin that knows no Rust types sees it.
-#[derive(Clone, Debug, Serialize)]
+#[derive(Clone, Debug)]
 pub struct Answer {
-    /// The result serialised (what `--json` prints).
-    pub summary: serde_json::Value,
+    /// The result serialised as JSON text (what `--json` prints, in the result's field order).
+    pub summary: String,
     /// The result as the command line prints it.
     pub text: String,
     /// The result's tables.
-    #[serde(skip)]
     pub tables: Vec<Table>,
 }
 
@@ -70,7 +69,7 @@ pub fn answer<A: Analysis>(request: &str, context: &Context<'_>) -> Result<Answe
         serde_json::from_str(request).map_err(|e| Failure::Input(format!("{}: {e}", A::NAME)))?;
     let result = A::run(&request, context)?;
     Ok(Answer {
-        summary: serde_json::to_value(&result)?,
+        summary: serde_json::to_string(&result)?,
         text: result.to_string(),
         tables: result.tables(),
     })

@@ -5,14 +5,14 @@
 //! Figs. 3.84–3.88; SPEC §6.7).
 
 use crate::analysis::{Analysis, Context};
+use crate::contact::plot_pressure_map;
 use crate::failure::Failure;
 use crate::model_source::ModelSource;
 use crate::observer::Progress;
 use crate::output::{out_dir, write_csv};
 use crate::table::{Table, Tables};
-use rolldyn_contact::roller_raceway::PressureMap as ContactPressureMap;
 use rolldyn_geometry::{BearingModel, DoubleRowTaperedBearing, TaperedRibFace};
-use rolldyn_plot::{Field, Labels, Series, heat_map, heat_map_outlined, line_plot};
+use rolldyn_plot::{Field, Labels, Series, heat_map_outlined, line_plot};
 use rolldyn_quasistatic::QuasiStaticOptions;
 use rolldyn_quasistatic::studies::{self, NviTraction, StudyRow};
 use rolldyn_units::{Length, Quantity};
@@ -220,29 +220,6 @@ impl Analysis for Study {
             tables: t.tables,
         }))
     }
-}
-
-/// The pressure map of a roller–raceway contact as an SVG map, MPa over mm.
-fn plot_pressure_map(path: &Path, title: &str, map: &ContactPressureMap) -> Result<(), Failure> {
-    // TODO(lead): the same function is `crate::contact::plot_pressure_map` on branch
-    // move-check; on merging, delete this one and call that.
-    let (x0, x1, y0, y1) = map.extent;
-    let mpa: Vec<f64> = map.pressure.iter().map(|p| p * 1e-6).collect();
-    heat_map(
-        path,
-        &Labels {
-            title,
-            x: "x along the roller, mm",
-            y: "y rolling direction, mm",
-        },
-        &Field {
-            values: &mpa,
-            nx: map.nx,
-            ny: map.ny,
-            extent: (x0 * 1e3, x1 * 1e3, y0 * 1e3, y1 * 1e3),
-        },
-    )?;
-    Ok(())
 }
 
 fn mm_mpa(points: &[(f64, f64)]) -> Vec<(f64, f64)> {

@@ -3,11 +3,11 @@
 //! operating point, a short 6-DOF dynamics run, and the inner-raceway contact of the most
 //! loaded roller by Hertz, slices and the Boussinesq solver at 0′/4′/8′ tilt.
 
-use super::check::{describe, summarise};
-use super::contact::{LawName, Method, solve};
 use super::simulate::{print_summary, step_limits};
 use crate::failure::Failure;
 use crate::output::{load_model, print_json};
+use rolldyn::check::summarise;
+use rolldyn::contact::{LawName, Method, solve};
 use rolldyn_contact::roller_raceway::{ContactReport, RollerRacewayContact};
 use rolldyn_dynamics::output::NullSink;
 use rolldyn_geometry::BearingModel;
@@ -51,7 +51,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
         .ok_or_else(|| missing("operating.temperatures.oil"))?;
     let summary = summarise(&model.bearing, speed, 0.0);
     if !args.json {
-        describe(&summary).iter().for_each(|l| println!("{l}"));
+        println!("{summary}");
     }
 
     let qs_conditions = quasi_static_conditions(&model, &QuasiStaticOverrides::default())?;
@@ -139,7 +139,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
     if args.json {
         let contacts: Vec<_> = rows
             .iter()
-            .map(|r| super::contact::to_json(model.bearing.name(), r, Some(CELLS)))
+            .map(|r| rolldyn::contact::to_json(model.bearing.name(), r, Some(CELLS)))
             .collect();
         return print_json(&serde_json::json!({
             "model": summary,
