@@ -43,7 +43,6 @@ mod summary;
 
 pub use file::{Analysis, SweepError, SweepFile, Variant, apply_overrides};
 pub use run::{
-    Figure, RunOptions, Shard, VariantAnalysis, VariantOutcome, VariantProgress, collect,
-    fingerprint, run,
+    Figure, RunOptions, Shard, VariantAnalysis, VariantOutcome, VariantProgress, fingerprint, run,
 };
-pub use summary::{Summary, SummaryColumn, SummaryValues, varied_columns};
+pub use summary::{Summary, SummaryColumn, SummaryValues, collect, varied_columns};

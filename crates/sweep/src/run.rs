@@ -1,7 +1,6 @@
 //! Running variants in parallel, with shards and resume, and collecting their summaries.
 
 use crate::file::{SweepError, SweepFile, Variant};
-use crate::summary::Summary;
 use rayon::prelude::*;
 use rolldyn_numerics::hash::fnv1a;
 use serde::{Deserialize, Deserializer, Serialize};
@@ -246,18 +245,4 @@ pub fn run(
             .collect()
     });
     outcomes.into_iter().collect()
-}
-
-/// Collects every variant with a result in `options.out_dir` into `summary.csv` and
-/// `summary.parquet` (variant, the varied model keys, index, the summary figures, error) and
-/// one SVG per figure (value per variant, like seed 000 Figs 3.13–3.30). Returns the summary.
-pub fn collect(sweep: &SweepFile, options: &RunOptions) -> Result<Summary, SweepError> {
-    let dir = &options.out_dir;
-    let summary = Summary::of(sweep, options);
-    summary
-        .write_csv(&dir.join("summary.csv"))
-        .and_then(|_| summary.write_parquet(&dir.join("summary.parquet")))
-        .and_then(|_| summary.plot(dir))
-        .map_err(|e| SweepError::new(&sweep.path, "", e))?;
-    Ok(summary)
 }

@@ -2,7 +2,7 @@
 //! every varied model key, its index and its figures — written as `summary.csv`,
 //! `summary.parquet` and one SVG per figure.
 
-use crate::file::{SweepFile, Variant};
+use crate::file::{SweepError, SweepFile, Variant};
 use crate::run::{Figure, RunOptions, fingerprint, stored};
 use rolldyn_output::{Column, Values, csv_field, write_parquet_table};
 use rolldyn_plot::{Labels, Series, line_plot};
@@ -465,6 +465,20 @@ impl Summary {
         }
         Ok(())
     }
+}
+
+/// Collects every variant with a result in `options.out_dir` into `summary.csv` and
+/// `summary.parquet` (variant, the varied model keys, index, the summary figures, error) and
+/// one SVG per figure (value per variant, like seed 000 Figs 3.13–3.30). Returns the summary.
+pub fn collect(sweep: &SweepFile, options: &RunOptions) -> Result<Summary, SweepError> {
+    let dir = &options.out_dir;
+    let summary = Summary::of(sweep, options);
+    summary
+        .write_csv(&dir.join("summary.csv"))
+        .and_then(|_| summary.write_parquet(&dir.join("summary.parquet")))
+        .and_then(|_| summary.plot(dir))
+        .map_err(|e| SweepError::new(&sweep.path, "", e))?;
+    Ok(summary)
 }
 
 #[cfg(test)]
