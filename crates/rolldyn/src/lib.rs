@@ -23,8 +23,10 @@ pub mod analysis;
 pub mod bench;
 pub mod check;
 pub mod contact;
+pub mod demo;
 pub mod ehl_line;
 pub mod failure;
+pub mod fatigue;
 pub mod film;
 pub mod journal;
 pub mod loads;
@@ -39,8 +41,11 @@ pub mod run_record;
 pub mod simulate;
 pub mod skid;
 pub mod startup;
+pub mod study;
+pub mod sweep;
 pub mod table;
 pub mod traction;
+pub mod wear;
 
 pub use analysis::{Analysis, Answer, Context};
 pub use failure::Failure;
@@ -52,6 +57,7 @@ pub use table::{Column, ColumnValues, Table, Tables};
 /// The analyses [`run_json`] knows, by name.
 pub const ANALYSES: &[&str] = &[
     film::Film::NAME,
+    demo::Demo::NAME,
     check::Check::NAME,
     contact::Contact::NAME,
     oils::Oils::NAME,
@@ -64,6 +70,11 @@ pub const ANALYSES: &[&str] = &[
     simulate::Simulate::NAME,
     bench::Bench::NAME,
     startup::Startup::NAME,
+    sweep::Sweep::NAME,
+    wear::Wear::NAME,
+    fatigue::Fatigue::NAME,
+    fatigue::Rainflow::NAME,
+    study::Study::NAME,
 ];
 
 /// Runs the analysis `name` on a request given as JSON (a field the request does not have is
@@ -71,6 +82,7 @@ pub const ANALYSES: &[&str] = &[
 pub fn run_json(name: &str, request: &str, context: &Context<'_>) -> Result<Answer, Failure> {
     match name {
         film::Film::NAME => analysis::answer::<film::Film>(request, context),
+        demo::Demo::NAME => analysis::answer::<demo::Demo>(request, context),
         check::Check::NAME => analysis::answer::<check::Check>(request, context),
         contact::Contact::NAME => analysis::answer::<contact::Contact>(request, context),
         oils::Oils::NAME => analysis::answer::<oils::Oils>(request, context),
@@ -83,6 +95,11 @@ pub fn run_json(name: &str, request: &str, context: &Context<'_>) -> Result<Answ
         simulate::Simulate::NAME => analysis::answer::<simulate::Simulate>(request, context),
         bench::Bench::NAME => analysis::answer::<bench::Bench>(request, context),
         startup::Startup::NAME => analysis::answer::<startup::Startup>(request, context),
+        sweep::Sweep::NAME => analysis::answer::<sweep::Sweep>(request, context),
+        wear::Wear::NAME => analysis::answer::<wear::Wear>(request, context),
+        fatigue::Fatigue::NAME => analysis::answer::<fatigue::Fatigue>(request, context),
+        fatigue::Rainflow::NAME => analysis::answer::<fatigue::Rainflow>(request, context),
+        study::Study::NAME => analysis::answer::<study::Study>(request, context),
         _ => Err(Failure::Input(format!(
             "no analysis named '{name}' (known: {})",
             ANALYSES.join(", ")

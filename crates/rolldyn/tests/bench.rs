@@ -6,7 +6,8 @@ use rolldyn::{Context, Failure, run_json};
 fn a_short_benchmark_times_its_run() {
     let request = r#"{"duration": "1 ms", "repeat": 1, "operating": {"speed": "4000 rpm"}}"#;
     let answer = run_json("bench", request, &Context::default()).expect("the benchmark runs");
-    let runs = answer.summary["runs"].as_array().unwrap();
+    let summary: serde_json::Value = serde_json::from_str(&answer.summary).unwrap();
+    let runs = summary["runs"].as_array().unwrap();
     assert_eq!(runs.len(), 1);
     let simulated = runs[0]["simulated_time_s"].as_f64().unwrap();
     assert!((simulated - 1e-3).abs() < 1e-4, "{simulated}");

@@ -31,9 +31,10 @@ fn a_run_records_its_callers_invocation_and_the_embedded_model() {
         "out": dir,
     });
     let answer = run_json("simulate", &request.to_string(), &context).expect("the run succeeds");
-    let simulated = answer.summary["simulated_time_s"].as_f64().unwrap();
+    let summary: serde_json::Value = serde_json::from_str(&answer.summary).expect("JSON");
+    let simulated = summary["simulated_time_s"].as_f64().unwrap();
     assert!(simulated > 1e-3 && simulated < 0.1, "{simulated}");
-    assert_eq!(answer.summary["output_folder"], dir.display().to_string());
+    assert_eq!(summary["output_folder"], dir.display().to_string());
     let text = std::fs::read_to_string(dir.join("run.json")).expect("run.json written");
     let manifest: serde_json::Value = serde_json::from_str(&text).unwrap();
     assert_eq!(manifest["command"][0], "rolldyn.simulate");
@@ -41,7 +42,7 @@ fn a_run_records_its_callers_invocation_and_the_embedded_model() {
     assert_eq!(manifest["overrides"]["duration"], "0.5rev");
     assert_eq!(manifest["model_file"], serde_json::Value::Null);
     assert!(manifest["model_text"].as_str().unwrap().contains("2002834"));
-    assert_eq!(manifest["summary"]["steps"], answer.summary["steps"]);
+    assert_eq!(manifest["summary"]["steps"], summary["steps"]);
     for file in ["bearing.csv", "rollers.parquet", "cage_speed.svg"] {
         assert!(dir.join(file).exists(), "{file}");
     }

@@ -14,7 +14,8 @@ fn a_frozen_point_at_rest_keeps_its_loads() {
     let request = serde_json::json!({"points": ["1"], "revolutions": 1, "jobs": 1, "out": out});
     let context = Context::new(model(), &Unobserved);
     let answer = run_json("startup", &request.to_string(), &context).expect("startup runs");
-    let p1 = &answer.summary["points"][0];
+    let summary: serde_json::Value = serde_json::from_str(&answer.summary).unwrap();
+    let p1 = &summary["points"][0];
     assert!(p1["note"].as_str().unwrap().contains("skipped"));
     assert!((p1["fixed_load_n"].as_f64().unwrap() - 4287.6).abs() < 1e-9);
     assert_eq!(answer.tables[0].name, "startup");
