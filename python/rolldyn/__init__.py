@@ -2,7 +2,7 @@
 
 The analyses of the rolldyn library, called in-process: keyword arguments named like the
 command line's flags, quantities as SI numbers or text with units, typed results with their
-tables as pandas DataFrames.
+tables as pandas DataFrames (docs/python.md).
 
 >>> import rolldyn
 >>> m = rolldyn.load_model("examples/2002834.toml")
@@ -12,8 +12,27 @@ tables as pandas DataFrames.
 
 from . import _native
 from ._core import InputError, RunError
-from .api import Model, film, load_model
+from .api import (
+    Model,
+    check,
+    contact,
+    ehl_line,
+    fatigue,
+    film,
+    journal,
+    load_model,
+    loads,
+    oils,
+    rainflow,
+    report,
+    simulate,
+    skid,
+    startup,
+    traction,
+    wear,
+)
 from .results import Contact, Result, Run, Sweep
+from .sweep import read_summary, sweep, write_sweep_file
 
 __version__ = _native.version()
 
@@ -25,6 +44,23 @@ __all__ = [
     "Run",
     "RunError",
     "Sweep",
+    "check",
+    "contact",
+    "ehl_line",
+    "fatigue",
     "film",
+    "journal",
     "load_model",
+    "loads",
+    "oils",
+    "rainflow",
+    "read_summary",
+    "report",
+    "simulate",
+    "skid",
+    "startup",
+    "sweep",
+    "traction",
+    "wear",
+    "write_sweep_file",
 ]

@@ -484,3 +484,178 @@ def simulate(
     options["keep_tables"] = tables
     return call("simulate", options, Run, model=model, groups={"operating": OPERATING},
                 progress=progress)
+
+
+def wear(
+    model: ModelLike = None,
+    *,
+    speed=None, outer_speed=None, radial_load=None, axial_load=None,
+    load_direction: Optional[str] = None, oil_temperature=None, misalignment=None,
+    life: Optional[Quantity] = None,
+    period: Optional[Quantity] = None,
+    method: Optional[str] = None,
+    revolutions: Optional[int] = None,
+    settle: Optional[int] = None,
+    pressure: Optional[str] = None,
+    exposure_width: Optional[str] = None,
+    seed_literal_hardness: bool = False,
+    max_clearance_increase: Optional[Quantity] = None,
+    max_depth: Optional[Quantity] = None,
+    window_settle: Optional[Quantity] = None,
+    window: Optional[Quantity] = None,
+    out: Optional[PathLike] = None,
+    report: bool = False,
+    progress: Progress = None,
+) -> Result:
+    """Archard wear of raceways, rollers, cage bars, roller ends and ribs over the bearing's
+    life, fed back into the geometry each period (`rolldyn wear`).
+
+    Parameters
+    ----------
+    model : Model, path or None
+    speed, outer_speed, radial_load, axial_load, load_direction, oil_temperature, misalignment
+        Overrides of the model's operating point.
+    life : float or str, optional
+        Life to reach, default 25 000 h (s as a number).
+    period : float or str, optional
+        Wear period, default 1905 h, or ``"auto"``.
+    method : {"direct", "averaged"}, optional
+    revolutions, settle : int, optional
+        Cage revolutions recorded per period, and run and discarded before.
+    pressure : {"slices", "boussinesq"}, optional
+    exposure_width : {"full", "half"}, optional
+    seed_literal_hardness : bool
+    max_clearance_increase, max_depth : float or str, optional
+        Stop criteria.
+    window_settle, window : float or str, optional
+        Dynamics windows of a tapered bearing.
+    out : path, optional
+        Output folder, default ``out/<model>-wear``.
+    report : bool
+        Write ``out/report.html`` at the end.
+    progress : bool or callable, optional
+        Per period; Ctrl-C stops after the running period, keeping what was written.
+
+    Returns
+    -------
+    Result
+        Table ``periods``; summary keys: {wear}.
+    """
+    model = as_model(model)
+    options = dict(locals())
+    for name in ("model", "progress"):
+        options.pop(name)
+    return call("wear", options, Result, model=model, groups={"operating": OPERATING},
+                progress=progress)
+
+
+def fatigue(
+    model: ModelLike = None,
+    *,
+    speed=None, outer_speed=None, radial_load=None, axial_load=None,
+    load_direction: Optional[str] = None, oil_temperature=None, misalignment=None,
+    stress: Optional[str] = None,
+    revolutions: Optional[int] = None,
+    inclusion: Optional[str] = None,
+    mean_stress: Optional[str] = None,
+    fillet_radius: Optional[Quantity] = None,
+    stress_concentration: Optional[Sequence[float]] = None,
+    sn_curve: Optional[PathLike] = None,
+    coating_factor: Optional[float] = None,
+    safety_factor: Optional[float] = None,
+    below_knee: Optional[str] = None,
+    loads: Optional[PathLike] = None,
+    out: Optional[PathLike] = None,
+    report: bool = False,
+    cache: Optional[PathLike] = None,
+    progress: Progress = None,
+) -> Result:
+    """Cage high-cycle fatigue from one steady revolution of the dynamics (`rolldyn fatigue`):
+    frame or CalculiX stresses, rainflow, S–N, Miner, inclusion.
+
+    Parameters
+    ----------
+    model : Model, path or None
+    speed, outer_speed, radial_load, axial_load, load_direction, oil_temperature, misalignment
+        Overrides of the model's operating point.
+    stress : {"frame", "calculix"}, optional
+    revolutions : int, optional
+        Cage revolutions run before the recorded one.
+    inclusion : {"debonded", "bonded"}, optional
+    mean_stress : {"none", "goodman", "gerber", "swt"}, optional
+    fillet_radius : float or str, optional
+    stress_concentration : pair of float, optional
+    sn_curve : path, optional
+    coating_factor, safety_factor : float, optional
+    below_knee : {"no-damage", "extrapolate", "haibach"}, optional
+    loads : path, optional
+        A cage-load export (`simulate(cage_loads=...)`) instead of a dynamics run.
+    out : path, optional
+    report : bool
+    cache : path, optional
+        Cache folder of the CalculiX unit cases.
+    progress : bool or callable, optional
+        Per stage (dynamics, stresses, damage, files); Ctrl-C stops the dynamics run.
+
+    Returns
+    -------
+    Result
+        Summary keys: {fatigue}.
+    """
+    model = as_model(model) if loads is None else None
+    options = dict(locals())
+    for name in ("model", "progress"):
+        options.pop(name)
+    return call("fatigue", options, Result, model=model, groups={"operating": OPERATING},
+                progress=progress)
+
+
+def rainflow(history: PathLike, *, column: Optional[str] = None, periodic: bool = False) -> Result:
+    """Rainflow count of a stress history (`rolldyn fatigue rainflow`).
+
+    Parameters
+    ----------
+    history : path
+        A CSV file with a stress column.
+    column : str, optional
+        The column to count, default the last.
+    periodic : bool
+        Count the history as one period of a repeated signal.
+
+    Returns
+    -------
+    Result
+        Table ``cycles``; summary keys: {rainflow}.
+    """
+    return call("rainflow", dict(history=history, column=column, periodic=periodic), Result)
+
+
+def startup(model: ModelLike, *, jobs: Optional[int] = None, revolutions: Optional[float] = None,
+            average: Optional[float] = None, points: Optional[Sequence[str]] = None,
+            out: Optional[PathLike] = None, progress: Progress = None) -> Result:
+    """Engine start-up: the dynamics at the frozen time points of the model's schedules
+    (`rolldyn startup`).
+
+    Parameters
+    ----------
+    model : Model or path
+        A model with speed and load schedules.
+    jobs : int, optional
+        Parallel jobs, default all cores.
+    revolutions, average : float, optional
+        Cage revolutions per point, and the last ones averaged.
+    points : sequence of str, optional
+        Run only these points, by label.
+    out : path, optional
+    progress : bool or callable, optional
+        Per finished point; Ctrl-C starts no new points.
+
+    Returns
+    -------
+    Result
+        Tables ``startup`` and ``startup_revolutions``; summary keys: {startup}.
+    """
+    model = as_model(model)
+    options = dict(jobs=jobs, revolutions=revolutions, average=average,
+                   points=None if points is None else list(points), out=out)
+    return call("startup", options, Result, model=model, progress=progress)

@@ -3,6 +3,7 @@
 //! rainflow → S–N and Miner → life and critical location, and with an inclusion the life at the
 //! critical location with the inclusion's local stresses.
 
+use std::ops::ControlFlow;
 use crate::cage::{CageGeometry, FilletPoint};
 use crate::damage::{DamageBreakdown, MeanStressSettings, life_hours, miner_damage};
 use crate::frame::{FilletFactors, FrameSettings, fillet_factors};
@@ -346,11 +347,14 @@ pub fn export_header(
 }
 
 /// A model's dynamics run to its load export: `settle_revolutions` discarded, then recorded until
-/// the cage has turned a full revolution (at most three epicyclic periods).
+/// the cage has turned a full revolution (at most three epicyclic periods). `watch(t, t_settled)`
+/// is called after every accepted step with the simulated time and the end of the settling;
+/// `Break` stops the run ([`FatigueError::Interrupted`]).
 pub fn record_loads(
     model: &rolldyn_model::Model,
     overrides: &rolldyn_setup::Overrides,
     settings: &FatigueSettings,
+    watch: &mut dyn FnMut(f64, f64) -> ControlFlow<()>,
 ) -> Result<(CageLoadExport, RevolutionMaxima, CageGeometry), FatigueError> {
     let bearing = model
         .bearing
@@ -382,15 +386,19 @@ pub fn record_loads(
     .map_err(input)?;
     let period = std::f64::consts::TAU / epicyclic.abs();
     let mut sim = prepared.simulation;
-    let numerical = |e: rolldyn_dynamics::DynError| FatigueError::Numerical(e.to_string());
+    let numerical = |e: rolldyn_dynamics::DynError| match e {
+        rolldyn_dynamics::DynError::Interrupted { .. } => FatigueError::Interrupted,
+        e => FatigueError::Numerical(e.to_string()),
+    };
     let settle = settings.settle_revolutions as f64 * period;
-    sim.run_until(settle, &mut rolldyn_dynamics::output::NullSink, &mut |_| {})
+    let mut watched = |t: f64| watch(t, settle);
+    sim.run_until_interruptible(settle, &mut rolldyn_dynamics::output::NullSink, &mut watched)
         .map_err(numerical)?;
     let mut recorder = CageLoadRecorder::default();
     let mut end = settle;
     let sets = loop {
         end += 0.25 * period;
-        sim.run_until(end, &mut recorder, &mut |_| {})
+        sim.run_until_interruptible(end, &mut recorder, &mut watched)
             .map_err(numerical)?;
         match recorder.last_revolution() {
             Ok(sets) => break sets,
@@ -420,4 +428,7 @@ pub enum FatigueError {
     Input(String),
     #[error("{0}")]
     Numerical(String),
+    /// The caller stopped the dynamics run.
+    #[error("the dynamics run was interrupted")]
+    Interrupted,
 }

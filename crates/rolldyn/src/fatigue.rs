@@ -22,6 +22,7 @@ use rolldyn_fatigue::{
 use rolldyn_report::RunKind;
 use rolldyn_units::{Length, Quantity};
 use serde::{Deserialize, Serialize};
+use std::ops::ControlFlow;
 use std::fmt;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -226,6 +227,7 @@ pub fn failure(e: FatigueError) -> Failure {
     match e {
         FatigueError::Input(m) => Failure::Input(m),
         FatigueError::Numerical(m) => Failure::Run(m),
+        FatigueError::Interrupted => Failure::Run("fatigue interrupted during the dynamics run".into()),
     }
 }
 
@@ -395,8 +397,21 @@ impl Analysis for Fatigue {
                         settings.settle_revolutions
                     ),
                 )?;
+                let mut watch = |t: f64, settled: f64| {
+                    context.observer.progress(&Progress {
+                        done: (t / settled.max(f64::MIN_POSITIVE)).min(1.0),
+                        total: STAGES,
+                        unit: "stages",
+                        message: Some(format!("dynamics, t = {t:.4} s")),
+                    });
+                    if context.observer.stop_requested() {
+                        ControlFlow::Break(())
+                    } else {
+                        ControlFlow::Continue(())
+                    }
+                };
                 let (export, maxima, _) =
-                    record_loads(&model, &request.operating.overrides(), &settings)
+                    record_loads(&model, &request.operating.overrides(), &settings, &mut watch)
                         .map_err(failure)?;
                 (export, maxima)
             }
