@@ -28,8 +28,9 @@ out.mkdir(parents=True, exist_ok=True)
 # %%
 model = rolldyn.load_model("examples/2002834.toml")
 derived = rolldyn.check(model)
-print(model, "—", derived["roller_count"], "rollers, pitch diameter",
-      round(derived["pitch_diameter_m"] * 1e3, 1), "mm")
+print(model, "—", derived.roller_count, "rollers, pitch diameter",
+      round(derived.pitch_diameter_m * 1e3, 1), "mm")
+derived  # in a notebook, the result shows itself as a table
 
 # %% [markdown]
 # ## Quasi-static skidding (seed 001)
@@ -37,8 +38,8 @@ print(model, "—", derived["roller_count"], "rollers, pitch diameter",
 
 # %%
 quasi_static = rolldyn.skid(model)
-print(f"quasi-static cage slip {100 * quasi_static['cage_slip']:.2f} % "
-      f"(converged: {quasi_static['converged']})")
+print(f"quasi-static cage slip {quasi_static.cage_slip:.4f} "
+      f"(converged: {quasi_static.converged})")
 
 # %% [markdown]
 # ## Dynamics (seed 000)
@@ -47,13 +48,14 @@ print(f"quasi-static cage slip {100 * quasi_static['cage_slip']:.2f} % "
 # pandas DataFrames in SI units.
 
 # %%
-run = rolldyn.simulate(model, duration="5rev")
-print(f"dynamic cage slip {100 * run.summary['cage_slip_mean']:.2f} % over the steady "
-      f"revolutions, largest inner-raceway force {run.summary['max_inner_contact_force_n']:.0f} N")
+run = rolldyn.simulate(model, duration="5rev", progress=True)
+print(f"dynamic cage slip {run.cage_slip_mean:.4f} over the steady "
+      f"revolutions, largest inner-raceway force {run.max_inner_contact_force_n:.0f} N")
 print(run.revolutions[["revolution", "cage_slip_mean", "max_cage_land_force_n"]])
 
 # %% [markdown]
-# Both models run the cage slightly faster than the epicyclic speed (negative slip), but the
+# Both models run the cage slightly faster than the epicyclic speed (negative slip, a fraction of
+# the epicyclic speed), but the
 # quasi-static slip printed above is several times the dynamic mean: the quasi-static cage sits
 # still at the eccentricity where its land friction balances the rollers, while the dynamic cage
 # whirls in its land clearance and touches the land only part of the time (the land force of each
@@ -63,7 +65,7 @@ print(run.revolutions[["revolution", "cage_slip_mean", "max_cage_land_force_n"]]
 fig, (orbit, speed) = plt.subplots(1, 2, figsize=(11, 4))
 run.plot_cage_orbit(orbit)
 run.plot_cage_speed(speed)
-speed.axhline(quasi_static["cage_speed_rad_s"], color="k", lw=0.8, ls=":", label="quasi-static")
+speed.axhline(quasi_static.cage_speed_rad_s, color="k", lw=0.8, ls=":", label="quasi-static")
 speed.legend()
 fig.tight_layout()
 fig.savefig(out / "cage.svg")
@@ -74,10 +76,9 @@ fig.savefig(out / "cage.svg")
 # `dask.distributed.Client` as `client=`, every variant would be one task on that cluster.
 
 # %%
-summary = rolldyn.sweep("examples/2002834/clearance-sweep.toml", out=out / "clearance-sweep")
-print(summary[["variant", "cage_slip_mean", "max_inner_contact_force_n"]])
+clearance = rolldyn.sweep("examples/2002834/clearance-sweep.toml", out=out / "clearance-sweep")
+print(clearance.table[["variant", *clearance.varied, "cage_slip_mean", "max_inner_contact_force_n"]])
 fig, ax = plt.subplots(figsize=(5, 3.5))
-ax.plot(summary["variant"], 100 * summary["cage_slip_mean"], "o-")
-ax.set(xlabel="variant (radial clearance, µm)", ylabel="mean cage slip, %")
+clearance.plot("cage_slip_mean", ax)  # against the varied clearance, not the variant order
 fig.tight_layout()
 fig.savefig(out / "clearance-sweep.svg")

@@ -95,7 +95,10 @@ def request(options: dict, groups: Optional[dict] = None) -> dict:
 def _table(columns) -> pd.DataFrame:
     data = {}
     for name, kind, values in columns:
-        data[name] = np.frombuffer(values, dtype="<" + kind) if kind in ("f8", "i8") else list(values)
+        if kind in ("f8", "i8"):
+            data[name] = np.frombuffer(values, dtype="<" + kind)
+        else:  # an empty text cell is a missing value, as pandas reads it from CSV
+            data[name] = [v if v != "" else np.nan for v in values]
     return pd.DataFrame(data)
 
 

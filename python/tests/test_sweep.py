@@ -28,9 +28,12 @@ def timeless(table: pd.DataFrame) -> pd.DataFrame:
 
 
 def test_a_local_sweep_equals_the_command_line(tmp_path):
-    python = rolldyn.sweep(SWEEP, out=tmp_path / "python")
+    result = rolldyn.sweep(SWEEP, out=tmp_path / "python")
+    python = result.table
     expected = cli_summary(tmp_path / "cli")
     assert list(python["variant"]) == ["c0", "c9", "c30"]
+    assert result.varied == ["clearance.radial_m"]
+    assert list(python.columns[:3]) == ["variant", "index", "clearance.radial_m"]
     pd.testing.assert_frame_equal(timeless(python), timeless(expected), check_exact=True)
 
 
@@ -39,7 +42,7 @@ def test_a_dask_sweep_equals_the_command_line(tmp_path):
     with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
                                   dashboard_address=None) as cluster, \
             distributed.Client(cluster) as client:
-        python = rolldyn.sweep(SWEEP, client=client, out=tmp_path / "dask", report=True)
+        python = rolldyn.sweep(SWEEP, client=client, out=tmp_path / "dask", report=True).table
     assert (tmp_path / "dask" / "report.html").exists()
     expected = cli_summary(tmp_path / "cli")
     pd.testing.assert_frame_equal(timeless(python), timeless(expected), check_exact=True)
@@ -49,6 +52,7 @@ def test_a_dask_sweep_equals_the_command_line(tmp_path):
 def test_a_table_of_variants_is_a_sweep(tmp_path):
     table = pd.DataFrame({"variant": ["c0", "c9", "c30"],
                           "clearance.radial": ["0 mm", "0.009 mm", "0.03 mm"]})
-    python = rolldyn.sweep(table, model="examples/2002834.toml", duration="2rev", out=tmp_path / "t")
+    python = rolldyn.sweep(table, model="examples/2002834.toml", duration="2rev",
+                           out=tmp_path / "t").table
     expected = cli_summary(tmp_path / "cli")
     pd.testing.assert_frame_equal(timeless(python), timeless(expected), check_exact=True)
