@@ -6,7 +6,7 @@ use crate::rates::{ContactDiagnostics, SurfaceWear};
 use crate::surface::Surface;
 use rolldyn_geometry::angle_bin_centre_rad;
 use rolldyn_output::{Formats, OutputError, TableWriter};
-use rolldyn_plot::{Field, Labels, PlotError, Series, heat_map, line_plot};
+use rolldyn_plot::{Field, Labels, MapLabels, PlotError, Series, line_plot, map_plot};
 use std::path::{Path, PathBuf};
 
 /// µm per m
@@ -232,10 +232,10 @@ impl WearTables {
             let values: Vec<f64> = map.iter().map(|d| d * UM).collect();
             let (x0, x1) = (positions_mm[0], positions_mm[positions_mm.len() - 1]);
             let path = dir.join(name);
-            heat_map(
+            map_plot(
                 &path,
                 &Labels {
-                    title: "Raceway wear depth at the end, µm (ring frame)",
+                    title: "Raceway wear depth at the end (ring frame)",
                     x: "angle, deg",
                     y: "axial position, mm",
                 },
@@ -244,6 +244,10 @@ impl WearTables {
                     nx: depth.bins,
                     ny: depth.lines,
                     extent: (0.0, 360.0, x0, x1),
+                },
+                &MapLabels {
+                    value: "wear depth, µm",
+                    outline: &[],
                 },
             )?;
             written.push(path);
