@@ -36,9 +36,6 @@ fn engineering_unit(key: &str) -> (f64, &'static str) {
         ("_rad", 180.0 / PI, "°"),
         ("_um_per_1000h", 1.0, "µm/1000 h"),
     ];
-    if key == "cage_slip_mean" || key == "cage_slip" {
-        return (100.0, "%");
-    }
     SUFFIXES
         .iter()
         .filter(|(suffix, _, _)| key.ends_with(suffix))
@@ -69,7 +66,8 @@ mod tests {
         assert_eq!(display("cage_speed_mean_rad_s", 1.0), "9.549 rpm");
         assert_eq!(display("max_inner_sliding_speed_m_s", 0.25), "0.2500 m/s");
         assert_eq!(display("max_cage_land_force_n", 12.5), "12.50 N");
-        assert_eq!(display("cage_slip_mean", 0.0123), "1.230 %");
+        // a slip is a fraction, as in the JSON answer and the CSV tables
+        assert_eq!(display("cage_slip_mean", 0.0123), "0.01230");
         assert_eq!(display("max_stress_pa", 4.8e8), "480 MPa");
         assert_eq!(display("whirl_ratio", 1.25), "1.250");
         assert_eq!(display("steps", 123456.0), "123456");
