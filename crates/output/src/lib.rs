@@ -105,9 +105,11 @@ impl ParquetSink {
         while let Some(mut column) = group.next_column().map_err(|e| fail(&path, e))? {
             let (values, levels) = &mut self.columns[k];
             match self.kinds[k] {
-                ColumnKind::Real => column
-                    .typed::<DoubleType>()
-                    .write_batch(values, Some(levels), None),
+                ColumnKind::Real => {
+                    column
+                        .typed::<DoubleType>()
+                        .write_batch(values, Some(levels), None)
+                }
                 ColumnKind::Integer => {
                     let whole: Vec<i64> = values.iter().map(|v| v.round() as i64).collect();
                     column

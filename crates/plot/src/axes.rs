@@ -86,7 +86,10 @@ mod tests {
     #[test]
     fn axes_start_near_the_data_and_from_zero_only_close_to_it() {
         let (lo, hi) = data_range([392.0, 398.0, 410.0].into_iter());
-        assert!(lo > 385.0 && lo < 392.0 && hi > 410.0 && hi < 412.0, "{lo} {hi}");
+        assert!(
+            lo > 385.0 && lo < 392.0 && hi > 410.0 && hi < 412.0,
+            "{lo} {hi}"
+        );
         assert_eq!(data_range([30.0, 700.0].into_iter()).0, 0.0);
         let (lo, hi) = data_range([-0.005, -0.003].into_iter());
         assert!(lo < -0.005 && hi > -0.003 && hi < 0.0, "{lo} {hi}");

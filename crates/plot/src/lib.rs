@@ -208,7 +208,10 @@ pub fn orbit_plot(
             let outline: Vec<(f64, f64)> = (0..=180)
                 .map(|k| {
                     let a = std::f64::consts::TAU * f64::from(k) / 180.0;
-                    (c.centre.0 + c.radius * a.cos(), c.centre.1 + c.radius * a.sin())
+                    (
+                        c.centre.0 + c.radius * a.cos(),
+                        c.centre.1 + c.radius * a.sin(),
+                    )
                 })
                 .collect();
             chart
@@ -308,7 +311,10 @@ fn marked_plot(path: &Path, labels: &Labels, points: &[(f64, f64)]) -> Result<()
             .map_err(|e| e.to_string())?;
         let color = Palette99::pick(0).to_rgba();
         chart
-            .draw_series(LineSeries::new(points.iter().copied(), color.stroke_width(2)))
+            .draw_series(LineSeries::new(
+                points.iter().copied(),
+                color.stroke_width(2),
+            ))
             .map_err(|e| e.to_string())?;
         chart
             .draw_series(points.iter().map(|&p| Circle::new(p, 5, color.filled())))
@@ -460,7 +466,9 @@ pub fn map_plot(
             .map_err(|e| e.to_string())?;
         let (_, rows) = chart.plotting_area().get_pixel_range();
         let left = (SIZE.0 - BAR_AREA + 12) as i32;
-        Ok(colour_bar::markup(left, rows.start, rows.end, vmax, map.value))
+        Ok(colour_bar::markup(
+            left, rows.start, rows.end, vmax, map.value,
+        ))
     })
 }
 

@@ -41,14 +41,26 @@ fn assert_readable(svg: &str) {
 fn line_plots_have_readable_fonts_and_axes_near_the_data() {
     let dir = scratch("line");
     let path = dir.join("cage_speed.svg");
-    let cage: Vec<(f64, f64)> = (0..100).map(|k| (k as f64 * 1e-3, 392.0 + (k % 7) as f64)).collect();
+    let cage: Vec<(f64, f64)> = (0..100)
+        .map(|k| (k as f64 * 1e-3, 392.0 + (k % 7) as f64))
+        .collect();
     let epicyclic: Vec<(f64, f64)> = (0..100).map(|k| (k as f64 * 1e-3, 391.8)).collect();
     line_plot(
         &path,
-        &Labels { title: "Cage speed", x: "time, s", y: "rad/s" },
+        &Labels {
+            title: "Cage speed",
+            x: "time, s",
+            y: "rad/s",
+        },
         &[
-            Series { label: "cage", points: &cage },
-            Series { label: "epicyclic", points: &epicyclic },
+            Series {
+                label: "cage",
+                points: &cage,
+            },
+            Series {
+                label: "epicyclic",
+                points: &epicyclic,
+            },
         ],
     )
     .unwrap();
@@ -64,20 +76,38 @@ fn line_plots_have_readable_fonts_and_axes_near_the_data() {
 fn every_map_has_a_labelled_colour_bar() {
     let dir = scratch("map");
     let values: Vec<f64> = (0..200).map(|k| (k % 20) as f64 * 50.0).collect();
-    let field = Field { values: &values, nx: 20, ny: 10, extent: (0.0, 10.0, -1.0, 1.0) };
-    let labels = Labels { title: "Contact pressure", x: "x, mm", y: "y, mm" };
+    let field = Field {
+        values: &values,
+        nx: 20,
+        ny: 10,
+        extent: (0.0, 10.0, -1.0, 1.0),
+    };
+    let labels = Labels {
+        title: "Contact pressure",
+        x: "x, mm",
+        y: "y, mm",
+    };
     map_plot(
         &dir.join("pressure.svg"),
         &labels,
         &field,
-        &MapLabels { value: "pressure, MPa", outline: &[] },
+        &MapLabels {
+            value: "pressure, MPa",
+            outline: &[],
+        },
     )
     .unwrap();
     heat_map(&dir.join("old.svg"), &labels, &field).unwrap();
-    for (file, label) in [("pressure.svg", "pressure, MPa"), ("old.svg", "Contact pressure")] {
+    for (file, label) in [
+        ("pressure.svg", "pressure, MPa"),
+        ("old.svg", "Contact pressure"),
+    ] {
         let svg = std::fs::read_to_string(dir.join(file)).unwrap();
         assert_readable(&svg);
-        assert!(svg.starts_with("<svg class=\"rolldyn-plot heat-map\""), "{svg}");
+        assert!(
+            svg.starts_with("<svg class=\"rolldyn-plot heat-map\""),
+            "{svg}"
+        );
         assert_eq!(svg.matches("<g class=\"colour-bar\"").count(), 1);
         assert!(has_text(&svg, label));
     }
@@ -88,13 +118,25 @@ fn every_map_has_a_labelled_colour_bar() {
 fn orbits_are_drawn_to_equal_aspect_with_their_circle() {
     let dir = scratch("orbit");
     let path = dir.join("cage_orbit.svg");
-    let orbit: Vec<(f64, f64)> =
-        (0..50).map(|k| ((k as f64 * 0.3).cos() * 40.0, (k as f64 * 0.3).sin() * 10.0)).collect();
+    let orbit: Vec<(f64, f64)> = (0..50)
+        .map(|k| ((k as f64 * 0.3).cos() * 40.0, (k as f64 * 0.3).sin() * 10.0))
+        .collect();
     orbit_plot(
         &path,
-        &Labels { title: "Cage centre orbit", x: "x, µm", y: "y, µm" },
-        &[Series { label: "cage centre", points: &orbit }],
-        &[ClearanceCircle { label: "land clearance", centre: (0.0, 0.0), radius: 200.0 }],
+        &Labels {
+            title: "Cage centre orbit",
+            x: "x, µm",
+            y: "y, µm",
+        },
+        &[Series {
+            label: "cage centre",
+            points: &orbit,
+        }],
+        &[ClearanceCircle {
+            label: "land clearance",
+            centre: (0.0, 0.0),
+            radius: 200.0,
+        }],
     )
     .unwrap();
     let svg = std::fs::read_to_string(&path).unwrap();
@@ -114,14 +156,25 @@ fn sweep_plots_use_the_varied_parameter_or_the_variant_names() {
         "cage_slip_mean per variant",
         "cage_slip_mean",
         &names,
-        &[Varied { column: "roller.count", values: &count }],
+        &[Varied {
+            column: "roller.count",
+            values: &count,
+        }],
         &slip,
     )
     .unwrap();
     let svg = std::fs::read_to_string(dir.join("numeric.svg")).unwrap();
     assert!(has_text(&svg, "roller.count"), "{svg}");
     assert!(!svg.contains("order in the sweep file"));
-    variant_plot(&dir.join("names.svg"), "slip", "cage_slip_mean", &names, &[], &slip).unwrap();
+    variant_plot(
+        &dir.join("names.svg"),
+        "slip",
+        "cage_slip_mean",
+        &names,
+        &[],
+        &slip,
+    )
+    .unwrap();
     let svg = std::fs::read_to_string(dir.join("names.svg")).unwrap();
     assert_readable(&svg);
     for name in &names {

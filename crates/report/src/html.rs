@@ -17,7 +17,10 @@ const SEED_TABLE: [(&str, &[(&str, &str)]); 6] = [
     (
         "Cage",
         &[
-            ("cage_slip_mean", "cage slip (mean), fraction 1 − ω_c/ω_epicyclic"),
+            (
+                "cage_slip_mean",
+                "cage slip (mean), fraction 1 − ω_c/ω_epicyclic",
+            ),
             ("cage_speed_mean_rad_s", "cage speed (mean)"),
             ("epicyclic_cage_speed_rad_s", "epicyclic cage speed"),
         ],
@@ -140,7 +143,11 @@ fn navigation(folder: &OutputFolder) -> String {
     if folder.sweep.is_some() {
         links.push(("variants", "Variants"));
     }
-    links.extend([("plots", "Plots"), ("inputs", "Inputs"), ("tables", "Tables")]);
+    links.extend([
+        ("plots", "Plots"),
+        ("inputs", "Inputs"),
+        ("tables", "Tables"),
+    ]);
     let items: Vec<String> = links
         .iter()
         .map(|(id, label)| format!("<a href=\"#{id}\">{label}</a>"))
@@ -156,7 +163,10 @@ const HEADLINES: [(RunKind, &[(&str, &str)]); 4] = [
             ("cage_slip_mean", "cage slip (mean), fraction"),
             ("cage_speed_mean_rad_s", "cage speed (mean)"),
             ("epicyclic_cage_speed_rad_s", "epicyclic cage speed"),
-            ("max_inner_contact_force_n", "largest roller – inner raceway force"),
+            (
+                "max_inner_contact_force_n",
+                "largest roller – inner raceway force",
+            ),
             ("max_roller_cage_force_n", "largest roller – cage force"),
             ("max_cage_land_force_n", "largest cage – land force"),
             ("min_scuffing_margin", "scuffing margin s_cr/s (min)"),
@@ -169,8 +179,14 @@ const HEADLINES: [(RunKind, &[(&str, &str)]); 4] = [
             ("life_h", "operating time worn"),
             ("stop", "stopped by"),
             ("clearance_increase_m", "radial clearance increase"),
-            ("max_depth_m.inner_raceway", "largest wear depth, inner raceway"),
-            ("max_depth_m.outer_raceway", "largest wear depth, outer raceway"),
+            (
+                "max_depth_m.inner_raceway",
+                "largest wear depth, inner raceway",
+            ),
+            (
+                "max_depth_m.outer_raceway",
+                "largest wear depth, outer raceway",
+            ),
             ("max_depth_m.roller", "largest wear depth, roller"),
             ("max_depth_m.cage_bar", "largest wear depth, cage bar"),
         ],
@@ -182,7 +198,10 @@ const HEADLINES: [(RunKind, &[(&str, &str)]); 4] = [
             ("endurance_margin", "endurance margin"),
             ("max_stress_pa", "largest fillet stress"),
             ("critical_location", "critical fillet"),
-            ("extrapolated_life_revolutions", "extrapolated life, revolutions"),
+            (
+                "extrapolated_life_revolutions",
+                "extrapolated life, revolutions",
+            ),
             ("cage_speed_rpm", "cage speed"),
         ],
     ),
@@ -243,7 +262,10 @@ fn headline_section(folder: &OutputFolder) -> String {
             );
         }
     }
-    let _ = write!(html, "<div class=\"headline\">\n{cards}</div>\n</section>\n");
+    let _ = write!(
+        html,
+        "<div class=\"headline\">\n{cards}</div>\n</section>\n"
+    );
     html
 }
 
@@ -414,7 +436,10 @@ fn summary_section(folder: &OutputFolder) -> String {
             let figure = key
                 .strip_prefix("non_finite.")
                 .map(String::from)
-                .or_else(|| key.find(".non_finite.").map(|at| format!("{}.{}", &key[..at], &key[at + 12..])))?;
+                .or_else(|| {
+                    key.find(".non_finite.")
+                        .map(|at| format!("{}.{}", &key[..at], &key[at + 12..]))
+                })?;
             Some((figure, value.as_str().unwrap_or_default().to_string()))
         })
         .collect();
@@ -532,7 +557,10 @@ fn variants_section(table: &Table, variants: &[crate::folder::Variant]) -> Strin
             variant_anchor(i),
             escape(&variant.name)
         );
-        if let Some(error) = table.field(&table.rows[i], "error").filter(|e| !e.is_empty()) {
+        if let Some(error) = table
+            .field(&table.rows[i], "error")
+            .filter(|e| !e.is_empty())
+        {
             let _ = writeln!(html, "<p class=\"error\">Failed: {}</p>", escape(error));
         }
         html.push_str("<table class=\"figures\">\n");

@@ -102,7 +102,11 @@ fn cage_guidance(folder: &OutputFolder) -> Option<String> {
         if line.starts_with('[') {
             in_cage = line == "[cage]";
         } else if in_cage && let Some(value) = line.strip_prefix("guidance") {
-            let value = value.trim_start().strip_prefix('=')?.trim().trim_matches('"');
+            let value = value
+                .trim_start()
+                .strip_prefix('=')?
+                .trim()
+                .trim_matches('"');
             return Some(value.to_string());
         }
     }

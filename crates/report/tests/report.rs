@@ -103,11 +103,22 @@ fn findings_have_levels_that_fit_the_bearing() {
     );
     let written = report_folder(&healthy).unwrap();
     assert!(written.warnings.is_empty(), "{:?}", written.warnings);
-    assert!(written.findings.iter().any(|f| f.level == Level::Note && f.text.contains("guiding land")));
+    assert!(
+        written
+            .findings
+            .iter()
+            .any(|f| f.level == Level::Note && f.text.contains("guiding land"))
+    );
     let html = std::fs::read_to_string(&written.report).unwrap();
-    assert!(!html.contains("finding error") && !html.contains("finding warning"), "{html}");
+    assert!(
+        !html.contains("finding error") && !html.contains("finding warning"),
+        "{html}"
+    );
     assert!(html.contains("class=\"finding note\""));
-    assert!(html.contains("-0.003100"), "slip shown as the fraction it is: {html}");
+    assert!(
+        html.contains("-0.003100"),
+        "slip shown as the fraction it is: {html}"
+    );
     assert!(html.contains("(the cage centre does not orbit (no whirl))"));
 
     let pressed = simulate_folder(
@@ -158,7 +169,9 @@ fn the_sweep_table_leads_with_the_varied_parameters() {
     let table = &html[html.find("id=\"variants-table\"").unwrap()..];
     let header = &table[..table.find("</thead>").unwrap()];
     let variant = header.find(">variant<").unwrap();
-    let varied = header.find("class=\"varied\" title=\"sort by roller.count\"").unwrap();
+    let varied = header
+        .find("class=\"varied\" title=\"sort by roller.count\"")
+        .unwrap();
     let slip = header.find(">cage_slip_mean<").unwrap();
     assert!(variant < varied && varied < slip, "{header}");
     assert!(html.contains("roller.count"));
