@@ -79,6 +79,40 @@ pub fn nice_step(span: f64, ticks: usize) -> f64 {
     nice * decade
 }
 
+/// Text of a tick at `value` on an axis from `lo` to `hi` (about ten ticks): as many digits as
+/// tell neighbouring ticks apart, trailing zeros dropped, exponent form for magnitudes below
+/// 10⁻³ or from 10⁶.
+pub fn tick_label(value: f64, lo: f64, hi: f64) -> String {
+    let step = ((hi - lo) / 10.0).abs();
+    if value == 0.0 || !value.is_finite() || !(step > 0.0) {
+        return if value == 0.0 {
+            "0".into()
+        } else {
+            format!("{value}")
+        };
+    }
+    if value.abs() < step * 1e-6 {
+        return "0".into();
+    }
+    let magnitude = lo.abs().max(hi.abs());
+    if !(1e-3..1e6).contains(&magnitude) {
+        let digits = ((magnitude / step).log10().ceil() as i32 + 1).clamp(1, 8) as usize;
+        let text = format!("{value:.prec$e}", prec = digits - 1);
+        let (mantissa, exponent) = text.split_once('e').unwrap_or((&text, "0"));
+        return format!("{}e{exponent}", trimmed(mantissa));
+    }
+    let decimals = (-step.log10().floor() as i32 + 1).clamp(0, 12) as usize;
+    trimmed(&format!("{value:.decimals$}"))
+}
+
+/// A decimal number without trailing zeros (nor a trailing point).
+fn trimmed(text: &str) -> String {
+    match text.contains('.') {
+        true => text.trim_end_matches('0').trim_end_matches('.').to_string(),
+        false => text.to_string(),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -104,6 +138,17 @@ mod tests {
         let ((x0, x1), (y0, y1)) = equal_aspect((-1.0, 1.0), (-3.0, 3.0), 1.5, 0.0);
         assert!(((x1 - x0) / (y1 - y0) - 1.5).abs() < 1e-12);
         assert!(y0 <= -3.0 && y1 >= 3.0 && x0 <= -1.0 && x1 >= 1.0);
+    }
+
+    #[test]
+    fn tick_labels_tell_neighbours_apart() {
+        assert_eq!(tick_label(392.5, 391.0, 394.0), "392.5");
+        assert_eq!(tick_label(200.0, 0.0, 700.0), "200");
+        assert_eq!(tick_label(2.5e-5, 0.0, 5.5e-5), "2.5e-5");
+        assert_eq!(tick_label(3e-5, 0.0, 5.5e-5), "3e-5");
+        assert_eq!(tick_label(0.0035, -0.005, 0.0), "0.0035");
+        assert_eq!(tick_label(1e-18, -1.0, 1.0), "0");
+        assert_eq!(tick_label(1.5e6, 0.0, 2e6), "1.5e6");
     }
 
     #[test]

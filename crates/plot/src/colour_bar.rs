@@ -34,13 +34,8 @@ fn escaped(text: &str) -> String {
 }
 
 /// A tick value in at most four significant digits.
-fn tick(value: f64, step: f64) -> String {
-    let magnitude = value.abs().max(step.abs());
-    if magnitude != 0.0 && !(1e-3..1e5).contains(&magnitude) {
-        return format!("{value:.2e}");
-    }
-    let decimals = (-step.log10().floor()).max(0.0) as usize;
-    format!("{value:.decimals$}")
+fn tick(value: f64, max: f64) -> String {
+    crate::tick_label(value, 0.0, 2.0 * max)
 }
 
 /// SVG markup of a vertical colour bar from `top` to `bottom` (px) whose left edge is at
@@ -81,7 +76,7 @@ pub(crate) fn markup(left: i32, top: i32, bottom: i32, max: f64, label: &str) ->
                 left + WIDTH,
                 left + WIDTH + 5,
                 left + WIDTH + 8,
-                tick(value, step)
+                tick(value, max)
             );
             value += step;
         }
@@ -108,6 +103,8 @@ mod tests {
         assert!(svg.contains(">pressure, MPa</text>"));
         assert!(svg.contains(">0</text>") && svg.contains(">1000</text>"));
         assert!(!svg.contains(">1400</text>"));
-        assert_eq!(tick(0.25, 0.05), "0.25");
+        assert_eq!(tick(0.25, 0.3), "0.25");
+        assert_eq!(tick(0.0, 6e-5), "0");
+        assert_eq!(tick(4e-5, 6e-5), "4e-5");
     }
 }

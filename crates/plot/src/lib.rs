@@ -15,7 +15,7 @@ use std::path::Path;
 mod axes;
 mod colour_bar;
 
-pub use axes::{data_range, nice_step};
+pub use axes::{data_range, nice_step, tick_label};
 
 /// Plotting failed (file system or drawing backend).
 #[derive(Debug, thiserror::Error)]
@@ -128,6 +128,8 @@ pub fn line_plot(path: &Path, labels: &Labels, series: &[Series]) -> Result<(), 
             .map_err(|e| e.to_string())?;
         chart
             .configure_mesh()
+            .x_label_formatter(&|v| tick_label(*v, x0, x1))
+            .y_label_formatter(&|v| tick_label(*v, y0, y1))
             .label_style(("sans-serif", TICK_FONT))
             .axis_desc_style(("sans-serif", AXIS_FONT))
             .x_desc(labels.x)
@@ -197,6 +199,8 @@ pub fn orbit_plot(
             .map_err(|e| e.to_string())?;
         chart
             .configure_mesh()
+            .x_label_formatter(&|v| tick_label(*v, x0, x1))
+            .y_label_formatter(&|v| tick_label(*v, y0, y1))
             .label_style(("sans-serif", TICK_FONT))
             .axis_desc_style(("sans-serif", AXIS_FONT))
             .x_desc(labels.x)
@@ -303,6 +307,8 @@ fn marked_plot(path: &Path, labels: &Labels, points: &[(f64, f64)]) -> Result<()
             .map_err(|e| e.to_string())?;
         chart
             .configure_mesh()
+            .x_label_formatter(&|v| tick_label(*v, x0, x1))
+            .y_label_formatter(&|v| tick_label(*v, y0, y1))
             .label_style(("sans-serif", TICK_FONT))
             .axis_desc_style(("sans-serif", AXIS_FONT))
             .x_desc(labels.x)
@@ -345,6 +351,7 @@ pub fn category_plot(
         };
         chart
             .configure_mesh()
+            .y_label_formatter(&|v| tick_label(*v, y0, y1))
             .disable_x_mesh()
             .x_labels(n)
             .x_label_formatter(&name_of)
@@ -436,6 +443,8 @@ pub fn map_plot(
             .map_err(|e| e.to_string())?;
         chart
             .configure_mesh()
+            .x_label_formatter(&|v| tick_label(*v, x0, x1))
+            .y_label_formatter(&|v| tick_label(*v, y0, y1))
             .disable_mesh()
             .label_style(("sans-serif", TICK_FONT))
             .axis_desc_style(("sans-serif", AXIS_FONT))

@@ -224,9 +224,17 @@ impl WearTables {
             &Series::from_pairs(&rates),
         )?;
         written.push(path);
-        for (name, map) in [
-            ("inner-raceway-map.svg", &depth.inner_map),
-            ("outer-raceway-map.svg", &depth.outer_map),
+        for (name, title, map) in [
+            (
+                "inner-raceway-map.svg",
+                "Inner-raceway wear depth at the end (ring frame)",
+                &depth.inner_map,
+            ),
+            (
+                "outer-raceway-map.svg",
+                "Outer-raceway wear depth at the end (ring frame)",
+                &depth.outer_map,
+            ),
         ] {
             // heat_map stores x fastest: angle along x, axial line along y
             let values: Vec<f64> = map.iter().map(|d| d * UM).collect();
@@ -235,7 +243,7 @@ impl WearTables {
             map_plot(
                 &path,
                 &Labels {
-                    title: "Raceway wear depth at the end (ring frame)",
+                    title,
                     x: "angle, deg",
                     y: "axial position, mm",
                 },
