@@ -262,7 +262,9 @@ pub fn assess(folder: &OutputFolder) -> Warnings {
 
 /// The finding of a cage–land force `land` (N) beside the largest roller–cage force `rollers`
 /// of the same run: a land-guided cage on its land is a note, one pressed on it harder than its
-/// rollers drive it a warning, a cage guided by its rollers touching a land a warning.
+/// rollers drive it a warning (while they drive it at all: with no roller–cage force, as in the
+/// first revolution, the land alone carries the cage), a cage guided by its rollers touching a
+/// land a warning.
 fn land_finding(land: f64, rollers: Option<f64>, guidance: Option<&str>) -> (Level, String) {
     if guidance == Some("rollers") {
         return (
@@ -274,7 +276,7 @@ fn land_finding(land: f64, rollers: Option<f64>, guidance: Option<&str>) -> (Lev
         );
     }
     match rollers {
-        Some(r) if land > CAGE_LAND_TO_ROLLER_FORCE_RATIO * r => (
+        Some(r) if r > 0.0 && land > CAGE_LAND_TO_ROLLER_FORCE_RATIO * r => (
             Level::Warning,
             format!(
                 "cage pressed on its land harder than its rollers drive it: land force up to {} N > largest roller–cage force {} N (land wear and heat)",
@@ -291,10 +293,14 @@ fn land_finding(land: f64, rollers: Option<f64>, guidance: Option<&str>) -> (Lev
                     None => String::new(),
                 },
                 significant(land),
-                rollers.map_or(String::new(), |r| format!(
-                    ", below the largest roller–cage force {} N",
-                    significant(r)
-                ))
+                match rollers {
+                    Some(r) if r > 0.0 => format!(
+                        ", up to the largest roller–cage force {} N",
+                        significant(r)
+                    ),
+                    Some(_) => ", the rollers not yet driving the cage (no roller–cage force: a run too short?)".into(),
+                    None => String::new(),
+                }
             ),
         ),
     }

@@ -139,6 +139,12 @@ fn findings_have_levels_that_fit_the_bearing() {
             .map(|f| f.level)
     };
     assert_eq!(level_of("pressed on its land"), Some(Level::Warning));
+    let undriven = simulate_folder(
+        "undriven",
+        serde_json::json!({"max_cage_land_force_n": 160.0, "max_roller_cage_force_n": 0.0}),
+    );
+    let written = report_folder(&undriven).unwrap();
+    assert!(written.warnings.is_empty(), "{:?}", written.warnings);
     assert_eq!(level_of("max_inner_contact_force_n"), Some(Level::Error));
 }
 
