@@ -64,7 +64,7 @@ pub(crate) fn equal_aspect(
 
 /// A round tick step (1, 2 or 5 × 10ⁿ) giving about `ticks` intervals over `span`.
 pub fn nice_step(span: f64, ticks: usize) -> f64 {
-    if !(span > 0.0) || !span.is_finite() {
+    if span.is_nan() || span <= 0.0 || !span.is_finite() {
         return 1.0;
     }
     let raw = span / ticks.max(1) as f64;
@@ -84,7 +84,7 @@ pub fn nice_step(span: f64, ticks: usize) -> f64 {
 /// 10⁻³ or from 10⁶.
 pub fn tick_label(value: f64, lo: f64, hi: f64) -> String {
     let step = ((hi - lo) / 10.0).abs();
-    if value == 0.0 || !value.is_finite() || !(step > 0.0) {
+    if value == 0.0 || !value.is_finite() || step.is_nan() || step <= 0.0 {
         return if value == 0.0 {
             "0".into()
         } else {
