@@ -194,7 +194,7 @@ const HEADLINES: [(RunKind, &[(&str, &str)]); 4] = [
     (
         RunKind::Fatigue,
         &[
-            ("life_hours", "cage life, h"),
+            ("life_hours", "cage life"),
             ("endurance_margin", "endurance margin"),
             ("max_stress_pa", "largest fillet stress"),
             ("critical_location", "critical fillet"),
@@ -233,10 +233,25 @@ fn headline_section(folder: &OutputFolder) -> String {
             Some(v) => v.clone(),
             None => continue,
         };
+        let text = match (&value, m.summary.get("damage_per_revolution")) {
+            (Value::Null, Some(d)) if key.starts_with("life_") && d.as_f64() == Some(0.0) => {
+                "∞ (no damaging cycle)".to_string()
+            }
+            (Value::Null, _) => match m
+                .summary
+                .get("non_finite")
+                .and_then(|n| n.get(*key))
+                .and_then(Value::as_str)
+            {
+                Some(reason) => format!("— ({reason})"),
+                None => "—".into(),
+            },
+            _ => value_text(key, &value),
+        };
         let _ = writeln!(
             cards,
             "<div class=\"figure-card\"><div class=\"value\">{}</div><div class=\"label\">{}</div></div>",
-            escape(&value_text(key, &value)),
+            escape(&text),
             escape(label)
         );
     }

@@ -20,7 +20,7 @@ pub fn display(key: &str, value: f64) -> String {
 
 /// The factor from SI and the unit a figure named `key` is shown in.
 fn engineering_unit(key: &str) -> (f64, &'static str) {
-    const SUFFIXES: [(&str, f64, &str); 14] = [
+    const SUFFIXES: [(&str, f64, &str); 16] = [
         ("_rad_s", 30.0 / PI, "rpm"),
         ("_m_s", 1.0, "m/s"),
         ("_m_s2", 1.0, "m/s²"),
@@ -30,6 +30,8 @@ fn engineering_unit(key: &str) -> (f64, &'static str) {
         ("_m", 1e6, "µm"),
         ("_s", 1.0, "s"),
         ("_h", 1.0, "h"),
+        ("_hours", 1.0, "h"),
+        ("_revolutions", 1.0, "rev"),
         ("_hz", 1.0, "Hz"),
         ("_deg", 1.0, "°"),
         ("_rpm", 1.0, "rpm"),
@@ -75,6 +77,7 @@ mod tests {
         assert_eq!(display("max_roller_cage_force_n", 0.0), "0 N");
         assert_eq!(significant(1.5e-7), "1.500e-7");
         assert_eq!(display("x", f64::NAN), "—");
+        assert_eq!(display("life_hours", 25000.0), "25000 h");
         assert_eq!(display("max_depth_m.roller", 1.5e-6), "1.500 µm");
         assert_eq!(display("initial_contacts.rib.mean_lambda", 1.5), "1.500");
     }
