@@ -1,20 +1,19 @@
 """rolldyn — roller-bearing dynamics with contact hydrodynamics, wear and cage fatigue.
 
-The analyses of the `rolldyn` program, called in-process: the same inputs (keyword arguments
-named like the command's flags, engineering units as text) and the same numbers.
+The analyses of the rolldyn library, called in-process: keyword arguments named like the
+command line's flags, quantities as SI numbers or text with units, typed results with their
+tables as pandas DataFrames (docs/python.md).
 
 >>> import rolldyn
 >>> m = rolldyn.load_model("examples/2002834.toml")
 >>> run = rolldyn.simulate(m, duration="2rev")
->>> run.summary["cage_slip_mean"]
+>>> run.cage_slip_mean
 """
 
 from . import _native
-from ._commands import InputError, RunError
+from ._core import InputError, RunError
 from .api import (
-    Contact,
     Model,
-    Run,
     check,
     contact,
     ehl_line,
@@ -23,12 +22,16 @@ from .api import (
     journal,
     load_model,
     loads,
+    oils,
+    rainflow,
     report,
     simulate,
     skid,
+    startup,
     traction,
     wear,
 )
+from .results import Contact, Result, Run, Sweep
 from .sweep import read_summary, sweep, write_sweep_file
 
 __version__ = _native.version()
@@ -37,8 +40,10 @@ __all__ = [
     "Contact",
     "InputError",
     "Model",
+    "Result",
     "Run",
     "RunError",
+    "Sweep",
     "check",
     "contact",
     "ehl_line",
@@ -47,10 +52,13 @@ __all__ = [
     "journal",
     "load_model",
     "loads",
+    "oils",
+    "rainflow",
     "read_summary",
     "report",
     "simulate",
     "skid",
+    "startup",
     "sweep",
     "traction",
     "wear",

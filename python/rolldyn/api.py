@@ -1,23 +1,30 @@
-"""The rolldyn analyses from Python: one function per `rolldyn` command, the same inputs (keyword
-arguments named like the command's flags, engineering units as text: ``speed="8163rpm"``; a
-plain number is SI) and the same numbers (the dict `--json` prints)."""
+"""The rolldyn analyses from Python: one function per analysis, keyword arguments named like the
+command line's flags (``radial_load``, ``oil_temperature``), quantities as numbers in SI units or
+as text with their unit (``speed=854.8`` or ``speed="8163 rpm"``), results as objects
+(`rolldyn.Result`: summary attributes and dict, tables as DataFrames, plots).
+
+A misspelt keyword is a `TypeError`; bad input an `InputError` naming the file, line and key; a
+failed run a `RunError`. Long calls (simulate, sweep, wear, fatigue, startup) show a tqdm
+progress bar with ``progress=True`` and stop on Ctrl-C with `KeyboardInterrupt`, keeping what
+they wrote; the GIL is released while they run.
+"""
 
 from __future__ import annotations
 
 import json
 import os
-import tempfile
-from dataclasses import dataclass, field
-from pathlib import Path
-from typing import Any, Callable, Optional, Union
-
-import numpy as np
-import pandas as pd
+from typing import Any, Optional, Sequence, Union
 
 from . import _native
-from ._commands import answer, flags, model_args, native
+from ._core import Progress, Quantity, call, native
+from .results import Contact, Result, Run
 
 PathLike = Union[str, "os.PathLike[str]"]
+
+OIL = ("oil", "oil_file", "strict")
+RIG = ("contact", "radius", "length", "youngs_modulus", "poisson_ratio")
+OPERATING = ("speed", "outer_speed", "radial_load", "axial_load", "load_direction",
+             "oil_temperature", "misalignment")
 
 
 class Model:
@@ -58,8 +65,13 @@ class Model:
 
 
 def load_model(path: Optional[PathLike] = None) -> Model:
-    """Loads a model file; the embedded 2002834 model (seed 000) when `path` is None. Bad input
-    raises `rolldyn.InputError` with `file`, `line`, `key` and `reason`."""
+    """Loads a model file; the embedded 2002834 model (seed 000) when `path` is None.
+
+    Raises
+    ------
+    InputError
+        A bad key, with `file`, `line`, `key` and `reason`.
+    """
     return Model(native(_native.load_model, None if path is None else os.fspath(path)))
 
 
@@ -72,171 +84,578 @@ def as_model(model: ModelLike) -> Model:
     return model if isinstance(model, Model) else load_model(model)
 
 
-@dataclass
-class Run:
-    """A dynamics run: `summary` (the dict of `rolldyn simulate --json`) and its tables —
-    `bearing` (one row per output time), `rollers` (one row per roller and output time) and
-    `revolutions` (one row per cage revolution) — as pandas DataFrames with SI columns."""
+def film(
+    *,
+    load: Quantity,
+    rolling_speed: Quantity,
+    oil: Optional[str] = None,
+    oil_file: Optional[PathLike] = None,
+    strict: bool = False,
+    contact: Optional[str] = None,
+    radius: Optional[Quantity] = None,
+    length: Optional[Quantity] = None,
+    youngs_modulus: Optional[Quantity] = None,
+    poisson_ratio: Optional[float] = None,
+    temperature: Optional[Quantity] = None,
+    roughness: Optional[Sequence[Quantity]] = None,
+    formula: Optional[str] = None,
+    lambda_: Optional[str] = None,
+    starvation: Optional[float] = None,
+    grease: bool = False,
+) -> Result:
+    """Central and minimum film thickness, film parameter Λ and regime of a lubricated contact
+    (`rolldyn film`).
 
-    summary: dict
-    bearing: Optional[pd.DataFrame] = None
-    rollers: Optional[pd.DataFrame] = None
-    revolutions: Optional[pd.DataFrame] = None
-    model: Optional[Model] = field(default=None, repr=False)
+    Parameters
+    ----------
+    load : float or str
+        Normal load of the contact, N (``"1 kN"``).
+    rolling_speed : float or str
+        Rolling (entrainment) speed u, m/s.
+    oil : str, optional
+        Built-in oil (`rolldyn oils`), default ``"pao1-vg320"``.
+    oil_file : path, optional
+        User oil file (TOML), instead of `oil`.
+    strict : bool
+        A temperature outside the oil's range is an error, not a warning.
+    contact : {"ball-on-disc", "line"}, optional
+        The test contact, default ball on disc.
+    radius, length : float or str, optional
+        Ball radius (or reduced radius R′ of a line contact), default 9.5 mm; line length,
+        default 10 mm.
+    youngs_modulus, poisson_ratio : optional
+        Elastic data of both bodies, default 210 GPa and 0.3.
+    temperature : float or str, optional
+        Oil temperature, default 40 °C (K as a number).
+    roughness : sequence of float or str, optional
+        Ra of the two surfaces.
+    formula : str, optional
+        ``"auto"``, ``"rigid-piezoviscous"``, ``"piezoviscous-elastic"``, ``"seed001"``,
+        ``"pan-hamrock"``, ``"hamrock-dowson"``.
+    lambda_ : {"seed000", "tallian"}, optional
+        Definition of Λ.
+    starvation : float, optional
+        Both films multiplied by this factor (1 = flooded).
+    grease : bool
+        Grease lubrication: starvation factor 0.7.
 
-    def plot_cage_speed(self, ax=None):
-        """Cage speed and the epicyclic (no-slip) cage speed against time."""
-        from . import plots
-
-        return plots.cage_speed(self, ax)
-
-    def plot_cage_slip(self, ax=None):
-        """Cage slip against time."""
-        from . import plots
-
-        return plots.cage_slip(self, ax)
-
-    def plot_cage_orbit(self, ax=None):
-        """Cage centre orbit (the cage's whirl in its clearance), μm."""
-        from . import plots
-
-        return plots.cage_orbit(self, ax)
-
-    def plot_roller_forces(self, ax=None, roller: int = 1):
-        """Contact forces of roller `roller` (numbered from 1, as in the tables) against its
-        azimuth."""
-        from . import plots
-
-        return plots.roller_forces(self, ax, roller)
+    Returns
+    -------
+    Result
+        Summary keys: ``oil``, ``central_film_m``, ``min_film_m``, ``lambda``, ``regime``,
+        ``formula``, ``g1``, ``g2``, ``thermal_factor_kp``, ``piezoviscous_elastic_condition``.
+    """
+    options = dict(locals())
+    options["lambda"] = options.pop("lambda_")
+    return call("film", options, Result, groups={"oil": OIL, "rig": RIG})
 
 
-def _table(raw: bytes, columns: list[str]) -> pd.DataFrame:
-    values = np.frombuffer(raw, dtype="<f8").reshape(-1, len(columns))
-    return pd.DataFrame(values, columns=columns)
+def check(model: ModelLike = None, *, speed: Optional[Quantity] = None,
+          outer_speed: Optional[Quantity] = None) -> Result:
+    """Validates a model and gives its derived quantities (`rolldyn check`): geometry,
+    clearances, masses, the cage pocket and its plays, epicyclic speeds.
+
+    Parameters
+    ----------
+    model : Model, path or None
+        The bearing model; None is the embedded 2002834.
+    speed, outer_speed : float or str, optional
+        Ring speeds for the epicyclic speeds (rad/s as numbers), default the model's.
+
+    Returns
+    -------
+    Result
+        Summary keys: {check}.
+    """
+    model = as_model(model)
+    return call("check", dict(speed=speed, outer_speed=outer_speed), Result, model=model)
+
+
+def contact(model: ModelLike = None, *, load: Quantity = "1167N", tilt: Optional[Quantity] = None,
+            cells: Optional[str] = None, width: Optional[Quantity] = None,
+            method: Optional[str] = None, raceway: Optional[str] = None,
+            slice_law: Optional[str] = None, out: Optional[PathLike] = None) -> Contact:
+    """Roller–raceway contact pressure (`rolldyn contact`): Boussinesq solver, slice model or
+    Hertz.
+
+    Parameters
+    ----------
+    model : Model, path or None
+        The bearing whose roller and raceway are pressed together.
+    load : float or str
+        Roller load, N.
+    tilt : float or str, optional
+        Roller tilt relative to the raceway (rad as a number; ``"4arcmin"``).
+    cells : str, optional
+        Boussinesq grid, cells along the roller × across (``"350x9"``).
+    width : float or str, optional
+        Transverse extent of the Boussinesq grid.
+    method : {"boussinesq", "slices", "hertz"}, optional
+    raceway : {"inner", "outer"}, optional
+    slice_law : str, optional
+        Slice law of the slice method.
+    out : path, optional
+        Folder for the pressure map and central line (CSV) and the map's plot.
+
+    Returns
+    -------
+    Contact
+        `pressure`, `x`, `y` (the map as a 2-D array), tables ``pressure_map`` and
+        ``central_line``; summary keys: {contact}.
+    """
+    model = as_model(model)
+    options = dict(load=load, tilt=tilt, cells=cells, width=width, method=method,
+                   raceway=raceway, slice_law=slice_law, out=out)
+    return call("contact", options, Contact, model=model)
+
+
+def oils(*, temperature: Optional[Quantity] = None, oil_file: Optional[PathLike] = None) -> Result:
+    """The lubricant library with each oil's properties at `temperature` (`rolldyn oils`).
+
+    Parameters
+    ----------
+    temperature : float or str, optional
+        Default 40 °C (K as a number).
+    oil_file : path, optional
+        Also list a user oil file.
+
+    Returns
+    -------
+    Result
+        Table ``oils`` (one row per oil); summary keys: {oils}.
+    """
+    return call("oils", dict(temperature=temperature, oil_file=oil_file), Result)
+
+
+def traction(
+    *,
+    oil: Optional[str] = None,
+    oil_file: Optional[PathLike] = None,
+    strict: bool = False,
+    contact: Optional[str] = None,
+    radius: Optional[Quantity] = None,
+    length: Optional[Quantity] = None,
+    youngs_modulus: Optional[Quantity] = None,
+    poisson_ratio: Optional[float] = None,
+    temperature: Union[Quantity, Sequence[Quantity], None] = None,
+    max_pressure: Union[Quantity, Sequence[Quantity], None] = None,
+    rolling_speed: Optional[Quantity] = None,
+    slip_max: Optional[float] = None,
+    points: Optional[int] = None,
+    rheology: Optional[str] = None,
+    out: Optional[PathLike] = None,
+) -> Result:
+    """Muraki thermal EHL traction curve, critical slip (scuffing criterion) and film of a
+    lubricated contact (`rolldyn traction`); a list of temperatures or maximum pressures gives
+    a family of curves.
+
+    Parameters
+    ----------
+    oil, oil_file, strict, contact, radius, length, youngs_modulus, poisson_ratio
+        The oil and the test contact, as in `film`.
+    temperature : float, str or a sequence of them, optional
+        Default 40 °C.
+    max_pressure : float, str or a sequence of them, optional
+        Maximum Hertz pressure, default 1 GPa.
+    rolling_speed : float or str, optional
+    slip_max : float, optional
+        Largest slide-to-roll ratio of the curve.
+    points : int, optional
+        Points of the curve.
+    rheology : {"visco-elastic", "isothermal", "linear-elastic"}, optional
+    out : path, optional
+        Folder for the curves (CSV) and their plot.
+
+    Returns
+    -------
+    Result
+        Tables ``traction`` (the curves) and ``cases``; summary keys: {traction}.
+    """
+    options = dict(locals())
+    for key in ("temperature", "max_pressure"):
+        if options[key] is not None and not isinstance(options[key], (list, tuple)):
+            options[key] = [options[key]]
+    return call("traction", options, Result, groups={"oil": OIL, "rig": RIG})
+
+
+def report(folder: PathLike) -> Result:
+    """Writes the HTML report of an output folder of `simulate`, `sweep`, `wear` or `fatigue`
+    (`rolldyn report`, docs/outputs.md).
+
+    Returns
+    -------
+    Result
+        Summary keys: {report}.
+    """
+    return call("report", dict(dir=folder), Result)
+
+
+def skid(model: ModelLike = None, *, speed=None, outer_speed=None, radial_load=None,
+         temperatures=None, friction: Optional[str] = None, cage_land: Optional[str] = None,
+         out: Optional[PathLike] = None) -> Result:
+    """Quasi-static roller and cage skidding (`rolldyn skid`, seed 001), at one point or over a
+    range of speed or load.
+
+    Parameters
+    ----------
+    model : Model, path or None
+    speed, outer_speed, radial_load : float, str or range, optional
+        One value (``"4000rpm"``) or a range ``"100N..700N:50N"`` (one of them).
+    temperatures : str, optional
+        Part temperatures.
+    friction : {"muraki", "seed001"}, optional
+    cage_land : {"finite", "short"}, optional
+    out : path, optional
+
+    Returns
+    -------
+    Result
+        Summary keys: {skid}; a range gives the table of its points, the varied variable
+        first.
+    """
+    model = as_model(model)
+    options = dict(speed=speed, outer_speed=outer_speed, radial_load=radial_load,
+                   temperatures=temperatures, friction=friction, cage_land=cage_land, out=out)
+    return call("skid", options, Result, model=model)
+
+
+def loads(model: ModelLike, *, speed=None, outer_speed=None, radial_load=None, axial_load=None,
+          load_direction: Optional[str] = None, oil_temperature=None, misalignment=None,
+          moment=None, row_offset: Optional[float] = None,
+          out: Optional[PathLike] = None) -> Result:
+    """Quasi-static load distribution of a double-row tapered bearing (`rolldyn loads`): roller
+    and rib loads and load zones per row.
+
+    Parameters
+    ----------
+    model : Model or path
+        A double-row tapered bearing.
+    speed, outer_speed, radial_load, axial_load, load_direction, oil_temperature, misalignment
+        Overrides of the model's operating point.
+    moment : float or str, optional
+        Tilting moment, N·m.
+    row_offset : float, optional
+    out : path, optional
+
+    Returns
+    -------
+    Result
+        Summary keys: {loads}.
+    """
+    model = as_model(model)
+    options = dict(locals())
+    options.pop("model")
+    return call("loads", options, Result, model=model, groups={"operating": OPERATING})
+
+
+def journal(*, file: Optional[PathLike] = None, radius=None, length=None, clearance=None,
+            viscosity=None, speed=None, eccentricity: Optional[float] = None, load=None,
+            temperature=None, cavitation: Optional[str] = None, grid: Optional[str] = None,
+            film_start: Optional[str] = None, no_coefficients: bool = False,
+            out: Optional[PathLike] = None) -> Result:
+    """Finite journal bearing by the Reynolds equation (`rolldyn journal`): load, attitude,
+    friction, stiffness and damping, from keyword arguments or a journal file.
+
+    Parameters
+    ----------
+    file : path, optional
+        A journal file (examples/journal/), instead of the geometry arguments.
+    radius, length, clearance, viscosity, speed : float or str
+    eccentricity : float, optional
+        Eccentricity ratio (or give `load`).
+    load : float or str, optional
+    temperature : float or str, optional
+    cavitation : {"reynolds", "jfo", "none"}, optional
+    grid : str, optional
+        ``"72x24"``.
+    film_start : {"max-gap", "free"}, optional
+    no_coefficients : bool
+        Skip the stiffness and damping coefficients.
+    out : path, optional
+
+    Returns
+    -------
+    Result
+        Summary keys: {journal}.
+    """
+    return call("journal", dict(locals()), Result)
+
+
+def ehl_line(*, radius, viscosity, rolling_speed, min_film=None, load_per_length=None,
+             piezo=None, law: Optional[str] = None, density: Optional[str] = None,
+             elastic: Optional[str] = None, modulus=None, poisson: Optional[float] = None,
+             squeeze_velocity=None, nodes: Optional[int] = None, step_to=None, duration=None,
+             contact_length=None, mass=None, out: Optional[PathLike] = None) -> Result:
+    """Lubricated roller–plate line contact: rigid, piezoviscous or full EHL, and load steps
+    (`rolldyn ehl-line`).
+
+    Parameters
+    ----------
+    radius, viscosity, rolling_speed : float or str
+    min_film, load_per_length : float or str, optional
+        The film (or the load) to solve for.
+    piezo : float or str, optional
+        Pressure–viscosity coefficient α.
+    law : {"barus", "roelands"}, optional
+    density : {"incompressible", "dowson-higginson"}, optional
+    elastic : str, optional
+    modulus, poisson : optional
+    squeeze_velocity, nodes, step_to, duration, contact_length, mass : optional
+        The transient load step.
+    out : path, optional
+
+    Returns
+    -------
+    Result
+        Summary keys: {ehl_line}.
+    """
+    return call("ehl-line", dict(locals()), Result)
 
 
 def simulate(
     model: ModelLike = None,
-    duration: str = "2rev",
-    speed: Optional[str] = None,
-    radial_load: Optional[str] = None,
     *,
+    duration: Union[str, float] = "2rev",
+    speed: Optional[Quantity] = None,
+    outer_speed: Optional[Quantity] = None,
+    radial_load: Optional[Quantity] = None,
+    axial_load: Optional[Quantity] = None,
+    load_direction: Optional[str] = None,
+    oil_temperature: Optional[Quantity] = None,
+    misalignment: Optional[Quantity] = None,
+    output_step: Optional[Quantity] = None,
+    max_output: Optional[str] = None,
+    tolerance: Optional[float] = None,
+    integrator: Optional[str] = None,
+    checkpoint: Optional[PathLike] = None,
+    checkpoint_interval: Optional[Union[str, float]] = None,
+    resume: Optional[PathLike] = None,
+    out: Optional[PathLike] = None,
+    report: bool = False,
+    cage_loads: Optional[PathLike] = None,
+    row_offset: Optional[float] = None,
     tables: bool = True,
-    progress: Optional[Callable[[float, float], Any]] = None,
-    **options: Any,
+    progress: Progress = None,
 ) -> Run:
-    """Time-domain 6-DOF dynamics (`rolldyn simulate`): `duration` in cage revolutions (``"20rev"``)
-    or time (``"0.2s"``); further flags as keyword arguments (``outer_speed``, ``axial_load``,
-    ``misalignment``, ``oil_temperature``, ``output_step``, ``tolerance``, ``integrator``,
-    ``out``, ``row_offset``, …).
+    """Time-domain 6-DOF dynamics of the bearing (`rolldyn simulate`).
 
-    `progress(fraction, simulated_time_s)` is called every 0.1 s of wall time; the GIL is released
-    while the run goes on, and Ctrl-C stops it at its last accepted step (KeyboardInterrupt).
-    With `tables` the run keeps its time series in memory (a double-row tapered bearing keeps
-    none: give ``out=`` for its table, ``tapered.csv``).
+    Parameters
+    ----------
+    model : Model, path or None
+        The bearing model; None is the embedded 2002834.
+    duration : str or float
+        Cage revolutions (``"20rev"``) or a time (``"0.2s"``; seconds as a number).
+    speed, outer_speed, radial_load, axial_load, load_direction, oil_temperature, misalignment
+        Overrides of the model's operating point (SI numbers or text with units).
+    output_step : float or str, optional
+        Sampling step of the tables, default 0.05 ms.
+    max_output : str, optional
+        Largest size of the output folder (``"2GB"``).
+    tolerance : float, optional
+        Relative error tolerance of the integrator.
+    integrator : {"dopri5", "rosenbrock-w"}, optional
+    checkpoint, checkpoint_interval, resume : optional
+        Write a checkpoint file every interval; resume from one.
+    out : path, optional
+        Output folder (tables as CSV and Parquet, plots, run.json).
+    report : bool
+        Write ``out/report.html`` at the end.
+    cage_loads : path, optional
+        Export the cage loads of one steady revolution (for `fatigue`).
+    row_offset : float, optional
+        Second row of a double-row tapered bearing.
+    tables : bool
+        Keep the time series in memory as DataFrames (`bearing`, `rollers`, `revolutions`; a
+        double-row tapered bearing keeps none: give `out`).
+    progress : bool or callable, optional
+        True shows a tqdm bar; a function is called as ``progress(fraction, simulated_time_s)``
+        every 0.1 s. Ctrl-C (or an exception in `progress`) stops the run at its last accepted
+        step and raises KeyboardInterrupt (or that exception).
+
+    Returns
+    -------
+    Run
+        Tables ``bearing``, ``rollers``, ``revolutions``; summary keys: {simulate}.
     """
     model = as_model(model)
-    args = ["simulate"] + model_args(model) + flags(
-        duration=duration, speed=speed, radial_load=radial_load, quiet=True, json=True, **options
-    )
-    text, raw = native(_native.simulate, args, model._native, tables, progress)
-    run = Run(summary=json.loads(text), model=model)
-    if raw is not None and len(raw[0]) > 0:
-        bearing, rollers, revolutions = _native.table_columns()
-        run.bearing = _table(raw[0], bearing)
-        run.rollers = _table(raw[1], rollers)
-        run.revolutions = _table(raw[2], revolutions)
-    return run
+    options = dict(locals())
+    for name in ("model", "tables", "progress"):
+        options.pop(name)
+    options["keep_tables"] = tables
+    return call("simulate", options, Run, model=model, groups={"operating": OPERATING},
+                progress=progress)
 
 
-def skid(model: ModelLike = None, **options: Any) -> dict:
-    """Quasi-static roller and cage skidding (`rolldyn skid`, seed 001): ``speed``,
-    ``radial_load`` (one value or a ``"100N..700N:50N"`` sweep), ``outer_speed``,
-    ``temperatures``, ``friction``, ``cage_land``, ``out``."""
-    return answer(["skid"], as_model(model), **options)
+def wear(
+    model: ModelLike = None,
+    *,
+    speed=None, outer_speed=None, radial_load=None, axial_load=None,
+    load_direction: Optional[str] = None, oil_temperature=None, misalignment=None,
+    life: Optional[Quantity] = None,
+    period: Optional[Quantity] = None,
+    method: Optional[str] = None,
+    revolutions: Optional[int] = None,
+    settle: Optional[int] = None,
+    pressure: Optional[str] = None,
+    exposure_width: Optional[str] = None,
+    seed_literal_hardness: bool = False,
+    max_clearance_increase: Optional[Quantity] = None,
+    max_depth: Optional[Quantity] = None,
+    window_settle: Optional[Quantity] = None,
+    window: Optional[Quantity] = None,
+    out: Optional[PathLike] = None,
+    report: bool = False,
+    progress: Progress = None,
+) -> Result:
+    """Archard wear of raceways, rollers, cage bars, roller ends and ribs over the bearing's
+    life, fed back into the geometry each period (`rolldyn wear`).
 
+    Parameters
+    ----------
+    model : Model, path or None
+    speed, outer_speed, radial_load, axial_load, load_direction, oil_temperature, misalignment
+        Overrides of the model's operating point.
+    life : float or str, optional
+        Life to reach, default 25 000 h (s as a number).
+    period : float or str, optional
+        Wear period, default 1905 h, or ``"auto"``.
+    method : {"direct", "averaged"}, optional
+    revolutions, settle : int, optional
+        Cage revolutions recorded per period, and run and discarded before.
+    pressure : {"slices", "boussinesq"}, optional
+    exposure_width : {"full", "half"}, optional
+    seed_literal_hardness : bool
+    max_clearance_increase, max_depth : float or str, optional
+        Stop criteria.
+    window_settle, window : float or str, optional
+        Dynamics windows of a tapered bearing.
+    out : path, optional
+        Output folder, default ``out/<model>-wear``.
+    report : bool
+        Write ``out/report.html`` at the end.
+    progress : bool or callable, optional
+        Per period; Ctrl-C stops after the running period, keeping what was written.
 
-def check(model: ModelLike = None, **options: Any) -> dict:
-    """Validates a model and returns its derived quantities (`rolldyn check`)."""
-    return answer(["check"], as_model(model), **options)
-
-
-def loads(model: ModelLike, **options: Any) -> dict:
-    """Quasi-static load distribution of a double-row tapered bearing (`rolldyn loads`)."""
-    return answer(["loads"], as_model(model), **options)
-
-
-@dataclass
-class Contact:
-    """A roller–raceway contact (`rolldyn contact`): `summary` (the `--json` dict) and the
-    pressure map `pressure` [Pa] on the cell grid `x` (along the roller) × `y` (rolling
-    direction), m: ``pressure[j, i]`` at ``(x[i], y[j])``; None for the Hertz method."""
-
-    summary: dict
-    pressure: Optional[np.ndarray]
-    x: Optional[np.ndarray]
-    y: Optional[np.ndarray]
-
-
-def contact(model: ModelLike = None, load: Union[str, float] = "1167N", **options: Any) -> Contact:
-    """Roller–raceway contact pressure (`rolldyn contact`): ``load``, ``tilt``, ``cells``
-    (``"350x9"``), ``method`` (boussinesq, slices, hertz), ``raceway``, ``slice_law``."""
+    Returns
+    -------
+    Result
+        Table ``periods``; summary keys: {wear}.
+    """
     model = as_model(model)
-    with tempfile.TemporaryDirectory() as scratch:
-        out = options.pop("out", None) or scratch
-        summary = answer(["contact"], model, load=load, out=out, **options)
-        path = Path(out) / "pressure_map.csv"
-        if not path.exists():
-            return Contact(summary, None, None, None)
-        cells = pd.read_csv(path)
-    x = np.unique(cells["x_m"].to_numpy())
-    y = np.unique(cells["y_m"].to_numpy())
-    pressure = cells["pressure_pa"].to_numpy().reshape(len(y), len(x))
-    return Contact(summary, pressure, x, y)
+    options = dict(locals())
+    for name in ("model", "progress"):
+        options.pop(name)
+    return call("wear", options, Result, model=model, groups={"operating": OPERATING},
+                progress=progress)
 
 
-def traction(**options: Any) -> dict:
-    """Muraki thermal EHL traction curve, critical slip and film (`rolldyn traction`): ``oil``,
-    ``temperature``, ``max_pressure``, ``rolling_speed``, ``contact``, ``radius``, ``length``,
-    ``rheology``, ``temperatures``/``max_pressures`` for families of curves."""
-    return answer(["traction"], **options)
+def fatigue(
+    model: ModelLike = None,
+    *,
+    speed=None, outer_speed=None, radial_load=None, axial_load=None,
+    load_direction: Optional[str] = None, oil_temperature=None, misalignment=None,
+    stress: Optional[str] = None,
+    revolutions: Optional[int] = None,
+    inclusion: Optional[str] = None,
+    mean_stress: Optional[str] = None,
+    fillet_radius: Optional[Quantity] = None,
+    stress_concentration: Optional[Sequence[float]] = None,
+    sn_curve: Optional[PathLike] = None,
+    coating_factor: Optional[float] = None,
+    safety_factor: Optional[float] = None,
+    below_knee: Optional[str] = None,
+    loads: Optional[PathLike] = None,
+    out: Optional[PathLike] = None,
+    report: bool = False,
+    cache: Optional[PathLike] = None,
+    progress: Progress = None,
+) -> Result:
+    """Cage high-cycle fatigue from one steady revolution of the dynamics (`rolldyn fatigue`):
+    frame or CalculiX stresses, rainflow, S–N, Miner, inclusion.
+
+    Parameters
+    ----------
+    model : Model, path or None
+    speed, outer_speed, radial_load, axial_load, load_direction, oil_temperature, misalignment
+        Overrides of the model's operating point.
+    stress : {"frame", "calculix"}, optional
+    revolutions : int, optional
+        Cage revolutions run before the recorded one.
+    inclusion : {"debonded", "bonded"}, optional
+    mean_stress : {"none", "goodman", "gerber", "swt"}, optional
+    fillet_radius : float or str, optional
+    stress_concentration : pair of float, optional
+    sn_curve : path, optional
+    coating_factor, safety_factor : float, optional
+    below_knee : {"no-damage", "extrapolate", "haibach"}, optional
+    loads : path, optional
+        A cage-load export (`simulate(cage_loads=...)`) instead of a dynamics run.
+    out : path, optional
+    report : bool
+    cache : path, optional
+        Cache folder of the CalculiX unit cases.
+    progress : bool or callable, optional
+        Per stage (dynamics, stresses, damage, files); Ctrl-C stops the dynamics run.
+
+    Returns
+    -------
+    Result
+        Summary keys: {fatigue}.
+    """
+    model = as_model(model) if loads is None else None
+    options = dict(locals())
+    for name in ("model", "progress"):
+        options.pop(name)
+    return call("fatigue", options, Result, model=model, groups={"operating": OPERATING},
+                progress=progress)
 
 
-def film(**options: Any) -> dict:
-    """Central and minimum film, Λ and regime of a contact (`rolldyn film`)."""
-    return answer(["film"], **options)
+def rainflow(history: PathLike, *, column: Optional[str] = None, periodic: bool = False) -> Result:
+    """Rainflow count of a stress history (`rolldyn fatigue rainflow`).
+
+    Parameters
+    ----------
+    history : path
+        A CSV file with a stress column.
+    column : str, optional
+        The column to count, default the last.
+    periodic : bool
+        Count the history as one period of a repeated signal.
+
+    Returns
+    -------
+    Result
+        Table ``cycles``; summary keys: {rainflow}.
+    """
+    return call("rainflow", dict(history=history, column=column, periodic=periodic), Result)
 
 
-def journal(file: Optional[PathLike] = None, **options: Any) -> dict:
-    """Finite journal bearing by the Reynolds equation (`rolldyn journal`), from flags or a
-    journal file (``file="examples/journal/seed002-ch4.toml"``)."""
-    if file is not None:
-        options["file"] = os.fspath(file)
-    return answer(["journal"], **options)
+def startup(model: ModelLike, *, jobs: Optional[int] = None, revolutions: Optional[float] = None,
+            average: Optional[float] = None, points: Optional[Sequence[str]] = None,
+            out: Optional[PathLike] = None, progress: Progress = None) -> Result:
+    """Engine start-up: the dynamics at the frozen time points of the model's schedules
+    (`rolldyn startup`).
 
+    Parameters
+    ----------
+    model : Model or path
+        A model with speed and load schedules.
+    jobs : int, optional
+        Parallel jobs, default all cores.
+    revolutions, average : float, optional
+        Cage revolutions per point, and the last ones averaged.
+    points : sequence of str, optional
+        Run only these points, by label.
+    out : path, optional
+    progress : bool or callable, optional
+        Per finished point; Ctrl-C starts no new points.
 
-def ehl_line(**options: Any) -> dict:
-    """Lubricated roller–plate line contact: rigid, piezoviscous or full EHL, load steps
-    (`rolldyn ehl-line`)."""
-    return answer(["ehl-line"], **options)
-
-
-def wear(model: ModelLike = None, **options: Any) -> dict:
-    """Archard wear over the bearing's life, fed back into the geometry each period
-    (`rolldyn wear`): ``life``, ``period``, ``method``, ``pressure``, ``revolutions``, ``out``
-    (default ``out/<model>-wear``), …"""
-    return answer(["wear"], as_model(model), quiet=True, **options)
-
-
-def fatigue(model: ModelLike = None, **options: Any) -> dict:
-    """Cage high-cycle fatigue (`rolldyn fatigue`): ``stress`` (frame, calculix), ``revolutions``,
-    ``misalignment``, ``inclusion``, ``out``, …"""
-    return answer(["fatigue"], as_model(model), **options)
-
-
-def report(folder: PathLike) -> dict:
-    """Writes the HTML report of an output folder of `simulate`, `sweep`, `wear` or `fatigue`
-    (`rolldyn report`, docs/outputs.md): ``{"report": path of report.html, "kind": …,
-    "warnings": [...]}``. ``report=True`` beside ``out=`` in those functions writes it at the end
-    of the run."""
-    return answer(["report", os.fspath(folder)])
+    Returns
+    -------
+    Result
+        Tables ``startup`` and ``startup_revolutions``; summary keys: {startup}.
+    """
+    model = as_model(model)
+    options = dict(jobs=jobs, revolutions=revolutions, average=average,
+                   points=None if points is None else list(points), out=out)
+    return call("startup", options, Result, model=model, progress=progress)

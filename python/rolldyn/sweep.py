@@ -11,7 +11,8 @@ from typing import Any, Optional, Union
 import pandas as pd
 
 from . import _native
-from ._commands import flags, native
+from ._core import Progress, call, native
+from .results import Sweep
 
 
 def _toml_value(value: Any) -> str:
@@ -64,9 +65,9 @@ def write_sweep_file(
 def _run_shard(sweep_file: str, out: str, shard: int, shards: int, resume: bool) -> str:
     """One Dask task: variant `shard` of `shards` (1-based) of the sweep, stored in
     `out/variants/`; summary.* are left to the collection."""
-    args = ["sweep", sweep_file, "--out", out, "--shard", f"{shard}/{shards}", "--jobs", "1",
-            "--no-collect", "--quiet"] + flags(resume=resume)
-    native(_native.answer, args, None)
+    request = dict(sweep=sweep_file, out=out, shard=f"{shard}/{shards}", jobs=1,
+                   no_collect=True, resume=resume)
+    call("sweep", request, Sweep)
     return f"{shard}/{shards}"
 
 
@@ -80,20 +81,40 @@ def sweep(
     report: bool = False,
     model: Optional[Union[str, os.PathLike]] = None,
     analysis: str = "simulate",
+    progress: Progress = None,
     **settings: Optional[str],
-) -> pd.DataFrame:
-    """Runs a sweep and returns its summary (`summary.csv` of `rolldyn sweep`: ``variant``,
-    ``index``, the figures in SI, ``error``) as a DataFrame.
+) -> Sweep:
+    """Runs a sweep (`rolldyn sweep`, docs/sweep-format.md) and returns its result.
 
-    `sweep_file_or_table` is a sweep file, or a DataFrame of variants (see `write_sweep_file`;
-    then give the base `model`, the `analysis` and its `settings`). Without `client` the variants
-    run in parallel on this machine (`jobs`, default all cores). With a
-    `dask.distributed.Client`, each variant is one Dask task on that cluster (its workers must
-    see the input files and `out` at the same paths: a shared file system, as on a Slurm
-    cluster); the summary is then collected here, and is the same, bit for bit apart from the
-    wall times, as that of `rolldyn sweep` on one machine. Results go to `out` (default
-    ``out/<sweep file name>``); `resume` skips variants already finished from the same inputs;
-    `report` writes the HTML report ``out/report.html`` at the end.
+    Parameters
+    ----------
+    sweep_file_or_table : path or DataFrame
+        A sweep file, or a DataFrame of variants (see `write_sweep_file`; then give the base
+        `model`, the `analysis` and its `settings`: ``duration``, ``discard``, ``period``,
+        ``method``).
+    client : dask.distributed.Client, optional
+        Run each variant as one Dask task on that cluster (its workers must see the input
+        files and `out` at the same paths: a shared file system, as on a Slurm cluster); the
+        summary is then collected here and is the same, bit for bit apart from the wall times,
+        as that of `rolldyn sweep` on one machine. Without it the variants run in parallel here.
+    out : path, optional
+        Output folder, default ``out/<sweep file name>``.
+    jobs : int, optional
+        Parallel jobs on this machine, default all cores.
+    resume : bool
+        Skip variants already finished from the same inputs.
+    report : bool
+        Write ``out/report.html`` at the end.
+    progress : bool or callable, optional
+        Per finished variant; Ctrl-C starts no new variant (the running ones are stored, so
+        ``resume=True`` goes on from there) and raises KeyboardInterrupt.
+
+    Returns
+    -------
+    Sweep
+        `table`: one row per variant — ``variant``, ``index``, one column per varied model key
+        (named with its SI unit, e.g. ``operating.radial_load_n``), the figures in SI,
+        ``wall_time_s``, ``error``; `varied`: the varied columns; `plot(figure)`.
     """
     if isinstance(sweep_file_or_table, pd.DataFrame):
         if model is None:
@@ -101,24 +122,24 @@ def sweep(
         out = Path(out or Path("out") / "sweep")
         path = write_sweep_file(sweep_file_or_table, out / "sweep.toml", model, analysis, **settings)
     else:
+        if settings:
+            raise TypeError(f"sweep() got unexpected keyword arguments {sorted(settings)} "
+                            "(settings are only for a table of variants)")
         path = Path(sweep_file_or_table)
         out = Path(out or Path("out") / path.stem)
     path, out = os.path.abspath(path), os.path.abspath(out)
     if client is None:
-        args = ["sweep", path, "--out", out, "--quiet"] + flags(jobs=jobs, resume=resume, report=report)
-        native(_native.answer, args, None)
-    else:
-        shards = len(native(_native.sweep_variants, path))
-        futures = client.map(
-            _run_shard, [path] * shards, [out] * shards, range(1, shards + 1), [shards] * shards,
-            [resume] * shards, pure=False,
-        )
-        client.gather(futures)
-        collect = ["sweep", path, "--out", out, "--collect-only", "--quiet"] + flags(report=report)
-        native(_native.answer, collect, None)
-    return read_summary(out)
+        return call("sweep", dict(sweep=path, out=out, jobs=jobs, resume=resume, report=report),
+                    Sweep, progress=progress)
+    shards = len(native(_native.sweep_variants, path))
+    futures = client.map(
+        _run_shard, [path] * shards, [out] * shards, range(1, shards + 1), [shards] * shards,
+        [resume] * shards, pure=False,
+    )
+    client.gather(futures)
+    return call("sweep", dict(sweep=path, out=out, collect_only=True, report=report), Sweep)
 
 
 def read_summary(out: Union[str, os.PathLike]) -> pd.DataFrame:
-    """The summary table of a sweep output folder."""
+    """The summary table of a sweep output folder (`summary.csv`)."""
     return pd.read_csv(Path(out) / "summary.csv", dtype={"variant": str, "error": str})

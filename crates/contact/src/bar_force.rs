@@ -11,8 +11,8 @@
 //! Sign conventions: `gap` is the surface separation (m), negative = elastic approach
 //! `δ = −gap`; `gap_rate = d(gap)/dt` (m/s, negative = approaching). SI units throughout.
 
-use crate::cage_bar::SqueezeFilm;
 use crate::damping::SliceDamping;
+use crate::squeeze_film::SqueezeFilm;
 use rolldyn_geometry::CylindricalRollerBearing;
 use rolldyn_lubrication::regime::film_parameter;
 

@@ -9,6 +9,8 @@
 //!   shear, the line contact and the oil squeeze film (docs/theory.md §2.3.1).
 //! * [`bar_force`] — the pair-34 force law per roller slice: elastic, or lubricated (squeeze
 //!   and wedge film above the asperity film, the elastic law below it).
+//! * [`squeeze_film`] — the oil squeeze film of a roller approaching a flat face (the cage
+//!   bar), which both bar laws use.
 //! * [`roller_raceway`] — a roller of a bearing model on its raceway, solved by any of the
 //!   three methods and reported alike.
 
@@ -19,3 +21,4 @@ pub mod damping;
 pub mod hertz;
 pub mod roller_raceway;
 pub mod slices;
+pub mod squeeze_film;

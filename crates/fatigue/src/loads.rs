@@ -222,6 +222,46 @@ fn read_contacts(table: &Path) -> Result<Vec<(usize, ContactLoad)>, String> {
     Ok(out)
 }
 
+/// The largest contact forces of the recorded revolution (seed 000 Table 3.2 columns the
+/// correlations of V-27 use), N.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct RevolutionMaxima {
+    pub max_cage_land_force_n: f64,
+    pub max_roller_cage_force_n: f64,
+    pub max_roller_raceway_force_n: f64,
+}
+
+impl RevolutionMaxima {
+    /// The largest cage–land and roller–cage forces of a load export (the sum of the force
+    /// magnitudes at the land stations and at one roller's bar points, per set); an export does
+    /// not hold the roller–raceway forces (NaN).
+    pub fn of_export(export: &CageLoadExport) -> Self {
+        let magnitude = |f: &[f64; 3]| (f[0] * f[0] + f[1] * f[1] + f[2] * f[2]).sqrt();
+        let mut land: f64 = 0.0;
+        let mut bar: f64 = 0.0;
+        for set in &export.sets {
+            let mut per_pocket = std::collections::BTreeMap::<usize, f64>::new();
+            let mut land_set = 0.0;
+            for c in &set.contacts {
+                match c.kind {
+                    ContactKind::Land => land_set += magnitude(&c.force_n),
+                    ContactKind::Bar => {
+                        *per_pocket.entry(c.pocket).or_default() += magnitude(&c.force_n)
+                    }
+                    ContactKind::PocketEnd => {}
+                }
+            }
+            land = land.max(land_set);
+            bar = per_pocket.values().fold(bar, |a, &b| a.max(b));
+        }
+        Self {
+            max_cage_land_force_n: land,
+            max_roller_cage_force_n: bar,
+            max_roller_raceway_force_n: f64::NAN,
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

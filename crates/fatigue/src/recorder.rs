@@ -3,8 +3,7 @@
 //! each the output sample nearest to its angle — every set is a state the dynamics computed,
 //! not an interpolation between two.
 
-use crate::loads::{ContactKind, ContactLoad, LoadSet};
-use crate::study::RevolutionMaxima;
+use crate::loads::{ContactKind, ContactLoad, LoadSet, RevolutionMaxima};
 use rolldyn_dynamics::output::{OutputSink, PointForce, RevolutionSummary, Snapshot};
 use std::collections::VecDeque;
 use std::f64::consts::TAU;

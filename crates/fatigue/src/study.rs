@@ -3,17 +3,21 @@
 //! rainflow → S–N and Miner → life and critical location, and with an inclusion the life at the
 //! critical location with the inclusion's local stresses.
 
+use std::ops::ControlFlow;
 use crate::cage::{CageGeometry, FilletPoint};
 use crate::damage::{DamageBreakdown, MeanStressSettings, life_hours, miner_damage};
 use crate::frame::{FilletFactors, FrameSettings, fillet_factors};
 use crate::inclusion::{InclusionModel, InclusionSettings};
-use crate::loads::{CageLoadExport, ContactKind, ExportHeader, FORMAT, VERSION};
+use crate::loads::{CageLoadExport, ExportHeader, FORMAT, VERSION};
 use crate::rainflow::{Cycle, HistoryKind, rainflow};
 use crate::recorder::{CageLoadRecorder, export_output_step};
 use crate::sn::{BelowKnee, SnCurve, SnSettings};
 use crate::unit_stresses::{Stress, UnitStresses, signed_von_mises};
 use rolldyn_geometry::CylindricalRollerBearing;
 use serde::Serialize;
+
+// at its old path too (the `rolldyn fatigue` command names it here); it lives with the export
+pub use crate::loads::RevolutionMaxima;
 
 /// Which cage stress model.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -98,46 +102,6 @@ pub fn cage_geometry(
         Ok(geometry)
     } else {
         Err(format!("[cage]: {}", problems.join("; ")))
-    }
-}
-
-/// The largest contact forces of the recorded revolution (seed 000 Table 3.2 columns the
-/// correlations of V-27 use), N.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct RevolutionMaxima {
-    pub max_cage_land_force_n: f64,
-    pub max_roller_cage_force_n: f64,
-    pub max_roller_raceway_force_n: f64,
-}
-
-impl RevolutionMaxima {
-    /// The largest cage–land and roller–cage forces of a load export (the sum of the force
-    /// magnitudes at the land stations and at one roller's bar points, per set); an export does
-    /// not hold the roller–raceway forces (NaN).
-    pub fn of_export(export: &CageLoadExport) -> Self {
-        let magnitude = |f: &[f64; 3]| (f[0] * f[0] + f[1] * f[1] + f[2] * f[2]).sqrt();
-        let mut land: f64 = 0.0;
-        let mut bar: f64 = 0.0;
-        for set in &export.sets {
-            let mut per_pocket = std::collections::BTreeMap::<usize, f64>::new();
-            let mut land_set = 0.0;
-            for c in &set.contacts {
-                match c.kind {
-                    ContactKind::Land => land_set += magnitude(&c.force_n),
-                    ContactKind::Bar => {
-                        *per_pocket.entry(c.pocket).or_default() += magnitude(&c.force_n)
-                    }
-                    ContactKind::PocketEnd => {}
-                }
-            }
-            land = land.max(land_set);
-            bar = per_pocket.values().fold(bar, |a, &b| a.max(b));
-        }
-        Self {
-            max_cage_land_force_n: land,
-            max_roller_cage_force_n: bar,
-            max_roller_raceway_force_n: f64::NAN,
-        }
     }
 }
 
@@ -383,11 +347,14 @@ pub fn export_header(
 }
 
 /// A model's dynamics run to its load export: `settle_revolutions` discarded, then recorded until
-/// the cage has turned a full revolution (at most three epicyclic periods).
+/// the cage has turned a full revolution (at most three epicyclic periods). `watch(t, t_settled)`
+/// is called after every accepted step with the simulated time and the end of the settling;
+/// `Break` stops the run ([`FatigueError::Interrupted`]).
 pub fn record_loads(
     model: &rolldyn_model::Model,
     overrides: &rolldyn_setup::Overrides,
     settings: &FatigueSettings,
+    watch: &mut dyn FnMut(f64, f64) -> ControlFlow<()>,
 ) -> Result<(CageLoadExport, RevolutionMaxima, CageGeometry), FatigueError> {
     let bearing = model
         .bearing
@@ -419,15 +386,19 @@ pub fn record_loads(
     .map_err(input)?;
     let period = std::f64::consts::TAU / epicyclic.abs();
     let mut sim = prepared.simulation;
-    let numerical = |e: rolldyn_dynamics::DynError| FatigueError::Numerical(e.to_string());
+    let numerical = |e: rolldyn_dynamics::DynError| match e {
+        rolldyn_dynamics::DynError::Interrupted { .. } => FatigueError::Interrupted,
+        e => FatigueError::Numerical(e.to_string()),
+    };
     let settle = settings.settle_revolutions as f64 * period;
-    sim.run_until(settle, &mut rolldyn_dynamics::output::NullSink, &mut |_| {})
+    let mut watched = |t: f64| watch(t, settle);
+    sim.run_until_interruptible(settle, &mut rolldyn_dynamics::output::NullSink, &mut watched)
         .map_err(numerical)?;
     let mut recorder = CageLoadRecorder::default();
     let mut end = settle;
     let sets = loop {
         end += 0.25 * period;
-        sim.run_until(end, &mut recorder, &mut |_| {})
+        sim.run_until_interruptible(end, &mut recorder, &mut watched)
             .map_err(numerical)?;
         match recorder.last_revolution() {
             Ok(sets) => break sets,
@@ -457,4 +428,7 @@ pub enum FatigueError {
     Input(String),
     #[error("{0}")]
     Numerical(String),
+    /// The caller stopped the dynamics run.
+    #[error("the dynamics run was interrupted")]
+    Interrupted,
 }

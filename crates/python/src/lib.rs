@@ -1,22 +1,21 @@
 //! `rolldyn._native`: the Rust side of the Python package `rolldyn` (python/rolldyn). It runs the
-//! commands of the `rolldyn` program in-process (`rolldyn_cli::api`), so a Python call and the
-//! command line give the same numbers; the Python side turns the answers into dicts, numpy
-//! arrays and pandas DataFrames.
+//! analyses of the `rolldyn` library (crates/rolldyn) in-process: a request built from keyword
+//! arguments (JSON, quantities in SI or as text with units), the result's summary (JSON), its
+//! text, and its tables as columns, from which the Python side builds pandas DataFrames.
 //!
-//! Every run releases the GIL. Bad input raises `InputError` (a `ValueError`) with the command's
-//! one-line message (`file:line:column: key — reason`); a failed run raises `RunError`.
+//! Every run releases the GIL and runs on its own thread while the calling thread hands the
+//! progress to Python and watches for Ctrl-C every 0.1 s. Bad input raises `InputError` (a
+//! `ValueError`) with the library's one-line message (`file:line:column: key — reason`); a
+//! failed run raises `RunError`.
 
 use pyo3::create_exception;
 use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::PyBytes;
-use rolldyn_cli::commands::simulate::Observer;
-use rolldyn_cli::failure::Failure;
-use rolldyn_dynamics::output_columns::{
-    BEARING_COLUMNS, MemoryTables, REVOLUTION_COLUMNS, ROLLER_COLUMNS, column_names,
-};
-use std::ops::ControlFlow;
-use std::time::{Duration, Instant};
+use pyo3::types::{PyBytes, PyList};
+use rolldyn::{ColumnValues, Context, Failure, Invocation, ModelSource, Observer, Progress};
+use std::sync::Mutex;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::time::Duration;
 
 create_exception!(
     _native,
@@ -45,11 +44,20 @@ fn raise(failure: Failure) -> PyErr {
 /// overrides applied, and the parsed model.
 #[pyclass(frozen, module = "rolldyn._native")]
 struct Model {
-    #[pyo3(get)]
-    source: String,
-    #[pyo3(get)]
-    text: String,
-    model: rolldyn_model::Model,
+    source: ModelSource,
+}
+
+impl Model {
+    fn parts(&self) -> (&str, &str, &rolldyn_model::Model) {
+        match &self.source {
+            ModelSource::Given {
+                source,
+                text,
+                model,
+            } => (source, text, model),
+            _ => unreachable!("a Python model is always read"),
+        }
+    }
 }
 
 #[pymethods]
@@ -57,27 +65,42 @@ impl Model {
     /// A copy with model keys set: `overrides` is a JSON object of dotted keys
     /// (`{"roller.count": 22, "operating.inner_speed": "8163 rpm"}`).
     fn with_overrides(&self, overrides: &str) -> PyResult<Model> {
+        let (source, text, _) = self.parts();
         let keys: serde_json::Map<String, serde_json::Value> = serde_json::from_str(overrides)
             .map_err(|e| InputError::new_err(format!("overrides: {e}")))?;
         let keys = keys
             .into_iter()
             .map(|(key, value)| Ok((key.clone(), toml_value(&key, value)?)))
             .collect::<PyResult<Vec<_>>>()?;
-        let text = rolldyn_sweep::apply_overrides(&self.text, &keys)
-            .map_err(|reason| InputError::new_err(format!("{}: {reason}", self.source)))?;
-        let model = rolldyn_model::parse(&text, &self.source)
-            .map_err(|e| InputError::new_err(e.to_string()))?;
+        let text = rolldyn_sweep::apply_overrides(text, &keys)
+            .map_err(|reason| InputError::new_err(format!("{source}: {reason}")))?;
+        let model =
+            rolldyn_model::parse(&text, source).map_err(|e| InputError::new_err(e.to_string()))?;
         Ok(Model {
-            source: self.source.clone(),
-            text,
-            model,
+            source: ModelSource::Given {
+                source: source.to_string(),
+                text,
+                model: Box::new(model),
+            },
         })
+    }
+
+    /// The model file, or `<embedded 2002834.toml>`.
+    #[getter]
+    fn source(&self) -> String {
+        self.parts().0.to_string()
+    }
+
+    /// The model's TOML text, overrides applied.
+    #[getter]
+    fn text(&self) -> String {
+        self.parts().1.to_string()
     }
 
     /// The bearing's name (`model` in the answers).
     #[getter]
     fn name(&self) -> String {
-        self.model.bearing.name().to_string()
+        self.parts().2.bearing.name().to_string()
     }
 }
 
@@ -90,106 +113,123 @@ fn toml_value(key: &str, value: serde_json::Value) -> PyResult<toml::Value> {
 #[pyfunction]
 #[pyo3(signature = (path=None))]
 fn load_model(path: Option<&str>) -> PyResult<Model> {
-    let (source, text) = match path {
-        Some(path) => (
-            path.to_string(),
-            rolldyn_model::read_input_file(std::path::Path::new(path))
-                .map_err(|reason| InputError::new_err(format!("{path}: {reason}")))?,
-        ),
-        None => (
-            "<embedded 2002834.toml>".to_string(),
-            rolldyn_model::DEFAULT_MODEL.to_string(),
-        ),
-    };
-    let model =
-        rolldyn_model::parse(&text, &source).map_err(|e| InputError::new_err(e.to_string()))?;
-    Ok(Model {
-        source,
-        text,
-        model,
-    })
+    let source = ModelSource::read(path.map(std::path::Path::new)).map_err(raise)?;
+    Ok(Model { source })
 }
 
-/// Runs a command (`args` as on the command line, without `rolldyn`; give `--json` for an
-/// answer) with `model` in place of its model file; returns the JSON answer's text, or None.
-#[pyfunction]
-#[pyo3(signature = (args, model=None))]
-fn answer(py: Python<'_>, args: Vec<String>, model: Option<&Model>) -> PyResult<Option<String>> {
-    let model = model.map(|m| m.model.clone());
-    py.detach(|| rolldyn_cli::api::answer(&args, model))
-        .map(|value| value.map(|v| v.to_string()))
-        .map_err(raise)
+/// What the run's thread tells the calling thread: the latest progress, the warnings, and
+/// whether Python asked it to stop.
+#[derive(Default)]
+struct Watch {
+    progress: Mutex<Option<Progress>>,
+    warnings: Mutex<Vec<String>>,
+    stop: AtomicBool,
 }
 
-/// Runs `simulate` (`args` start with "simulate"). Returns the JSON answer's text and, with
-/// `tables`, the bearing, rollers and revolutions tables as little-endian f64 bytes (row-major,
-/// the columns of [`table_columns`]). `progress(fraction, simulated_time_s)` is called every 0.1 s; Ctrl-C (or
-/// an exception in `progress`) stops the run at its last accepted step and is raised.
+impl Observer for Watch {
+    fn progress(&self, progress: &Progress) {
+        *self.progress.lock().expect("not poisoned") = Some(progress.clone());
+    }
+
+    fn warning(&self, message: &str) {
+        self.warnings
+            .lock()
+            .expect("not poisoned")
+            .push(message.to_string());
+    }
+
+    fn stop_requested(&self) -> bool {
+        self.stop.load(Ordering::Relaxed)
+    }
+}
+
+/// Runs analysis `analysis` on `request` (a JSON object) with `model` (the embedded model when
+/// None). `progress(done, total, unit, message)` is called every 0.1 s from this thread;
+/// Ctrl-C (or an exception in `progress`) asks the run to stop, and is raised once it has
+/// stopped. `invocation` is recorded in an output folder's `run.json`.
+///
+/// Returns `(summary JSON, text, tables, warnings)`: tables as a list of `(name, columns)`,
+/// each column `(name, kind, values)` with kind "f8"/"i8" and little-endian bytes, or "str"
+/// and a list of strings.
 #[pyfunction]
-#[pyo3(signature = (args, model=None, tables=true, progress=None))]
-fn simulate<'py>(
+#[pyo3(signature = (analysis, request, model=None, progress=None, invocation=Vec::new()))]
+fn run<'py>(
     py: Python<'py>,
-    args: Vec<String>,
+    analysis: &str,
+    request: &str,
     model: Option<&Model>,
-    tables: bool,
     progress: Option<Py<PyAny>>,
-) -> PyResult<(String, Option<[Bound<'py, PyBytes>; 3]>)> {
-    let model = model.map(|m| m.model.clone());
-    let mut recorded = MemoryTables::default();
-    let mut stopped: Option<PyErr> = None;
+    invocation: Vec<String>,
+) -> PyResult<(String, String, Bound<'py, PyList>, Vec<String>)> {
+    let watch = Watch::default();
+    let context = Context {
+        model: model.map_or(ModelSource::Embedded, |m| m.source.clone()),
+        invocation: Invocation {
+            given: invocation
+                .iter()
+                .skip(1)
+                .filter_map(|a| a.split_once('='))
+                .map(|(k, v)| (k.to_string(), v.to_string()))
+                .collect(),
+            command: invocation,
+        },
+        observer: &watch,
+    };
+    let mut interrupted: Option<PyErr> = None;
     let answer = py.detach(|| {
-        let mut last = Instant::now();
-        let mut observe = |t: f64, t_end: f64| {
-            if last.elapsed() < CALLBACK_INTERVAL {
-                return ControlFlow::Continue(());
-            }
-            last = Instant::now();
-            let checked = Python::attach(|py| {
-                if let Some(callback) = &progress {
-                    callback.call1(py, ((t / t_end).min(1.0), t))?;
+        std::thread::scope(|scope| {
+            let worker = scope.spawn(|| rolldyn::run_json(analysis, request, &context));
+            while !worker.is_finished() {
+                std::thread::sleep(CALLBACK_INTERVAL);
+                if interrupted.is_some() {
+                    continue;
                 }
-                py.check_signals()
-            });
-            match checked {
-                Ok(()) => ControlFlow::Continue(()),
-                Err(e) => {
-                    stopped = Some(e);
-                    ControlFlow::Break(())
+                let latest = watch.progress.lock().expect("not poisoned").take();
+                let checked = Python::attach(|py| {
+                    if let (Some(callback), Some(p)) = (&progress, latest) {
+                        callback.call1(py, (p.done, p.total, p.unit, p.message))?;
+                    }
+                    py.check_signals()
+                });
+                if let Err(e) = checked {
+                    interrupted = Some(e);
+                    watch.stop.store(true, Ordering::Relaxed);
                 }
             }
-        };
-        let observer = Observer {
-            tables: tables.then_some(&mut recorded as _),
-            progress: &mut observe,
-        };
-        rolldyn_cli::api::simulate(&args, model, observer)
+            worker.join().expect("the run's thread does not panic")
+        })
     });
-    if let Some(e) = stopped {
+    if let Some(e) = interrupted {
         return Err(e);
     }
-    let answer = answer.map_err(raise)?.to_string();
-    let bytes = |values: &[f64]| {
-        let raw: Vec<u8> = values.iter().flat_map(|v| v.to_le_bytes()).collect();
-        PyBytes::new(py, &raw)
-    };
-    let tables = tables.then(|| {
-        [
-            bytes(&recorded.bearing),
-            bytes(&recorded.rollers),
-            bytes(&recorded.revolutions),
-        ]
-    });
-    Ok((answer, tables))
+    let answer = answer.map_err(raise)?;
+    let tables = PyList::empty(py);
+    for table in &answer.tables {
+        let columns = PyList::empty(py);
+        for column in &table.columns {
+            let values: (&str, Bound<'py, PyAny>) = match &column.values {
+                ColumnValues::Real(v) => ("f8", bytes(py, v.iter().map(|x| x.to_le_bytes()))),
+                ColumnValues::Integer(v) => ("i8", bytes(py, v.iter().map(|x| x.to_le_bytes()))),
+                ColumnValues::Text(v) => ("str", PyList::new(py, v)?.into_any()),
+            };
+            columns.append((column.name.as_str(), values.0, values.1))?;
+        }
+        tables.append((table.name.as_str(), columns))?;
+    }
+    let warnings = watch.warnings.into_inner().expect("not poisoned");
+    Ok((answer.summary, answer.text, tables, warnings))
 }
 
-/// The column names of the bearing, rollers and revolutions tables.
+/// Little-endian numbers as Python bytes.
+fn bytes<'py>(py: Python<'py>, values: impl Iterator<Item = [u8; 8]>) -> Bound<'py, PyAny> {
+    let raw: Vec<u8> = values.flatten().collect();
+    PyBytes::new(py, &raw).into_any()
+}
+
+/// The names of the analyses `run` knows.
 #[pyfunction]
-fn table_columns() -> [Vec<String>; 3] {
-    [
-        column_names(&BEARING_COLUMNS),
-        column_names(&ROLLER_COLUMNS),
-        column_names(&REVOLUTION_COLUMNS),
-    ]
+fn analyses() -> Vec<&'static str> {
+    rolldyn::ANALYSES.to_vec()
 }
 
 /// The variant names of a sweep file, in its order.
@@ -210,9 +250,8 @@ fn version() -> &'static str {
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<Model>()?;
     m.add_function(wrap_pyfunction!(load_model, m)?)?;
-    m.add_function(wrap_pyfunction!(answer, m)?)?;
-    m.add_function(wrap_pyfunction!(simulate, m)?)?;
-    m.add_function(wrap_pyfunction!(table_columns, m)?)?;
+    m.add_function(wrap_pyfunction!(run, m)?)?;
+    m.add_function(wrap_pyfunction!(analyses, m)?)?;
     m.add_function(wrap_pyfunction!(sweep_variants, m)?)?;
     m.add_function(wrap_pyfunction!(version, m)?)?;
     m.add("InputError", m.py().get_type::<InputError>())?;

@@ -53,25 +53,40 @@ pub trait Analysis {
 }
 
 /// A result as a skin that knows no Rust types sees it.
-#[derive(Clone, Debug, Serialize)]
+#[derive(Clone, Debug)]
 pub struct Answer {
-    /// The result serialised (what `--json` prints).
-    pub summary: serde_json::Value,
+    /// The result serialised as JSON text (what `--json` prints, in the result's field order).
+    pub summary: String,
     /// The result as the command line prints it.
     pub text: String,
     /// The result's tables.
-    #[serde(skip)]
     pub tables: Vec<Table>,
 }
 
 /// Runs analysis `A` on a request given as JSON.
 pub fn answer<A: Analysis>(request: &str, context: &Context<'_>) -> Result<Answer, Failure> {
-    let request: A::Request =
-        serde_json::from_str(request).map_err(|e| Failure::Input(format!("{}: {e}", A::NAME)))?;
+    let request: A::Request = parse_request(A::NAME, request)?;
     let result = A::run(&request, context)?;
     Ok(Answer {
-        summary: serde_json::to_value(&result)?,
+        summary: serde_json::to_string(&result)?,
         text: result.to_string(),
         tables: result.tables(),
+    })
+}
+
+/// A JSON request, or the reason it is none, naming the field (`simulate: operating.speed —
+/// 'fast' does not start with a number`).
+fn parse_request<T: DeserializeOwned>(analysis: &str, text: &str) -> Result<T, Failure> {
+    let mut json = serde_json::Deserializer::from_str(text);
+    serde_path_to_error::deserialize(&mut json).map_err(|e| {
+        let path = e.path().to_string();
+        let reason = e.inner().to_string();
+        // serde_json appends the position in the request's text, which the caller never wrote
+        let reason = reason.split(" at line ").next().unwrap_or(&reason);
+        if path == "." || path.is_empty() {
+            Failure::Input(format!("{analysis}: {reason}"))
+        } else {
+            Failure::Input(format!("{analysis}: {path} — {reason}"))
+        }
     })
 }

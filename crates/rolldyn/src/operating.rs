@@ -104,6 +104,20 @@ impl Duration {
     }
 }
 
+impl Duration {
+    /// The end time for a cage revolution period `revolution` [s] (`None`: the rings start at
+    /// rest, and a number of revolutions is no duration).
+    pub fn end_time(self, revolution: Option<f64>) -> Result<f64, String> {
+        match (self, revolution) {
+            (Duration::CageRevolutions(n), Some(period)) => Ok(n * period),
+            (Duration::CageRevolutions(_), None) => Err(
+                "the inner ring starts at rest (operating.speed_schedule): give --duration as a time, e.g. 0.5s, or a constant --speed".into(),
+            ),
+            (Duration::Time(t), _) => Ok(t),
+        }
+    }
+}
+
 impl<'de> Deserialize<'de> for Duration {
     /// A string as on the command line, or a number of seconds.
     fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {

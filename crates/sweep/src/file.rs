@@ -211,6 +211,36 @@ impl SweepFile {
         })
     }
 
+    /// The model keys any variant overrides, in the order they first appear.
+    pub fn varied_keys(&self) -> Vec<String> {
+        let mut keys: Vec<String> = Vec::new();
+        for (key, _) in self.variants.iter().flat_map(|v| &v.overrides) {
+            if !keys.contains(key) {
+                keys.push(key.clone());
+            }
+        }
+        keys
+    }
+
+    /// The value of the dotted model key `key` for `variant`: its override, else the base
+    /// model's value (`None` when the base model leaves it to its default).
+    pub fn value_of(&self, variant: &Variant, key: &str) -> Option<Value> {
+        if let Some((_, v)) = variant.overrides.iter().rev().find(|(k, _)| k == key) {
+            return Some(v.clone());
+        }
+        let doc: Table = self.model_text.parse().ok()?;
+        let mut parts = key.split('.');
+        let mut node = doc.get(parts.next()?)?;
+        for part in parts {
+            node = match node {
+                Value::Table(t) => t.get(part)?,
+                Value::Array(items) => items.get(part.parse::<usize>().ok()?)?,
+                _ => return None,
+            };
+        }
+        Some(node.clone())
+    }
+
     /// The model of `variant` (base model with its overrides).
     pub fn model_of(&self, variant: &Variant) -> Result<rolldyn_model::Model, SweepError> {
         let text = apply_overrides(&self.model_text, &variant.overrides)

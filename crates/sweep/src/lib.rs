@@ -1,6 +1,8 @@
 //! Parameter sweeps: a table of variants of one model, each overriding any model-file keys,
 //! run in parallel, one summary row per variant.
 //!
+//! The file format, the analyses and the outputs are documented in `docs/sweep-format.md`.
+//!
 //! A sweep file (TOML) names the base model (relative to the sweep file), the analysis and its
 //! settings, and the variants:
 //!
@@ -28,13 +30,19 @@
 //! to a temporary file and renamed, so an interrupted sweep loses only the variants in flight)
 //! with the [`fingerprint`] of its inputs, skips with `resume` the finished variants whose
 //! inputs did not change, runs every n-th variant with a shard `k/n`, and collects all stored
-//! variants into `summary.csv`, `summary.parquet` and one SVG per summary column ([`collect`]).
+//! variants into `summary.csv`, `summary.parquet` and one SVG per summary column ([`collect`]):
+//! the variant name, one column per varied model key ([`varied_columns`]), the index, the
+//! figures ([`Figure`]: whole numbers stay integers), the error.
 //!
 //! [`frozen`] runs the frozen time points of a start-up (seed 000 §3.1.2) the same way.
 
 mod file;
 pub mod frozen;
 mod run;
+mod summary;
 
 pub use file::{Analysis, SweepError, SweepFile, Variant, apply_overrides};
-pub use run::{RunOptions, Shard, VariantAnalysis, VariantOutcome, collect, fingerprint, run};
+pub use run::{
+    Figure, RunOptions, Shard, VariantAnalysis, VariantOutcome, VariantProgress, fingerprint, run,
+};
+pub use summary::{Summary, SummaryColumn, SummaryValues, collect, varied_columns};

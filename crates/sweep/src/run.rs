@@ -3,12 +3,11 @@
 use crate::file::{SweepError, SweepFile, Variant};
 use rayon::prelude::*;
 use rolldyn_numerics::hash::fnv1a;
-use rolldyn_output::{Column, Values, csv_field, write_parquet_table};
-use rolldyn_plot::{Labels, Series, line_plot};
-use serde::{Deserialize, Serialize};
+use serde::{Deserialize, Deserializer, Serialize};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::str::FromStr;
+use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// Run every n-th variant: shard `k/n` takes variants `i` with `i mod n = k − 1`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -41,9 +40,40 @@ impl FromStr for Shard {
     }
 }
 
+impl<'de> Deserialize<'de> for Shard {
+    /// `"k/n"`, as on the command line.
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        String::deserialize(deserializer)?
+            .parse()
+            .map_err(serde::de::Error::custom)
+    }
+}
+
+/// One summary figure of a variant: a whole number (a count, a flag as 0/1) or a real number
+/// (SI). A variant file written as `1.0` reads back as real, `1` as whole.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(untagged)]
+pub enum Figure {
+    Integer(i64),
+    Real(f64),
+}
+
+impl Figure {
+    pub fn as_f64(self) -> f64 {
+        match self {
+            Self::Integer(n) => n as f64,
+            Self::Real(x) => x,
+        }
+    }
+}
+
 /// The analysis of one variant: its summary figures (SI) or an error message.
 pub type VariantAnalysis<'a> =
-    dyn Fn(&Variant, rolldyn_model::Model) -> Result<BTreeMap<String, f64>, String> + Sync + 'a;
+    dyn Fn(&Variant, rolldyn_model::Model) -> Result<BTreeMap<String, Figure>, String> + Sync + 'a;
+
+/// Called after every variant of a run with its outcome, the variants finished so far in this
+/// run and the variants this run started with.
+pub type VariantProgress<'a> = dyn Fn(&VariantOutcome, usize, usize) + Sync + 'a;
 
 /// How to run a sweep.
 #[derive(Debug, Clone)]
@@ -67,7 +97,7 @@ pub struct VariantOutcome {
     /// Position of the variant in the sweep file.
     pub index: usize,
     /// Summary figures (SI), `None` when the variant failed.
-    pub summary: Option<BTreeMap<String, f64>>,
+    pub summary: Option<BTreeMap<String, Figure>>,
     pub error: Option<String>,
     pub wall_time_s: f64,
     /// [`fingerprint`] of the inputs this result was computed from (empty in older files).
@@ -102,7 +132,7 @@ fn variant_file(out: &Path, name: &str) -> PathBuf {
 
 /// The stored outcome of variant `name`: `None` when it has no file, an error when its file
 /// cannot be read.
-fn stored(out: &Path, name: &str) -> Result<Option<VariantOutcome>, String> {
+pub(crate) fn stored(out: &Path, name: &str) -> Result<Option<VariantOutcome>, String> {
     let path = variant_file(out, name);
     let text = match std::fs::read_to_string(&path) {
         Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(None),
@@ -149,12 +179,15 @@ fn plan<'a>(sweep: &'a SweepFile, options: &RunOptions) -> Vec<Planned<'a>> {
 
 /// Runs the selected variants with `analysis` (one call per variant; it must be thread-safe and
 /// single-threaded inside). Each outcome is written as soon as it finishes; `progress` is called
-/// after every variant. Returns the outcomes of the variants run now.
+/// after every variant. Once `stop` returns true no further variant starts (those running
+/// finish and are stored, so that `resume` continues). Returns the outcomes of the variants
+/// run now.
 pub fn run(
     sweep: &SweepFile,
     options: &RunOptions,
     analysis: &VariantAnalysis<'_>,
-    progress: &(dyn Fn(&VariantOutcome) + Sync),
+    progress: &VariantProgress<'_>,
+    stop: &(dyn Fn() -> bool + Sync),
 ) -> Result<Vec<VariantOutcome>, SweepError> {
     let dir = options.out_dir.join("variants");
     std::fs::create_dir_all(&dir).map_err(|e| {
@@ -169,9 +202,11 @@ pub fn run(
         .num_threads(options.jobs.max(1))
         .build()
         .map_err(|e| SweepError::new(&sweep.path, "", e.to_string()))?;
+    let done = AtomicUsize::new(0);
     let outcomes: Vec<Result<VariantOutcome, SweepError>> = pool.install(|| {
         selected
             .par_iter()
+            .filter(|_| !stop())
             .map(|planned| {
                 let variant = planned.variant;
                 let start = std::time::Instant::now();
@@ -200,179 +235,14 @@ pub fn run(
                             format!("cannot write {}: {e}", path.display()),
                         )
                     })?;
-                progress(&outcome);
+                progress(
+                    &outcome,
+                    done.fetch_add(1, Ordering::SeqCst) + 1,
+                    selected.len(),
+                );
                 Ok(outcome)
             })
             .collect()
     });
     outcomes.into_iter().collect()
-}
-
-/// A row of the summary: a stored outcome, or why its values are blank.
-struct SummaryRow {
-    name: String,
-    index: usize,
-    summary: Option<BTreeMap<String, f64>>,
-    error: Option<String>,
-}
-
-/// The summary rows of the variants that have a result file in `options.out_dir`, in the order
-/// of the sweep file. A result computed from other inputs than the variant's current ones
-/// ([`fingerprint`]) or an unreadable file gives a row without values that says so.
-fn summary_rows(sweep: &SweepFile, options: &RunOptions) -> Vec<SummaryRow> {
-    let blank = |name: &str, index, error: String| SummaryRow {
-        name: name.to_string(),
-        index,
-        summary: None,
-        error: Some(error),
-    };
-    sweep
-        .variants
-        .iter()
-        .enumerate()
-        .filter_map(|(index, variant)| {
-            match stored(&options.out_dir, &variant.name) {
-            Ok(None) => None,
-            Err(e) => Some(blank(&variant.name, index, e)),
-            Ok(Some(o)) if o.fingerprint != fingerprint(sweep, variant, &options.settings) => {
-                Some(blank(
-                    &variant.name,
-                    index,
-                    "stale: the inputs changed since this result; run the sweep again with --resume"
-                        .into(),
-                ))
-            }
-            Ok(Some(o)) => Some(SummaryRow {
-                name: o.name,
-                index,
-                summary: o.summary,
-                error: o.error,
-            }),
-        }
-        })
-        .collect()
-}
-
-/// The summary table, column by column: the variant names and indices, the figures (NaN where
-/// a row has none), the errors.
-struct SummaryTable {
-    names: Vec<Option<String>>,
-    indices: Vec<f64>,
-    columns: Vec<String>,
-    values: Vec<Vec<f64>>,
-    errors: Vec<Option<String>>,
-}
-
-impl SummaryTable {
-    fn new(rows: Vec<SummaryRow>) -> Self {
-        let mut columns: Vec<String> = rows
-            .iter()
-            .filter_map(|r| r.summary.as_ref())
-            .flat_map(|s| s.keys().cloned())
-            .collect();
-        columns.sort();
-        columns.dedup();
-        let values = columns
-            .iter()
-            .map(|c| {
-                rows.iter()
-                    .map(|r| r.summary.as_ref().and_then(|s| s.get(c)).copied())
-                    .map(|v| v.unwrap_or(f64::NAN))
-                    .collect()
-            })
-            .collect();
-        Self {
-            names: rows.iter().map(|r| Some(r.name.clone())).collect(),
-            indices: rows.iter().map(|r| r.index as f64).collect(),
-            columns,
-            values,
-            errors: rows.into_iter().map(|r| r.error).collect(),
-        }
-    }
-
-    /// `summary.csv`: variant, index, the figures (empty when missing), error.
-    fn write_csv(&self, path: &Path) -> Result<(), String> {
-        let mut csv = csv::Writer::from_path(path).map_err(|e| e.to_string())?;
-        let mut header = vec!["variant", "index"];
-        header.extend(self.columns.iter().map(String::as_str));
-        header.push("error");
-        csv.write_record(&header).map_err(|e| e.to_string())?;
-        for (row, name) in self.names.iter().enumerate() {
-            let mut record = vec![
-                name.clone().unwrap_or_default(),
-                self.indices[row].to_string(),
-            ];
-            record.extend(self.values.iter().map(|column| csv_field(column[row])));
-            record.push(self.errors[row].clone().unwrap_or_default());
-            csv.write_record(&record).map_err(|e| e.to_string())?;
-        }
-        csv.flush().map_err(|e| e.to_string())
-    }
-
-    /// `summary.parquet`, with the columns of the CSV.
-    fn write_parquet(&self, path: &Path) -> Result<(), String> {
-        let mut table = vec![
-            Column {
-                name: "variant",
-                values: Values::Text(&self.names),
-            },
-            Column {
-                name: "index",
-                values: Values::Numbers(&self.indices),
-            },
-        ];
-        table.extend(self.columns.iter().zip(&self.values).map(|(c, v)| Column {
-            name: c,
-            values: Values::Numbers(v),
-        }));
-        table.push(Column {
-            name: "error",
-            values: Values::Text(&self.errors),
-        });
-        write_parquet_table(path, &table).map_err(|e| e.to_string())
-    }
-
-    /// `<column>.svg` in `dir` for every figure: its value per variant.
-    fn plot(&self, dir: &Path) -> Result<(), String> {
-        for (column, values) in self.columns.iter().zip(&self.values) {
-            let points: Vec<(f64, f64)> = self
-                .indices
-                .iter()
-                .zip(values)
-                .map(|(i, v)| (i + 1.0, *v))
-                .filter(|p| p.1.is_finite())
-                .collect();
-            if points.is_empty() {
-                continue;
-            }
-            line_plot(
-                &dir.join(format!("{column}.svg")),
-                &Labels {
-                    title: &format!("{column} per variant"),
-                    x: "variant (order in the sweep file)",
-                    y: column,
-                },
-                &[Series {
-                    label: "",
-                    points: &points,
-                }],
-            )
-            .map_err(|e| e.to_string())?;
-        }
-        Ok(())
-    }
-}
-
-/// Collects every variant with a result in `options.out_dir` into `summary.csv` and
-/// `summary.parquet` (variant, index, the summary columns, error) and one SVG per summary column
-/// (value per variant, like seed 000 Figs 3.13–3.30). Returns the number of rows.
-pub fn collect(sweep: &SweepFile, options: &RunOptions) -> Result<usize, SweepError> {
-    let dir = &options.out_dir;
-    let table = SummaryTable::new(summary_rows(sweep, options));
-    table
-        .write_csv(&dir.join("summary.csv"))
-        .and_then(|_| table.write_parquet(&dir.join("summary.parquet")))
-        .and_then(|_| table.plot(dir))
-        .map_err(|e| SweepError::new(&sweep.path, "", e))?;
-    Ok(table.names.len())
 }

@@ -101,14 +101,14 @@ fn shards_resume_and_collect() {
     let out = dir.join("out");
     let calls = AtomicUsize::new(0);
     let analysis =
-        |_: &Variant, model: rolldyn_model::Model| -> Result<BTreeMap<String, f64>, String> {
+        |_: &Variant, model: rolldyn_model::Model| -> Result<BTreeMap<String, Figure>, String> {
             calls.fetch_add(1, Ordering::SeqCst);
             let rolldyn_model::BearingModel::Cylindrical(b) = model.bearing else {
                 return Err("no".into());
             };
             Ok(BTreeMap::from([(
                 "clearance_m".to_string(),
-                b.clearance.radial,
+                Figure::Real(b.clearance.radial),
             )]))
         };
     let options = |shard: Option<Shard>, resume: bool| RunOptions {
@@ -122,24 +122,32 @@ fn shards_resume_and_collect() {
         &sweep,
         &options(Some("1/2".parse().unwrap()), false),
         &analysis,
-        &|_| {},
+        &|_, _, _| {},
+        &|| false,
     )
     .unwrap();
     assert_eq!(
         first.iter().map(|o| o.index).collect::<Vec<_>>(),
         vec![0, 2, 4]
     );
-    run(&sweep, &options(None, true), &analysis, &|_| {}).unwrap();
+    run(
+        &sweep,
+        &options(None, true),
+        &analysis,
+        &|_, _, _| {},
+        &|| false,
+    )
+    .unwrap();
     assert_eq!(
         calls.load(Ordering::SeqCst),
         6,
         "resume skips the finished variants"
     );
-    assert_eq!(collect(&sweep, &options(None, true)).unwrap(), 6);
+    assert_eq!(collect(&sweep, &options(None, true)).unwrap().rows, 6);
     let csv = std::fs::read_to_string(out.join("summary.csv")).unwrap();
     assert_eq!(csv.lines().count(), 7);
     assert!(
-        csv.lines().nth(3).unwrap().starts_with("v2,2,1e-5"),
+        csv.lines().nth(3).unwrap().starts_with("v2,1e-5,2,1e-5"),
         "{csv}"
     );
     assert!(out.join("summary.parquet").is_file() && out.join("clearance_m.svg").is_file());
@@ -203,13 +211,13 @@ fn one_job(out: &std::path::Path, resume: bool) -> RunOptions {
 }
 
 /// The stand-in analysis of these tests: the radial clearance of the variant's model.
-fn clearance(model: rolldyn_model::Model) -> Result<BTreeMap<String, f64>, String> {
+fn clearance(model: rolldyn_model::Model) -> Result<BTreeMap<String, Figure>, String> {
     let rolldyn_model::BearingModel::Cylindrical(b) = model.bearing else {
         return Err("not cylindrical".into());
     };
     Ok(BTreeMap::from([(
         "clearance_m".to_string(),
-        b.clearance.radial,
+        Figure::Real(b.clearance.radial),
     )]))
 }
 
@@ -241,28 +249,28 @@ fn resume_recomputes_variants_whose_inputs_changed() {
     };
     let sweep = SweepFile::load(&write_sweep(&dir, &clearance_variants(&[0, 5, 10]))).unwrap();
     assert_eq!(
-        run(&sweep, &options("a"), &analysis, &|_| {})
+        run(&sweep, &options("a"), &analysis, &|_, _, _| {}, &|| false)
             .unwrap()
             .len(),
         3
     );
     assert!(
-        run(&sweep, &options("a"), &analysis, &|_| {})
+        run(&sweep, &options("a"), &analysis, &|_, _, _| {}, &|| false)
             .unwrap()
             .is_empty()
     );
 
     let edited = SweepFile::load(&write_sweep(&dir, &clearance_variants(&[0, 7, 10]))).unwrap();
-    let rerun = run(&edited, &options("a"), &analysis, &|_| {}).unwrap();
+    let rerun = run(&edited, &options("a"), &analysis, &|_, _, _| {}, &|| false).unwrap();
     assert_eq!(names(&rerun), vec![("v1".to_string(), true)]);
-    assert_eq!(collect(&edited, &options("a")).unwrap(), 3);
+    assert_eq!(collect(&edited, &options("a")).unwrap().rows, 3);
     let csv = std::fs::read_to_string(out.join("summary.csv")).unwrap();
     assert!(
-        csv.lines().nth(2).unwrap().starts_with("v1,1,7e-6"),
+        csv.lines().nth(2).unwrap().starts_with("v1,7e-6,1,7e-6"),
         "{csv}"
     );
 
-    let rerun = run(&edited, &options("b"), &analysis, &|_| {}).unwrap();
+    let rerun = run(&edited, &options("b"), &analysis, &|_, _, _| {}, &|| false).unwrap();
     assert_eq!(
         rerun.len(),
         3,
@@ -279,13 +287,13 @@ fn collect_blanks_results_of_changed_inputs() {
     let options = one_job(&out, false);
     let analysis = |_: &Variant, model: rolldyn_model::Model| clearance(model);
     let sweep = SweepFile::load(&write_sweep(&dir, &clearance_variants(&[0, 5]))).unwrap();
-    run(&sweep, &options, &analysis, &|_| {}).unwrap();
+    run(&sweep, &options, &analysis, &|_, _, _| {}, &|| false).unwrap();
     let edited = SweepFile::load(&write_sweep(&dir, &clearance_variants(&[0, 6]))).unwrap();
-    assert_eq!(collect(&edited, &options).unwrap(), 2);
+    assert_eq!(collect(&edited, &options).unwrap().rows, 2);
     let csv = std::fs::read_to_string(out.join("summary.csv")).unwrap();
     let row = csv.lines().nth(2).unwrap();
     assert!(
-        row.starts_with("v1,1,,") && row.contains("inputs changed"),
+        row.starts_with("v1,6e-6,1,,") && row.contains("inputs changed"),
         "{csv}"
     );
     std::fs::remove_dir_all(dir).ok();
@@ -298,16 +306,16 @@ fn an_unreadable_result_keeps_its_row_with_the_reason() {
     let options = one_job(&out, true);
     let analysis = |_: &Variant, model: rolldyn_model::Model| clearance(model);
     let sweep = SweepFile::load(&write_sweep(&dir, &clearance_variants(&[0, 5]))).unwrap();
-    run(&sweep, &options, &analysis, &|_| {}).unwrap();
+    run(&sweep, &options, &analysis, &|_, _, _| {}, &|| false).unwrap();
     std::fs::write(out.join("variants/v1.json"), "{\"name\": \"v1\", trunc").unwrap();
-    assert_eq!(collect(&sweep, &options).unwrap(), 2);
+    assert_eq!(collect(&sweep, &options).unwrap().rows, 2);
     let csv = std::fs::read_to_string(out.join("summary.csv")).unwrap();
     let row = csv.lines().nth(2).unwrap();
     assert!(
-        row.starts_with("v1,1,,") && row.contains("cannot read"),
+        row.starts_with("v1,5e-6,1,,") && row.contains("cannot read"),
         "{csv}"
     );
-    let rerun = run(&sweep, &options, &analysis, &|_| {}).unwrap();
+    let rerun = run(&sweep, &options, &analysis, &|_, _, _| {}, &|| false).unwrap();
     assert_eq!(rerun.len(), 1, "resume runs the variant again");
     std::fs::remove_dir_all(dir).ok();
 }
@@ -326,10 +334,10 @@ fn summary_parquet_has_the_variant_and_error_columns_of_the_csv() {
         clearance(model)
     };
     let sweep = SweepFile::load(&write_sweep(&dir, &clearance_variants(&[0, 5]))).unwrap();
-    run(&sweep, &options, &analysis, &|_| {}).unwrap();
+    run(&sweep, &options, &analysis, &|_, _, _| {}, &|| false).unwrap();
     collect(&sweep, &options).unwrap();
     let csv = std::fs::read_to_string(out.join("summary.csv")).unwrap();
-    assert_eq!(csv.lines().nth(2), Some("v1,1,,no solution"), "{csv}");
+    assert_eq!(csv.lines().nth(2), Some("v1,5e-6,1,,no solution"), "{csv}");
     let reader =
         SerializedFileReader::new(std::fs::File::open(out.join("summary.parquet")).unwrap())
             .unwrap();
@@ -341,17 +349,28 @@ fn summary_parquet_has_the_variant_and_error_columns_of_the_csv() {
         .iter()
         .map(|c| c.name().to_string())
         .collect();
-    assert_eq!(names, ["variant", "index", "clearance_m", "error"]);
+    // Parquet names have no dots: `clearance.radial_m` of the CSV is `clearance_radial_m`
+    assert_eq!(
+        names,
+        [
+            "variant",
+            "clearance_radial_m",
+            "index",
+            "clearance_m",
+            "error"
+        ]
+    );
     let rows: Vec<_> = reader
         .get_row_iter(None)
         .unwrap()
         .map(|r| r.unwrap())
         .collect();
     assert_eq!(rows[0].get_string(0).unwrap(), "v0");
-    assert!(rows[0].get_string(3).is_err(), "no error: null");
+    assert!(rows[0].get_string(4).is_err(), "no error: null");
     assert_eq!(rows[1].get_string(0).unwrap(), "v1");
-    assert!(rows[1].get_double(2).is_err(), "failed: null value");
-    assert_eq!(rows[1].get_string(3).unwrap(), "no solution");
+    assert_eq!(rows[1].get_double(1).unwrap(), 5e-6, "the varied key in SI");
+    assert!(rows[1].get_double(3).is_err(), "failed: null value");
+    assert_eq!(rows[1].get_string(4).unwrap(), "no solution");
     std::fs::remove_dir_all(dir).ok();
 }
 
@@ -388,4 +407,74 @@ fn a_variant_starts_from_a_named_variant_of_another_file() {
             .to_string()
             .contains("no variant '99'")
     );
+}
+
+/// The summary carries one column per varied model key after the variant name (SI with its
+/// unit in the name, whole numbers as integers, the base model's value where a variant does
+/// not override the key), and counts as integers.
+#[test]
+fn the_summary_has_the_varied_keys_as_columns() {
+    let dir = scratch("varied");
+    let out = dir.join("out");
+    let options = one_job(&out, false);
+    let sweep = SweepFile::load(&write_sweep(
+        &dir,
+        "[[variant]]\nname = \"a\"\n\"operating.inner_speed\" = \"4000 rpm\"\n\
+         [[variant]]\nname = \"b\"\n\"roller.count\" = 16\n",
+    ))
+    .unwrap();
+    let analysis = |_: &Variant, _: rolldyn_model::Model| {
+        Ok(BTreeMap::from([("steps".to_string(), Figure::Integer(12))]))
+    };
+    run(&sweep, &options, &analysis, &|_, _, _| {}, &|| false).unwrap();
+    let summary = collect(&sweep, &options).unwrap();
+    assert_eq!(
+        summary.varied,
+        ["operating.inner_speed_rad_s", "roller.count"]
+    );
+    let csv = std::fs::read_to_string(out.join("summary.csv")).unwrap();
+    let lines: Vec<&str> = csv.lines().collect();
+    assert_eq!(
+        lines[0],
+        "variant,operating.inner_speed_rad_s,roller.count,index,steps,error"
+    );
+    // the base model: 8163 rpm and 18 rollers
+    assert!(lines[1].starts_with("a,4.18879"), "{csv}");
+    assert!(lines[1].ends_with(",18,0,12,"), "{csv}");
+    assert!(lines[2].starts_with("b,8.548"), "{csv}");
+    assert!(lines[2].ends_with(",16,1,12,"), "{csv}");
+    assert!(out.join("steps.svg").is_file());
+    std::fs::remove_dir_all(dir).ok();
+}
+
+#[test]
+fn a_stop_request_starts_no_further_variant() {
+    let dir = scratch("stop");
+    let out = dir.join("out");
+    let options = one_job(&out, false);
+    let sweep = SweepFile::load(&write_sweep(&dir, &clearance_variants(&[0, 5, 10]))).unwrap();
+    let seen = AtomicUsize::new(0);
+    let analysis = |_: &Variant, model: rolldyn_model::Model| clearance(model);
+    let ran = run(
+        &sweep,
+        &options,
+        &analysis,
+        &|o, done, total| {
+            assert_eq!((total, o.name.as_str()), (3, "v0"));
+            seen.store(done, Ordering::SeqCst);
+        },
+        &|| seen.load(Ordering::SeqCst) >= 1,
+    )
+    .unwrap();
+    assert_eq!(ran.len(), 1);
+    let resumed = run(
+        &sweep,
+        &one_job(&out, true),
+        &analysis,
+        &|_, _, _| {},
+        &|| false,
+    )
+    .unwrap();
+    assert_eq!(resumed.len(), 2, "resume runs the variants not started");
+    std::fs::remove_dir_all(dir).ok();
 }

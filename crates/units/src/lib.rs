@@ -19,11 +19,10 @@ mod quantity;
 mod range;
 mod unit_table;
 
-pub use dimension::Dim;
+pub use dimension::markers::*;
+pub use dimension::{Dim, Dimension};
 pub use quantity::{Quantity, UnitError};
 pub use range::QuantityRange;
-pub use unit_table::Dimension;
-pub use unit_table::markers::*;
 
 /// rpm → rad/s.
 pub const RPM: f64 = std::f64::consts::PI / 30.0;

@@ -1,7 +1,7 @@
 //! [`Quantity`]: an SI value whose dimension is checked when it is parsed.
 
-use crate::dimension::Dim;
-use crate::unit_table::{self, Dimension};
+use crate::dimension::{Dim, Dimension};
+use crate::unit_table;
 use serde::de::{self, Deserialize, Deserializer, Visitor};
 use std::fmt;
 use std::marker::PhantomData;

@@ -1,41 +1,6 @@
 //! The unit symbols rolldyn understands, per physical dimension.
 
-use std::fmt;
-
-use crate::dimension::Dim;
-
-crate::dimension::dimensions! {
-    Dimensionless => "a dimensionless number", "";
-    Length => "a length", "m";
-    Area => "an area", "m²";
-    Mass => "a mass", "kg";
-    Time => "a time", "s";
-    Force => "a force", "N";
-    Moment => "a moment", "N m";
-    Pressure => "a pressure", "Pa";
-    Angle => "an angle", "rad";
-    AngularSpeed => "an angular speed", "rad/s";
-    Speed => "a speed", "m/s";
-    Acceleration => "an acceleration", "m/s²";
-    Temperature => "a temperature", "K";
-    DynamicViscosity => "a dynamic viscosity", "Pa s";
-    KinematicViscosity => "a kinematic viscosity", "m²/s";
-    Density => "a density", "kg/m³";
-    Stiffness => "a stiffness", "N/m";
-    LoadPerLength => "a load per unit length", "N/m";
-    Damping => "a damping coefficient", "N s/m";
-    Power => "a power", "W";
-    Energy => "an energy", "J";
-    Frequency => "a frequency", "Hz";
-    ThermalConductivity => "a thermal conductivity", "W/(m K)";
-    SpecificHeat => "a specific heat", "J/(kg K)";
-    RotationalDamping => "a rotational damping coefficient", "N m s/rad";
-    PerTemperature => "a temperature coefficient", "1/K";
-    PerPressure => "a pressure coefficient", "1/Pa";
-    PerArea => "an inverse area", "1/m²";
-    Inertia => "a moment of inertia", "kg m²";
-    Unbalance => "an unbalance (mass × eccentricity)", "kg m";
-}
+use crate::dimension::Dimension;
 
 impl Dimension {
     /// A few accepted spellings, for error messages.
@@ -62,12 +27,6 @@ impl Dimension {
             PerPressure => "1/Pa, 1/MPa, 1/GPa (or /Pa, /MPa, /GPa)",
             _ => self.si_symbol(),
         }
-    }
-}
-
-impl fmt::Display for Dimension {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.name())
     }
 }
 

@@ -52,7 +52,8 @@ fn main() -> Result<(), String> {
         let wall = std::time::Instant::now();
         let label = format!("{control:?}");
         let life = run_life(&inputs, &settings(control), &mut |p, _| {
-            eprintln!("{label}: {:.0} h", p.time_h)
+            eprintln!("{label}: {:.0} h", p.time_h);
+            std::ops::ControlFlow::Continue(())
         })
         .map_err(|e| e.to_string())?;
         Ok((life, wall.elapsed().as_secs_f64()))

@@ -14,6 +14,7 @@ use rolldyn_dynamics::conditions::OperatingConditions;
 use rolldyn_dynamics::output::NullSink;
 use rolldyn_geometry::CylindricalRollerBearing;
 use rolldyn_model::{DynamicsInputs, Lubrication};
+use std::ops::ControlFlow;
 use std::time::Instant;
 
 /// One period of the life loop.
@@ -49,6 +50,8 @@ pub enum StopReason {
     LifeReached,
     ClearanceLimit,
     DepthLimit(Surface),
+    /// The caller asked the run to stop (Ctrl-C) after the last period.
+    Interrupted,
 }
 
 /// The result of a life run.
@@ -210,11 +213,11 @@ fn limit_reached(settings: &WearSettings, depth: &SurfaceWear) -> Option<StopRea
 }
 
 /// Runs the life loop; `on_period` sees every accepted period with the depth at its end (for
-/// streaming outputs and progress).
+/// streaming outputs and progress) and may end the run there ([`StopReason::Interrupted`]).
 pub fn run_life(
     inputs: &LifeInputs,
     settings: &WearSettings,
-    on_period: &mut dyn FnMut(&PeriodRecord, &SurfaceWear),
+    on_period: &mut dyn FnMut(&PeriodRecord, &SurfaceWear) -> ControlFlow<()>,
 ) -> Result<LifeRun, WearError> {
     settings.validate().map_err(WearError::Input)?;
     let hour = 3600.0;
@@ -289,11 +292,15 @@ pub fn run_life(
             dynamics_wall_s: dynamics_s,
             wear_wall_s: wear_s,
         };
-        on_period(&record, &next_depth);
+        let flow = on_period(&record, &next_depth);
         periods.push(record);
         (depth, current, dynamics_s, wear_s) = (next_depth, next, 0.0, 0.0);
         if let Some(reason) = limit_reached(settings, &depth) {
             stop = reason;
+            break;
+        }
+        if flow.is_break() {
+            stop = StopReason::Interrupted;
             break;
         }
     }
@@ -327,7 +334,7 @@ pub fn halved_period_check(
         limits: Default::default(),
         ..settings.clone()
     };
-    let check = run_life(inputs, &halved, &mut |_, _| {})?;
+    let check = run_life(inputs, &halved, &mut |_, _| ControlFlow::Continue(()))?;
     let difference = PerSurface::from_fn(|s| {
         let (a, b) = (run.depth.max(s), check.depth.max(s));
         if b > 0.0 { a / b - 1.0 } else { 0.0 }

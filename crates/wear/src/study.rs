@@ -13,6 +13,7 @@ use rolldyn_model::Model;
 use rolldyn_setup::Overrides;
 use serde::Serialize;
 use std::collections::BTreeMap;
+use std::ops::ControlFlow;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
@@ -78,13 +79,14 @@ pub struct WearAnswer {
 }
 
 /// Runs the life of `model` and writes its outputs into `out` (when given); `progress` sees
-/// each accepted period.
+/// each accepted period and may end the run there (the answer's `stop` is then
+/// [`StopReason::Interrupted`], the outputs are those of the periods run).
 pub fn run_wear(
     model: &Model,
     overrides: &Overrides,
     settings: &WearSettings,
     out: Option<&Path>,
-    progress: &mut dyn FnMut(&PeriodRecord),
+    progress: &mut dyn FnMut(&PeriodRecord) -> ControlFlow<()>,
 ) -> Result<WearAnswer, WearError> {
     let wall = Instant::now();
     let bearing = model
@@ -114,18 +116,19 @@ pub fn run_wear(
         e => e,
     };
     let run = run_life(&inputs, settings, &mut |record, depth| {
-        progress(record);
         if let Some(t) = tables.as_mut()
             && let Err(e) = t.period(record, depth)
         {
             table_error.get_or_insert(e.to_string());
         }
+        progress(record)
     })
     .map_err(locate)?;
     if let Some(e) = table_error {
         return Err(output_error(e));
     }
     let convergence = match &settings.period {
+        _ if run.stop == StopReason::Interrupted => None,
         PeriodControl::Auto { .. } => {
             let (check, difference) = halved_period_check(&inputs, settings, &run)?;
             Some(Convergence {

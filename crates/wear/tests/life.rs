@@ -24,7 +24,10 @@ fn two_periods_wear_every_surface_and_write_a_worn_model_that_loads() {
         &Overrides::default(),
         &settings,
         Some(&dir),
-        &mut |p| seen.push(p.time_h),
+        &mut |p| {
+            seen.push(p.time_h);
+            std::ops::ControlFlow::Continue(())
+        },
     )
     .unwrap();
     assert_eq!(seen, vec![1000.0, 2000.0]);

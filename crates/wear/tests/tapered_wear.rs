@@ -183,7 +183,8 @@ fn v24_period(period_h: f64) {
         ..TaperedWearSettings::default()
     };
     let life = run_tapered_life(&cassette(&at_387_rpm()), &settings, &mut |p| {
-        println!("period {} done at {:.0} h", p.index, p.time_h)
+        println!("period {} done at {:.0} h", p.index, p.time_h);
+        std::ops::ControlFlow::Continue(())
     })
     .unwrap();
     print_life(&format!("period {period_h} h"), &life);
@@ -211,7 +212,8 @@ fn v25_misalignment_4_arcmin() {
     };
     let settings = TaperedWearSettings::default();
     let life = run_tapered_life(&cassette(&overrides), &settings, &mut |p| {
-        println!("period {} done at {:.0} h", p.index, p.time_h)
+        println!("period {} done at {:.0} h", p.index, p.time_h);
+        std::ops::ControlFlow::Continue(())
     })
     .unwrap();
     print_life("4′, 11 429 h", &life);
@@ -232,7 +234,8 @@ fn v25_misalignment_4_arcmin_one_period() {
         ..TaperedWearSettings::default()
     };
     let life = run_tapered_life(&cassette(&overrides), &settings, &mut |p| {
-        print_window(&format!("period {} (unworn)", p.index), &p.rates)
+        print_window(&format!("period {} (unworn)", p.index), &p.rates);
+        std::ops::ControlFlow::Continue(())
     })
     .unwrap();
     print_life("4′, 11 429 h in one period", &life);
@@ -252,7 +255,10 @@ fn one_period_writes_the_tables_and_plots() {
         period_s: 1000.0 * HOUR,
         ..TaperedWearSettings::default()
     };
-    let life = run_tapered_life(&cassette(&Overrides::default()), &settings, &mut |_| {}).unwrap();
+    let life = run_tapered_life(&cassette(&Overrides::default()), &settings, &mut |_| {
+        std::ops::ControlFlow::Continue(())
+    })
+    .unwrap();
     assert_eq!(life.periods.len(), 1);
     let wear = &life.periods[0].wear;
     assert_eq!(wear.roller.len(), 9);

@@ -1,21 +1,8 @@
-//! `rolldyn demo`: the most complete analysis available, on the embedded default model
-//! (bearing 2002834, SPEC §1.6 a / F-02): geometry check, quasi-static skidding at the model's
-//! operating point, a short 6-DOF dynamics run, and the inner-raceway contact of the most
-//! loaded roller by Hertz, slices and the Boussinesq solver at 0′/4′/8′ tilt.
+//! `rolldyn demo`: the most complete analysis available, on the embedded default model.
 
-use super::check::{describe, summarise};
-use super::contact::{LawName, Method, solve};
-use super::simulate::{print_summary, step_limits};
 use crate::failure::Failure;
-use crate::output::{load_model, print_json};
-use rolldyn_contact::roller_raceway::{ContactReport, RollerRacewayContact};
-use rolldyn_dynamics::output::NullSink;
-use rolldyn_geometry::BearingModel;
-use rolldyn_quasistatic::QuasiStaticOptions;
-use rolldyn_setup::quasi_static::{
-    LandChoice, QuasiStaticOverrides, cage_land_model, quasi_static_conditions,
-};
-use rolldyn_units::ARCMIN;
+use crate::output::run_and_print;
+use rolldyn::demo::{Demo, DemoRequest};
 
 #[derive(clap::Args)]
 pub struct Args {
@@ -27,126 +14,9 @@ pub struct Args {
     pub revolutions: f64,
 }
 
-const TILTS_ARCMIN: [f64; 3] = [0.0, 4.0, 8.0];
-const CELLS: (usize, usize) = (150, 9);
-
 pub fn run(args: Args) -> Result<(), Failure> {
-    let model = load_model(None)?;
-    let BearingModel::Cylindrical(bearing) = &model.bearing else {
-        return Err(Failure::Run(
-            "the embedded model is a cylindrical bearing".into(),
-        ));
+    let request = DemoRequest {
+        revolutions: args.revolutions,
     };
-    let op = &model.operating;
-    let missing = |what: &str| Failure::Run(format!("the embedded model lacks {what}"));
-    let speed = op
-        .inner_speed
-        .ok_or_else(|| missing("operating.inner_speed"))?;
-    let load = op
-        .radial_load
-        .ok_or_else(|| missing("operating.radial_load"))?;
-    let oil_t = op
-        .temperatures
-        .oil
-        .ok_or_else(|| missing("operating.temperatures.oil"))?;
-    let summary = summarise(&model.bearing, speed, 0.0);
-    if !args.json {
-        describe(&summary).iter().for_each(|l| println!("{l}"));
-    }
-
-    let qs_conditions = quasi_static_conditions(&model, &QuasiStaticOverrides::default())?;
-    let skid = rolldyn_quasistatic::solve_with_land_model(
-        bearing,
-        &qs_conditions,
-        &QuasiStaticOptions::default(),
-        cage_land_model(bearing, LandChoice::Finite).as_ref(),
-    )
-    .map_err(|e| Failure::Run(format!("quasi-static model: {e}")))?;
-    if !args.json {
-        println!(
-            "\nQuasi-static skidding at {:.0} rpm, {:.0} N, oil {:.0} °C:",
-            speed * 30.0 / std::f64::consts::PI,
-            load,
-            oil_t - 273.15
-        );
-        println!(
-            "  cage slip {:.4} %, max roller load {:.1} N, operating clearance {:.4} mm, friction power {:.1} W",
-            100.0 * skid.cage_slip,
-            skid.max_roller_load_n,
-            skid.operating_clearance_m * 1e3,
-            skid.power_loss_w
-        );
-    }
-
-    let (mut sim, revolution) =
-        rolldyn_setup::prepare(&model, &rolldyn_setup::Overrides::default(), 0.0, None)?;
-    let revolution = revolution.ok_or_else(|| missing("a running inner ring"))?;
-    let t_end = args.revolutions.max(0.1) * revolution;
-    let dynamics = sim
-        .run_until(t_end, &mut NullSink, &mut |_| {})
-        .map_err(|e| Failure::Run(format!("dynamics: {e}")))?;
-    if !args.json {
-        println!(
-            "\nDynamics, {} cage revolutions from the default start:",
-            args.revolutions
-        );
-        print_summary(
-            model.bearing.name(),
-            &dynamics,
-            &step_limits(&sim.step_limits()),
-        );
-    }
-
-    let roller_load = skid.max_roller_load_n.max(1.0);
-    let mut rows: Vec<ContactReport> = Vec::new();
-    if !args.json {
-        println!(
-            "\nInner-raceway contact of the most loaded roller ({roller_load:.0} N), Boussinesq grid {}×{} over the roller length × 0.4 mm:",
-            CELLS.0, CELLS.1
-        );
-        println!(
-            "  {:>6} {:>10} {:>12} {:>10} {:>10} {:>8} {:>8}",
-            "tilt ′", "method", "approach µm", "p_max MPa", "p_mid MPa", "K", "ms"
-        );
-    }
-    for tilt in TILTS_ARCMIN {
-        let contact = RollerRacewayContact::from_model(&model.bearing, true, tilt * ARCMIN)
-            .map_err(|e| Failure::Run(e.to_string()))?;
-        for method in [Method::Hertz, Method::Slices, Method::Boussinesq] {
-            let r = solve(
-                &contact,
-                method,
-                roller_load,
-                CELLS,
-                Some(0.4e-3),
-                LawName::Seed,
-            )?;
-            if !args.json {
-                println!(
-                    "  {:>6.0} {:>10} {:>12.3} {:>10.0} {:>10.0} {:>8.3} {:>8.2}",
-                    tilt,
-                    r.method.name(),
-                    r.approach_m * 1e6,
-                    r.max_pressure_pa * 1e-6,
-                    r.mid_pressure_pa * 1e-6,
-                    r.concentration_factor,
-                    r.solve_time_s * 1e3
-                );
-            }
-            rows.push(r);
-        }
-    }
-    if args.json {
-        let contacts: Vec<_> = rows
-            .iter()
-            .map(|r| super::contact::to_json(model.bearing.name(), r, Some(CELLS)))
-            .collect();
-        return print_json(&serde_json::json!({
-            "model": summary,
-            "quasi_static": skid,
-            "dynamics": super::simulate::summary_json(model.bearing.name(), &dynamics),
-            "inner_raceway_contact": contacts,
-        }));
-    }
-    Ok(())
+    run_and_print::<Demo>(&request, None, args.json)
 }

@@ -1,8 +1,9 @@
 //! `rolldyn report DIR`: the self-contained HTML report of an output folder of `simulate`,
-//! `sweep`, `wear` or `fatigue` (library: `rolldyn_report`).
+//! `sweep`, `wear` or `fatigue`.
 
 use crate::failure::Failure;
-use crate::output::print_json;
+use crate::output::run_and_print;
+use rolldyn::report::{Report, ReportRequest};
 use std::path::PathBuf;
 
 #[derive(clap::Args)]
@@ -15,10 +16,5 @@ pub struct Args {
 }
 
 pub fn run(args: Args) -> Result<(), Failure> {
-    let written = rolldyn_report::report_folder(&args.dir)?;
-    if args.json {
-        return print_json(&written);
-    }
-    println!("{}", written.report.display());
-    Ok(())
+    run_and_print::<Report>(&ReportRequest { dir: args.dir }, None, args.json)
 }

@@ -1,7 +1,7 @@
 //! Named columns of the tapered run's time series and summary (the `--out` table and the
 //! `--json` keys); units in the names.
 
-use super::run::TaperedSample;
+use super::sample::TaperedSample;
 use super::summary::TaperedSummary;
 
 /// Columns of [`sample_row`].

@@ -2,7 +2,7 @@
 //! output step (seed 000 §2.4.1 step 1, §3.2.2–3.2.4). Filled only when a [`ContactRecorder`]
 //! is given to [`super::run_recorded`], so a plain run pays nothing for it.
 
-use super::run::TaperedSample;
+use super::sample::TaperedSample;
 
 /// One raceway contact of one roller, slice by slice (0 on unloaded slices).
 #[derive(Debug, Clone, Default, PartialEq)]

@@ -3,7 +3,7 @@
 //! mutual lag, the load sharing of the rows, sliding and slip, rib forces and regimes.
 
 use super::model::TaperedModel;
-use super::run::TaperedSample;
+use super::sample::TaperedSample;
 use std::f64::consts::{PI, TAU};
 
 /// Frequency range and resolution of the axial-motion spectrum, Hz.

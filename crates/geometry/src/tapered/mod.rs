@@ -9,6 +9,7 @@ mod plane;
 mod rib;
 mod roller;
 mod row;
+mod validate;
 mod wear;
 
 pub use bearing::{Arrangement, DoubleRowTaperedBearing};

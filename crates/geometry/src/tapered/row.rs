@@ -136,6 +136,13 @@ impl RollerSection {
     }
 }
 
+impl DoubleRowTaperedBearing {
+    /// Row `k` (0: z < 0, 1: z > 0) in bearing coordinates.
+    pub fn row(&self, k: usize) -> TaperedRow {
+        TaperedRow::new(self, k)
+    }
+}
+
 impl TaperedRow {
     pub fn new(bearing: &DoubleRowTaperedBearing, k: usize) -> Self {
         let frame = RowFrame::of(bearing, k);

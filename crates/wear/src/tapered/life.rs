@@ -135,11 +135,12 @@ pub fn worn_further(
     }
 }
 
-/// Runs the loop; `on_period` sees every period as it ends.
+/// Runs the loop; `on_period` sees every period as it ends and may end the run there (the
+/// life then stops short of `settings.life_s`).
 pub fn run_tapered_life(
     base: &TaperedModel,
     settings: &TaperedWearSettings,
-    on_period: &mut dyn FnMut(&TaperedPeriod),
+    on_period: &mut dyn FnMut(&TaperedPeriod) -> std::ops::ControlFlow<()>,
 ) -> Result<TaperedLife, WearError> {
     if !(settings.period_s > 0.0 && settings.life_s > 0.0) {
         return Err(WearError::Input(
@@ -163,9 +164,12 @@ pub fn run_tapered_life(
             rates: current,
             wear: wear.clone(),
         };
-        on_period(&period);
+        let flow = on_period(&period);
         periods.push(period);
         current = next;
+        if flow.is_break() {
+            break;
+        }
     }
     Ok(TaperedLife {
         periods,

@@ -1,11 +1,14 @@
-//! `rolldyn simulate` on a double-row tapered bearing (seed 000 §3.2.1): the run, its table
-//! and plots with `--out`, the summary.
+//! `simulate` on a double-row tapered bearing (seed 000 §3.2.1): the run, its table and plots
+//! with `out`, the summary.
 
-use super::simulate::{Args, check_output_size, checked_output_step, progress_bar};
+use super::request::SimulateRequest;
+use super::result::{Run, SimulateResult};
+use crate::analysis::Context;
 use crate::failure::Failure;
-use crate::output::print_json;
-use rolldyn::output::out_dir;
-use rolldyn::run_record::{ModelOrigin, finish_out_folder};
+use crate::observer::Progress;
+use crate::output::out_dir;
+use crate::run_record::{ModelOrigin, finish_out_folder};
+use crate::table::Table;
 use rolldyn_dynamics::tapered::{
     SAMPLE_COLUMNS, TaperedRun, TaperedRunSettings, TaperedSample, axial_spectrum, run_recorded,
     sample_row, steady_window, summary_entries,
@@ -13,48 +16,55 @@ use rolldyn_dynamics::tapered::{
 use rolldyn_output::{Formats, TableWriter};
 use rolldyn_plot::{Labels, Series, line_plot};
 use rolldyn_report::RunKind;
+use std::ops::ControlFlow;
 use std::path::Path;
 
-/// Runs the tapered model of `model` as `simulate` asks.
-/// `progress(t, t_end)` is called after every sample and may stop the run.
-pub fn run_tapered(
-    args: &Args,
+/// Runs the tapered bearing `model` as `request` asks; the observer hears of every sample.
+pub fn run(
+    request: &SimulateRequest,
     model: &rolldyn_model::Model,
-    progress: &mut dyn FnMut(f64, f64) -> std::ops::ControlFlow<()>,
-) -> Result<(), Failure> {
-    refuse_cylindrical_only_flags(args)?;
-    let output_step = checked_output_step(args.output_step)?;
-    let tm = rolldyn_setup::prepare_tapered(model, &args.operating.overrides())?;
+    context: &Context<'_>,
+) -> Result<SimulateResult, Failure> {
+    refuse_cylindrical_only_options(request)?;
+    let output_step = request.output_step_s()?;
+    let tm = rolldyn_setup::prepare_tapered(model, &request.operating.overrides())?;
     let revolution = std::f64::consts::TAU / tm.epicyclic_cage_speed.abs();
-    let t_end = args
+    let t_end = request
         .duration
         .end_time(Some(revolution))
         .map_err(Failure::Input)?;
-    if args.out.is_some() {
+    if request.out.is_some() {
         let samples = (t_end / output_step).floor() + 1.0;
         let values = samples * SAMPLE_COLUMNS.len() as f64;
-        check_output_size(values, samples, t_end, output_step, args.max_output)?;
+        request.check_output_size(values, samples, t_end, output_step)?;
     }
     let mut settings = TaperedRunSettings {
         duration_s: t_end,
         sample_interval_s: output_step,
-        row1_offset_pitch: args.row_offset.unwrap_or(0.0),
+        row1_offset_pitch: request.row_offset.unwrap_or(0.0),
         ..TaperedRunSettings::default()
     };
-    if let Some(tol) = args.tolerance {
+    if let Some(tol) = request.tolerance {
         settings.integrator.tolerance = tol;
     }
-    if let Some(method) = args.integrator {
+    if let Some(method) = request.integrator {
         settings.integrator.method = method.method();
     }
-    let dir = args.out.as_deref().map(out_dir).transpose()?;
-    let bar = progress_bar(args.quiet, t_end);
+    let dir = request.out.as_deref().map(out_dir).transpose()?;
+    let observer = context.observer;
     let wall = std::time::Instant::now();
     let result = run_recorded(&tm, &settings, None, |t| {
-        bar.set_position((1000.0 * t / t_end).min(1000.0) as u64);
-        progress(t, t_end)
+        observer.progress(&Progress {
+            done: t.min(t_end),
+            total: t_end,
+            unit: "s",
+            message: None,
+        });
+        match observer.stop_requested() {
+            true => ControlFlow::Break(()),
+            false => ControlFlow::Continue(()),
+        }
     });
-    bar.finish_and_clear();
     let outcome = result.map_err(|e| Failure::Run(format!("the simulation stopped: {e}")))?;
     let wall_s = wall.elapsed().as_secs_f64();
     if let Some(dir) = &dir {
@@ -64,50 +74,40 @@ pub fn run_tapered(
     entries.push(("simulated_s".into(), t_end));
     entries.push(("wall_time_s".into(), wall_s));
     entries.push(("steps".into(), outcome.steps as f64));
-    let mut map = serde_json::Map::new();
-    map.insert("model".into(), model.bearing.name().into());
-    for (k, v) in &entries {
-        map.insert(k.clone(), serde_json::json!(v));
-    }
-    if let Some(c) = &outcome.most_limiting {
-        map.insert("most_limiting".into(), c.clone().into());
-    }
-    if let Some(d) = &dir {
-        map.insert("out".into(), d.display().to_string().into());
-    }
-    let answer = serde_json::Value::Object(map);
+    let tables = match request.keep_tables {
+        true => vec![sample_table(&outcome)],
+        false => Vec::new(),
+    };
+    let result = SimulateResult {
+        model: model.bearing.name().to_string(),
+        run: Run::Tapered {
+            duration_s: t_end,
+            entries,
+            most_limiting: outcome.most_limiting.clone(),
+        },
+        output_folder: dir.clone(),
+        tables,
+    };
     if let Some(dir) = &dir {
-        let model_source = rolldyn::ModelSource::file_or_embedded(args.model.as_deref());
-        let model_file = ModelOrigin::Source(&model_source);
         finish_out_folder(
             dir,
             RunKind::Simulate,
-            model_file,
-            &crate::output::invocation(),
-            &answer,
-            args.report,
+            ModelOrigin::Source(&context.model),
+            &context.invocation,
+            &result,
+            request.report,
         )?;
     }
-    if args.json {
-        return print_json(&answer);
-    }
-    println!(
-        "{} — double-row tapered, {t_end:.4} s simulated",
-        model.bearing.name()
-    );
-    for (k, v) in &entries {
-        println!("  {k:32} {v:.6e}");
-    }
-    Ok(())
+    Ok(result)
 }
 
-/// Refuses (bad input) the `simulate` flags the tapered dynamics does not have yet: checkpoints
-/// and the cage-load export of the machined cage's fatigue analysis.
-fn refuse_cylindrical_only_flags(args: &Args) -> Result<(), Failure> {
+/// Refuses (bad input) the options the tapered dynamics does not have yet: checkpoints and the
+/// cage-load export of the machined cage's fatigue analysis.
+fn refuse_cylindrical_only_options(request: &SimulateRequest) -> Result<(), Failure> {
     let flags = [
-        ("--checkpoint", args.checkpoint.is_some()),
-        ("--resume", args.resume.is_some()),
-        ("--cage-loads", args.cage_loads.is_some()),
+        ("--checkpoint", request.checkpoint.is_some()),
+        ("--resume", request.resume.is_some()),
+        ("--cage-loads", request.cage_loads.is_some()),
     ];
     match flags.iter().find(|(_, given)| *given) {
         Some((flag, _)) => Err(Failure::Input(format!(
@@ -115,6 +115,13 @@ fn refuse_cylindrical_only_flags(args: &Args) -> Result<(), Failure> {
         ))),
         None => Ok(()),
     }
+}
+
+/// The samples as the table `tapered` (the columns of `tapered.csv`).
+fn sample_table(run: &TaperedRun) -> Table {
+    let names: Vec<String> = SAMPLE_COLUMNS.iter().map(|s| s.to_string()).collect();
+    let values: Vec<f64> = run.samples.iter().flat_map(sample_row).collect();
+    Table::from_rows("tapered", &names, &values)
 }
 
 /// `tapered.csv`/`.parquet` and the plots of seed 000 Figs. 3.75–3.81.

@@ -1,0 +1,555 @@
+//! Cage high-cycle fatigue from one steady revolution of the dynamics (seed 000 §2.5,
+//! docs/theory.md §10), and rainflow counting of any stress history (ASTM E1049).
+
+use crate::analysis::{Analysis, Context};
+use crate::failure::Failure;
+use crate::observer::Progress;
+use crate::operating::Operating;
+use crate::output::out_dir;
+use crate::run_record::{ModelOrigin, finish_out_folder};
+use crate::table::{Table, Tables};
+use rolldyn_fatigue::damage::MeanStressSettings;
+use rolldyn_fatigue::inclusion::{InclusionSettings, Interface};
+use rolldyn_fatigue::mean_stress::MeanStressCorrection;
+use rolldyn_fatigue::sn::{BelowKnee, SnCurve};
+use rolldyn_fatigue::study::{
+    FatigueAnswer, FatigueError, FatigueSettings, REQUIRED_STRESS_SAFETY_FACTOR, RevolutionMaxima,
+    StressModelKind, evaluate, record_loads,
+};
+use rolldyn_fatigue::{
+    CageLoadExport, Cycle, HistoryKind, UnitStresses, rainflow, read_history_csv,
+};
+use rolldyn_report::RunKind;
+use rolldyn_units::{Length, Quantity};
+use serde::{Deserialize, Serialize};
+use std::ops::ControlFlow;
+use std::fmt;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+/// The cage stress model.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Deserialize)]
+#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
+#[serde(rename_all = "kebab-case")]
+pub enum StressName {
+    /// the embedded beam frame with fillet stress-concentration factors (fast)
+    #[default]
+    Frame,
+    /// a gmsh + CalculiX solid model (unit cases cached per cage geometry)
+    Calculix,
+}
+
+/// Cycles below the knee of the S–N curve.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Deserialize)]
+#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
+#[serde(rename_all = "kebab-case")]
+pub enum BelowKneeName {
+    /// the knee is an endurance limit: cycles below it do no damage
+    #[default]
+    NoDamage,
+    /// the last segment's slope continues below the knee
+    Extrapolate,
+    /// Haibach: slope 2k − 1 below the knee
+    Haibach,
+}
+
+/// The mean-stress correction of the counted cycles.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Deserialize)]
+#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
+#[serde(rename_all = "kebab-case")]
+pub enum MeanStressName {
+    /// the amplitude alone (the seed states no correction)
+    #[default]
+    None,
+    Goodman,
+    Gerber,
+    /// Smith–Watson–Topper
+    Swt,
+}
+
+/// The interface of the Al₂O₃ inclusion with the steel.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Deserialize)]
+#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
+#[serde(rename_all = "kebab-case")]
+pub enum InterfaceName {
+    /// the interface opens where it would carry tension (the seed's contact interface)
+    #[default]
+    Debonded,
+    /// perfectly bonded everywhere
+    Bonded,
+}
+
+/// A cage fatigue analysis of the context's model (or of a load export).
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct FatigueRequest {
+    /// Overrides of the model's operating point.
+    pub operating: Operating,
+    pub stress: StressName,
+    /// Cage revolutions simulated and discarded before the recorded one.
+    pub revolutions: u32,
+    /// Evaluate the Al₂O₃ inclusion (2 × 3.5 × 5 µm) at the critical location too.
+    pub inclusion: Option<InterfaceName>,
+    pub mean_stress: MeanStressName,
+    /// Radius of the window-corner fillet, overriding the model's `cage.pocket.fillet_radius`.
+    pub fillet_radius: Option<Quantity<Length>>,
+    /// Stress-concentration factors of the frame model's fillets, `[tension, bending]`
+    /// (default: from the fillet radius by Roark's charts).
+    pub stress_concentration: Option<[f64; 2]>,
+    /// The base S–N curve (fully reversed) as CSV rows `N, sigma_a_MPa` (default: AISI 4340).
+    pub sn_curve: Option<PathBuf>,
+    /// Factor on the S–N curve for the silver plating.
+    pub coating_factor: f64,
+    /// Safety factor on stress (applied to the S–N curve besides the coating factor).
+    pub safety_factor: f64,
+    pub below_knee: BelowKneeName,
+    /// Read the cage loads from an export (`simulate --cage-loads`) instead of running the
+    /// dynamics.
+    pub loads: Option<PathBuf>,
+    /// Output folder: the load export, stress history, damage map and plots.
+    pub out: Option<PathBuf>,
+    /// Write the HTML report of the `out` folder at the end of the run.
+    pub report: bool,
+    /// Folder of the cached CalculiX unit cases (default `out/calculix-cache`).
+    pub cache: Option<PathBuf>,
+}
+
+impl Default for FatigueRequest {
+    fn default() -> Self {
+        Self {
+            operating: Operating::default(),
+            stress: StressName::Frame,
+            revolutions: 8,
+            inclusion: None,
+            mean_stress: MeanStressName::None,
+            fillet_radius: None,
+            stress_concentration: None,
+            sn_curve: None,
+            coating_factor: 1.5,
+            safety_factor: 1.0,
+            below_knee: BelowKneeName::NoDamage,
+            loads: None,
+            out: None,
+            report: false,
+            cache: None,
+        }
+    }
+}
+
+/// `2.5,2.0` → `[2.5, 2.0]`, both at least 1.
+pub fn parse_factor_pair(text: &str) -> Result<[f64; 2], String> {
+    let values: Vec<f64> = text
+        .split(',')
+        .map(|v| v.trim().parse::<f64>())
+        .collect::<Result<_, _>>()
+        .map_err(|e| format!("'{text}': {e}"))?;
+    match values.as_slice() {
+        &[t, b] => check_factor_pair([t, b]).map_err(|e| format!("'{text}': {e}")),
+        _ => Err(format!(
+            "'{text}': two factors ≥ 1, tension and bending, e.g. 2.5,2.0"
+        )),
+    }
+}
+
+fn check_factor_pair([t, b]: [f64; 2]) -> Result<[f64; 2], String> {
+    if t >= 1.0 && b >= 1.0 && t.is_finite() && b.is_finite() {
+        Ok([t, b])
+    } else {
+        Err("two factors ≥ 1, tension and bending, e.g. 2.5,2.0".into())
+    }
+}
+
+impl FatigueRequest {
+    /// The fatigue settings the request asks for.
+    pub fn settings(&self) -> Result<FatigueSettings, Failure> {
+        let defaults = FatigueSettings::default();
+        let sn_settings = rolldyn_fatigue::sn::SnSettings {
+            coating_factor: self.coating_factor,
+            stress_safety_factor: self.safety_factor,
+            below_knee: match self.below_knee {
+                BelowKneeName::NoDamage => BelowKnee::NoDamage,
+                BelowKneeName::Extrapolate => BelowKnee::Extrapolate,
+                BelowKneeName::Haibach => BelowKnee::Haibach,
+            },
+        };
+        let base = match &self.sn_curve {
+            Some(path) => {
+                let file = path.display().to_string();
+                let text = rolldyn_model::read_input_file(path)
+                    .map_err(|e| Failure::Input(format!("{file}: {e}")))?;
+                SnCurve::from_csv_text(&text).map_err(|e| Failure::Input(format!("{file}: {e}")))?
+            }
+            None => defaults.sn.clone(),
+        };
+        let sn = base
+            .with_settings(sn_settings)
+            .map_err(|e| Failure::Input(format!("--coating-factor/--safety-factor: {e}")))?;
+        let stress_concentration = self
+            .stress_concentration
+            .map(check_factor_pair)
+            .transpose()
+            .map_err(|e| Failure::Input(format!("--stress-concentration: {e}")))?;
+        Ok(FatigueSettings {
+            stress_model: match self.stress {
+                StressName::Frame => StressModelKind::Frame,
+                StressName::Calculix => StressModelKind::Calculix,
+            },
+            settle_revolutions: self.revolutions,
+            frame: rolldyn_fatigue::frame::FrameSettings {
+                stress_concentration,
+                ..defaults.frame.clone()
+            },
+            fillet_radius_m: self.fillet_radius.map(|f| f.si()),
+            sn,
+            inclusion: self.inclusion.map(|interface| InclusionSettings {
+                interface: match interface {
+                    InterfaceName::Debonded => Interface::Debonded,
+                    InterfaceName::Bonded => Interface::Bonded,
+                },
+                ..InclusionSettings::default()
+            }),
+            mean_stress: MeanStressSettings {
+                correction: match self.mean_stress {
+                    MeanStressName::None => MeanStressCorrection::None,
+                    MeanStressName::Goodman => MeanStressCorrection::Goodman,
+                    MeanStressName::Gerber => MeanStressCorrection::Gerber,
+                    MeanStressName::Swt => MeanStressCorrection::SmithWatsonTopper,
+                },
+                ..defaults.mean_stress
+            },
+            ..defaults
+        })
+    }
+}
+
+/// A fatigue failure as an analysis failure: bad input or a failed run.
+pub fn failure(e: FatigueError) -> Failure {
+    match e {
+        FatigueError::Input(m) => Failure::Input(m),
+        FatigueError::Numerical(m) => Failure::Run(m),
+        FatigueError::Interrupted => Failure::Run("fatigue interrupted during the dynamics run".into()),
+    }
+}
+
+/// The unit stresses of the exported cage by the settings' stress model; CalculiX cases are
+/// cached in `cache` (created).
+pub fn unit_stresses(
+    export: &CageLoadExport,
+    settings: &FatigueSettings,
+    cache: &Path,
+) -> Result<UnitStresses, Failure> {
+    let cage = &export.header.cage;
+    let z = export.header.bar_station_z_m;
+    match settings.stress_model {
+        StressModelKind::Frame => rolldyn_fatigue::frame::unit_stresses(cage, z, &settings.frame)
+            .map_err(|e| Failure::Input(e.to_string())),
+        StressModelKind::Calculix => rolldyn_fatigue::calculix::unit_stresses(
+            cage,
+            z,
+            &rolldyn_fatigue::calculix::CalculixSettings::default(),
+            Some(&out_dir(cache)?),
+        )
+        .map_err(|e| Failure::Run(e.to_string())),
+    }
+}
+
+/// The cage's life: what `rolldyn fatigue --json` prints.
+#[derive(Clone, Debug, Serialize)]
+pub struct FatigueResult {
+    pub model: String,
+    #[serde(flatten)]
+    pub fatigue: FatigueAnswer,
+    pub dynamics_wall_s: f64,
+    pub wall_time_s: f64,
+    pub files: Vec<String>,
+    /// Rainflow cycles of the critical location's equivalent stress.
+    #[serde(skip)]
+    pub critical_cycles: Vec<Cycle>,
+}
+
+impl Tables for FatigueResult {
+    fn tables(&self) -> Vec<Table> {
+        vec![cycles_table(&self.critical_cycles)]
+    }
+}
+
+fn cycles_table(cycles: &[Cycle]) -> Table {
+    Table::new("cycles")
+        .real("range", cycles.iter().map(|c| c.range).collect())
+        .real("mean", cycles.iter().map(|c| c.mean).collect())
+        .real("count", cycles.iter().map(|c| c.count).collect())
+}
+
+impl fmt::Display for FatigueResult {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let a = &self.fatigue;
+        writeln!(
+            f,
+            "{}: cage fatigue by the {:?} model, {} load sets at {:.0} rpm",
+            self.model, a.stress_model, a.load_sets, a.cage_speed_rpm
+        )?;
+        writeln!(
+            f,
+            "  critical location {}: largest |stress| {:.1} MPa, damage {:.3e} per revolution",
+            a.critical_location,
+            a.max_stress_pa * 1e-6,
+            a.damage_per_revolution
+        )?;
+        if a.life_revolutions.is_finite() {
+            writeln!(
+                f,
+                "  life {:.4e} revolutions = {:.4e} h",
+                a.life_revolutions, a.life_hours
+            )?;
+        } else {
+            writeln!(f, "  no cycle above the endurance limit: unlimited life")?;
+        }
+        writeln!(
+            f,
+            "  endurance margin (knee amplitude / largest equivalent amplitude) {:.2}, stress safety factor {:.2}: required stress safety factor {} {}",
+            a.endurance_margin,
+            a.stress_safety_factor,
+            REQUIRED_STRESS_SAFETY_FACTOR,
+            if a.stress_safety_factor >= REQUIRED_STRESS_SAFETY_FACTOR {
+                "met"
+            } else {
+                "not met"
+            }
+        )?;
+        if let Some(life) = a.inclusion_life_revolutions {
+            let life = if life.is_finite() {
+                format!("{life:.4e} revolutions")
+            } else {
+                "unlimited".into()
+            };
+            writeln!(
+                f,
+                "  with the inclusion: life {life}, largest matrix stress {:.1} MPa, endurance margin {:.2}",
+                a.inclusion_max_stress_pa.unwrap_or(f64::NAN) * 1e-6,
+                a.inclusion_endurance_margin.unwrap_or(f64::NAN)
+            )?;
+        }
+        write!(
+            f,
+            "  wall {:.1} s (dynamics {:.1} s)",
+            self.wall_time_s, self.dynamics_wall_s
+        )?;
+        for file in &self.files {
+            write!(f, "\n  wrote {file}")?;
+        }
+        Ok(())
+    }
+}
+
+/// The fatigue stages, for progress.
+const STAGES: f64 = 4.0;
+
+fn stage(context: &Context<'_>, done: f64, message: String) -> Result<(), Failure> {
+    if context.observer.stop_requested() {
+        return Err(Failure::Run(format!(
+            "fatigue interrupted before {message}"
+        )));
+    }
+    context.observer.progress(&Progress {
+        done,
+        total: STAGES,
+        unit: "stages",
+        message: Some(message),
+    });
+    Ok(())
+}
+
+/// The cage fatigue analysis.
+pub struct Fatigue;
+
+impl Analysis for Fatigue {
+    const NAME: &'static str = "fatigue";
+    type Request = FatigueRequest;
+    type Result = FatigueResult;
+
+    fn run(request: &FatigueRequest, context: &Context<'_>) -> Result<FatigueResult, Failure> {
+        let wall = Instant::now();
+        let settings = request.settings()?;
+        if request.report && request.out.is_none() {
+            return Err(Failure::Input(
+                "--report needs an output folder (--out)".into(),
+            ));
+        }
+        let (mut export, maxima) = match &request.loads {
+            Some(_) if request.operating.any() => {
+                return Err(Failure::Input(
+                    "--loads: the operating point is that of the export; drop the operating overrides"
+                        .into(),
+                ));
+            }
+            Some(path) => {
+                let export = CageLoadExport::read(path).map_err(Failure::Input)?;
+                let maxima = RevolutionMaxima::of_export(&export);
+                (export, maxima)
+            }
+            None => {
+                let model = context.model.load()?;
+                stage(
+                    context,
+                    0.0,
+                    format!(
+                        "dynamics: {} cage revolutions and the recorded one",
+                        settings.settle_revolutions
+                    ),
+                )?;
+                let mut watch = |t: f64, settled: f64| {
+                    context.observer.progress(&Progress {
+                        done: (t / settled.max(f64::MIN_POSITIVE)).min(1.0),
+                        total: STAGES,
+                        unit: "stages",
+                        message: Some(format!("dynamics, t = {t:.4} s")),
+                    });
+                    if context.observer.stop_requested() {
+                        ControlFlow::Break(())
+                    } else {
+                        ControlFlow::Continue(())
+                    }
+                };
+                let (export, maxima, _) =
+                    record_loads(&model, &request.operating.overrides(), &settings, &mut watch)
+                        .map_err(failure)?;
+                (export, maxima)
+            }
+        };
+        // an export read back keeps its model's fillet unless the request overrides it
+        export.header.cage = export
+            .header
+            .cage
+            .with_fillet_radius(settings.fillet_radius_m);
+        let dynamics_s = wall.elapsed().as_secs_f64();
+        let cache = request
+            .cache
+            .clone()
+            .unwrap_or_else(|| PathBuf::from("out/calculix-cache"));
+        stage(
+            context,
+            1.0,
+            match settings.stress_model {
+                StressModelKind::Frame => "stresses: the beam frame's unit cases".into(),
+                StressModelKind::Calculix => format!(
+                    "stresses: CalculiX unit cases of this cage (from {} if solved before, else gmsh + ccx, about 2 min)",
+                    cache.display()
+                ),
+            },
+        )?;
+        let unit = unit_stresses(&export, &settings, &cache)?;
+        stage(context, 2.0, "damage: rainflow, S–N, Miner".into())?;
+        let result = evaluate(&unit, &export, Some(maxima), &settings).map_err(Failure::Run)?;
+        stage(context, 3.0, "report files".into())?;
+        let files = match &request.out {
+            Some(dir) => {
+                let dir = out_dir(dir)?;
+                rolldyn_fatigue::report::write_report(&dir, &export, &result, &settings)
+                    .map_err(Failure::Run)?
+            }
+            None => Vec::new(),
+        };
+        let answer = FatigueResult {
+            model: export.header.model.clone(),
+            fatigue: result.answer,
+            dynamics_wall_s: dynamics_s,
+            wall_time_s: wall.elapsed().as_secs_f64(),
+            files: files.iter().map(|f| f.display().to_string()).collect(),
+            critical_cycles: result.critical_cycles,
+        };
+        if let Some(dir) = &request.out {
+            let model = match request.loads {
+                Some(_) => ModelOrigin::None,
+                None => ModelOrigin::Source(&context.model),
+            };
+            finish_out_folder(
+                dir,
+                RunKind::Fatigue,
+                model,
+                &context.invocation,
+                &answer,
+                request.report,
+            )?;
+        }
+        Ok(answer)
+    }
+}
+
+/// Rainflow counting of a stress history in a CSV file.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RainflowRequest {
+    /// CSV file: one value per row (the first column, or `column` of a file with a header).
+    pub history: PathBuf,
+    /// Column to count (by its header name).
+    #[serde(default)]
+    pub column: Option<String>,
+    /// The file is one period of a repeating history (every cycle closes); otherwise the
+    /// residue counts as half cycles.
+    #[serde(default)]
+    pub periodic: bool,
+}
+
+/// The counted cycles.
+#[derive(Clone, Debug, Serialize)]
+pub struct RainflowResult {
+    pub history: String,
+    pub periodic: bool,
+    pub values: usize,
+    pub cycles: Vec<Cycle>,
+}
+
+impl Tables for RainflowResult {
+    fn tables(&self) -> Vec<Table> {
+        vec![cycles_table(&self.cycles)]
+    }
+}
+
+impl fmt::Display for RainflowResult {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        writeln!(
+            f,
+            "{}: {} values, {} cycles ({})",
+            self.history,
+            self.values,
+            self.cycles.iter().map(|c| c.count).sum::<f64>(),
+            if self.periodic {
+                "periodic"
+            } else {
+                "non-periodic, residue as half cycles"
+            }
+        )?;
+        write!(f, "{:>14} {:>14} {:>6}", "range", "mean", "count")?;
+        for c in &self.cycles {
+            write!(f, "\n{:>14.6e} {:>14.6e} {:>6}", c.range, c.mean, c.count)?;
+        }
+        Ok(())
+    }
+}
+
+/// Rainflow cycle counting (ASTM E1049 four-point).
+pub struct Rainflow;
+
+impl Analysis for Rainflow {
+    const NAME: &'static str = "rainflow";
+    type Request = RainflowRequest;
+    type Result = RainflowResult;
+
+    fn run(request: &RainflowRequest, _context: &Context<'_>) -> Result<RainflowResult, Failure> {
+        let file = request.history.display().to_string();
+        let bad = |e: String| Failure::Input(format!("{file}: {e}"));
+        let text = rolldyn_model::read_input_file(&request.history).map_err(bad)?;
+        let values = read_history_csv(&text, request.column.as_deref()).map_err(bad)?;
+        let kind = if request.periodic {
+            HistoryKind::Periodic
+        } else {
+            HistoryKind::NonPeriodic
+        };
+        Ok(RainflowResult {
+            cycles: rainflow(&values, kind),
+            history: file,
+            periodic: request.periodic,
+            values: values.len(),
+        })
+    }
+}
