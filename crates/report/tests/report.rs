@@ -2,19 +2,35 @@
 //! escaping of the folder's texts.
 
 use rolldyn_report::{Level, ReportError, RunKind, RunManifest, report_folder};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
-fn scratch(name: &str) -> PathBuf {
+/// A fresh scratch folder, removed when dropped.
+struct Scratch(PathBuf);
+
+impl std::ops::Deref for Scratch {
+    type Target = Path;
+    fn deref(&self) -> &Path {
+        &self.0
+    }
+}
+
+impl Drop for Scratch {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
+
+fn scratch(name: &str) -> Scratch {
     let dir = std::env::temp_dir().join(format!("rolldyn-report-{name}-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
-    dir
+    Scratch(dir)
 }
 
 const PLOT: &str = "<?xml version=\"1.0\"?>\n<svg width=\"10\" height=\"10\" \
                     xmlns=\"http://www.w3.org/2000/svg\"><rect width=\"5\" height=\"5\"/></svg>";
 
-fn simulate_folder(name: &str, summary: serde_json::Value) -> PathBuf {
+fn simulate_folder(name: &str, summary: serde_json::Value) -> Scratch {
     let dir = scratch(name);
     std::fs::write(dir.join("bearing.csv"), "time_s,cage_slip\n0,0.1\n").unwrap();
     std::fs::write(dir.join("cage_slip.svg"), PLOT).unwrap();
