@@ -3,7 +3,7 @@
 use crate::damage::{CycleDamage, DamageBreakdown};
 use crate::rainflow::Cycle;
 use crate::sn::SnCurve;
-use rolldyn_plot::{Field, Labels, PlotError, Series, heat_map, log_log_plot};
+use rolldyn_plot::{Field, Labels, MapLabels, PlotError, Series, log_log_plot, map_plot};
 use std::path::Path;
 
 /// Pa → MPa for the axes.
@@ -139,10 +139,10 @@ impl RainflowMatrix {
 pub fn rainflow_matrix(path: &Path, cycles: &[Cycle], bins: usize) -> Result<(), PlotError> {
     let matrix = RainflowMatrix::from_cycles(cycles, bins);
     let (m0, m1, r0, r1) = matrix.extent;
-    heat_map(
+    map_plot(
         path,
         &Labels {
-            title: "rainflow matrix: cycles per repeat",
+            title: "Rainflow matrix",
             x: "mean σ_m, MPa",
             y: "range Δσ, MPa",
         },
@@ -151,6 +151,10 @@ pub fn rainflow_matrix(path: &Path, cycles: &[Cycle], bins: usize) -> Result<(),
             nx: matrix.bins,
             ny: matrix.bins,
             extent: (m0 * PER_MPA, m1 * PER_MPA, r0 * PER_MPA, r1 * PER_MPA),
+        },
+        &MapLabels {
+            value: "cycles per repeat",
+            outline: &[],
         },
     )
 }

@@ -1,4 +1,6 @@
-//! Streaming tables of `f64` columns written as CSV and/or Parquet.
+//! Streaming tables of `f64` columns written as CSV and/or Parquet; a column of whole numbers
+//! (an index, a count, a flag) is declared [`ColumnKind::Integer`] and written as integers
+//! (`3`, Parquet INT64), not `3e0`.
 //!
 //! A [`TableWriter`] receives one row at a time and never holds more than one Parquet row group
 //! (default 4096 rows) in memory, so a long simulation streams to disk. Rows written before a
@@ -14,11 +16,11 @@ pub mod non_finite;
 pub mod size;
 
 pub use mixed_table::{Column, Values, write_parquet_table};
-pub use non_finite::{csv_field, default_reason, mark_non_finite};
+pub use non_finite::{csv_field, csv_integer, default_reason, mark_non_finite};
 pub use size::{ByteSize, estimated_table_bytes};
 
 use parquet::basic::Compression;
-use parquet::data_type::DoubleType;
+use parquet::data_type::{DoubleType, Int64Type};
 use parquet::file::properties::WriterProperties;
 use parquet::file::writer::SerializedFileWriter;
 use parquet::schema::parser::parse_message_type;
@@ -57,12 +59,39 @@ impl Default for Formats {
     }
 }
 
+/// What a column holds: real numbers, or whole numbers (rounded when written).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum ColumnKind {
+    #[default]
+    Real,
+    Integer,
+}
+
+impl ColumnKind {
+    /// The CSV field of `value` in a column of this kind (empty when it is not finite).
+    pub fn csv_field(self, value: f64) -> String {
+        match self {
+            Self::Real => csv_field(value),
+            Self::Integer => csv_integer(value),
+        }
+    }
+
+    /// `value` as this kind stores it (whole numbers rounded).
+    fn stored(self, value: f64) -> f64 {
+        match self {
+            Self::Real => value,
+            Self::Integer => value.round(),
+        }
+    }
+}
+
 struct ParquetSink {
     path: PathBuf,
     writer: SerializedFileWriter<File>,
     /// Column-major buffer of the current row group: the finite values of each column and the
     /// definition level of each row (1 value, 0 null).
     columns: Vec<(Vec<f64>, Vec<i16>)>,
+    kinds: Vec<ColumnKind>,
 }
 
 impl ParquetSink {
@@ -75,10 +104,20 @@ impl ParquetSink {
         let mut k = 0;
         while let Some(mut column) = group.next_column().map_err(|e| fail(&path, e))? {
             let (values, levels) = &mut self.columns[k];
-            column
-                .typed::<DoubleType>()
-                .write_batch(values, Some(levels), None)
-                .map_err(|e| fail(&path, e))?;
+            match self.kinds[k] {
+                ColumnKind::Real => {
+                    column
+                        .typed::<DoubleType>()
+                        .write_batch(values, Some(levels), None)
+                }
+                ColumnKind::Integer => {
+                    let whole: Vec<i64> = values.iter().map(|v| v.round() as i64).collect();
+                    column
+                        .typed::<Int64Type>()
+                        .write_batch(&whole, Some(levels), None)
+                }
+            }
+            .map_err(|e| fail(&path, e))?;
             column.close().map_err(|e| fail(&path, e))?;
             values.clear();
             levels.clear();
@@ -92,6 +131,7 @@ impl ParquetSink {
 /// A table of named `f64` columns streamed to `<stem>.csv` and/or `<stem>.parquet`.
 pub struct TableWriter {
     names: Vec<String>,
+    kinds: Vec<ColumnKind>,
     csv: Option<(PathBuf, csv::Writer<File>)>,
     parquet: Option<ParquetSink>,
     row_group_rows: usize,
@@ -170,7 +210,19 @@ impl TableWriter {
         names: &[String],
         formats: Formats,
     ) -> Result<Self, OutputError> {
-        let mut table = Self::without_csv(dir, stem, names, formats)?;
+        Self::create_typed(dir, stem, names, &[], formats)
+    }
+
+    /// [`TableWriter::create`] with the kind of each column (`kinds[k]` for `names[k]`;
+    /// columns past the end of `kinds` are real).
+    pub fn create_typed(
+        dir: &Path,
+        stem: &str,
+        names: &[String],
+        kinds: &[ColumnKind],
+        formats: Formats,
+    ) -> Result<Self, OutputError> {
+        let mut table = Self::without_csv(dir, stem, names, kinds, formats)?;
         if formats.csv {
             let path = dir.join(format!("{stem}.csv"));
             let mut writer = csv::Writer::from_path(&path).map_err(|e| fail(&path, e))?;
@@ -195,11 +247,24 @@ impl TableWriter {
         names: &[String],
         formats: Formats,
         kept: KeptRows,
+        on_row: impl FnMut(&[f64]),
+    ) -> Result<Self, OutputError> {
+        Self::resume_typed(dir, stem, names, &[], formats, kept, on_row)
+    }
+
+    /// [`TableWriter::resume`] with the kind of each column (as [`TableWriter::create_typed`]).
+    pub fn resume_typed(
+        dir: &Path,
+        stem: &str,
+        names: &[String],
+        kinds: &[ColumnKind],
+        formats: Formats,
+        kept: KeptRows,
         mut on_row: impl FnMut(&[f64]),
     ) -> Result<Self, OutputError> {
         let keep_rows = kept.rows;
         if keep_rows == 0 {
-            return Self::create(dir, stem, names, formats);
+            return Self::create_typed(dir, stem, names, kinds, formats);
         }
         let path = dir.join(format!("{stem}.csv"));
         if !formats.csv {
@@ -218,7 +283,7 @@ impl TableWriter {
                 "its rows differ from those of the interrupted run (the folder of another run?)",
             ));
         }
-        let mut table = Self::without_csv(dir, stem, &names, formats)?;
+        let mut table = Self::without_csv(dir, stem, &names, kinds, formats)?;
         read_rows(&path, &names, keep_rows, |row| {
             table.push_parquet(row)?;
             on_row(row);
@@ -240,14 +305,22 @@ impl TableWriter {
         dir: &Path,
         stem: &str,
         names: &[String],
+        kinds: &[ColumnKind],
         formats: Formats,
     ) -> Result<Self, OutputError> {
         let names = column_names(names).map_err(|e| fail(&dir.join(stem), e))?;
+        let kinds: Vec<ColumnKind> = (0..names.len())
+            .map(|k| kinds.get(k).copied().unwrap_or_default())
+            .collect();
         let parquet = if formats.parquet {
             let path = dir.join(format!("{stem}.parquet"));
             let fields: String = names
                 .iter()
-                .map(|n| format!("OPTIONAL DOUBLE {n}; "))
+                .zip(&kinds)
+                .map(|(n, kind)| match kind {
+                    ColumnKind::Real => format!("OPTIONAL DOUBLE {n}; "),
+                    ColumnKind::Integer => format!("OPTIONAL INT64 {n}; "),
+                })
                 .collect();
             let schema = parse_message_type(&format!(
                 "message {stem_name} {{ {fields}}}",
@@ -264,12 +337,14 @@ impl TableWriter {
                 path,
                 writer,
                 columns: vec![(Vec::new(), Vec::new()); names.len()],
+                kinds: kinds.clone(),
             })
         } else {
             None
         };
         Ok(Self {
             names,
+            kinds,
             csv: None,
             parquet,
             row_group_rows: 4096,
@@ -282,6 +357,11 @@ impl TableWriter {
     /// Column names as written (sanitised for Parquet).
     pub fn names(&self) -> &[String] {
         &self.names
+    }
+
+    /// The kind of each column.
+    pub fn kinds(&self) -> &[ColumnKind] {
+        &self.kinds
     }
 
     /// Rows written so far.
@@ -311,9 +391,26 @@ impl TableWriter {
                 ),
             ));
         }
+        let stored: Vec<f64>;
+        let values = match self.kinds.contains(&ColumnKind::Integer) {
+            true => {
+                stored = values
+                    .iter()
+                    .zip(&self.kinds)
+                    .map(|(&v, kind)| kind.stored(v))
+                    .collect();
+                &stored[..]
+            }
+            false => values,
+        };
         if let Some((path, writer)) = &mut self.csv {
             writer
-                .write_record(values.iter().map(|&v| csv_field(v)))
+                .write_record(
+                    values
+                        .iter()
+                        .zip(&self.kinds)
+                        .map(|(&v, kind)| kind.csv_field(v)),
+                )
                 .map_err(|e| fail(path, e))?;
         }
         self.push_parquet(values)?;

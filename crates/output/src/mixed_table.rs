@@ -5,7 +5,7 @@
 
 use crate::{OutputError, column_name, column_names, fail};
 use parquet::basic::Compression;
-use parquet::data_type::{ByteArray, ByteArrayType, DoubleType};
+use parquet::data_type::{ByteArray, ByteArrayType, DoubleType, Int64Type};
 use parquet::file::properties::WriterProperties;
 use parquet::file::writer::SerializedFileWriter;
 use parquet::schema::parser::parse_message_type;
@@ -19,6 +19,8 @@ pub enum Values<'a> {
     Text(&'a [Option<String>]),
     /// Doubles; a value that is not finite is a null.
     Numbers(&'a [f64]),
+    /// Whole numbers (an index, a count; Parquet INT64); `None` is a null.
+    Integers(&'a [Option<i64>]),
 }
 
 /// A named column of a [`write_parquet_table`].
@@ -37,6 +39,7 @@ pub fn write_parquet_table(path: &Path, columns: &[Column<'_>]) -> Result<(), Ou
         .map(|(c, name)| match c.values {
             Values::Text(_) => format!("OPTIONAL BYTE_ARRAY {name} (UTF8); "),
             Values::Numbers(_) => format!("OPTIONAL DOUBLE {name}; "),
+            Values::Integers(_) => format!("OPTIONAL INT64 {name}; "),
         })
         .collect();
     let stem = path.file_stem().map(|s| s.to_string_lossy().to_string());
@@ -70,6 +73,12 @@ pub fn write_parquet_table(path: &Path, columns: &[Column<'_>]) -> Result<(), Ou
                 let present: Vec<f64> = numbers.iter().copied().filter(|v| v.is_finite()).collect();
                 let levels: Vec<i16> = numbers.iter().map(|v| i16::from(v.is_finite())).collect();
                 sink.typed::<DoubleType>()
+                    .write_batch(&present, Some(&levels), None)
+            }
+            Values::Integers(numbers) => {
+                let present: Vec<i64> = numbers.iter().flatten().copied().collect();
+                let levels: Vec<i16> = numbers.iter().map(|v| i16::from(v.is_some())).collect();
+                sink.typed::<Int64Type>()
                     .write_batch(&present, Some(&levels), None)
             }
         }

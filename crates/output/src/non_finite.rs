@@ -44,6 +44,16 @@ pub fn csv_field(value: f64) -> String {
     }
 }
 
+/// A CSV field of a whole number (an index, a count): the value rounded and written as an
+/// integer (`3`, never `3e0`), empty when it is not finite.
+pub fn csv_integer(value: f64) -> String {
+    if value.is_finite() {
+        format!("{}", value.round() as i64)
+    } else {
+        String::new()
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -68,5 +78,8 @@ mod tests {
         assert_eq!(csv_field(f64::NAN), "");
         assert_eq!(csv_field(-f64::INFINITY), "");
         assert_eq!(csv_field(0.5), "5e-1");
+        assert_eq!(csv_integer(3.0), "3");
+        assert_eq!(csv_integer(-2.0), "-2");
+        assert_eq!(csv_integer(f64::NAN), "");
     }
 }

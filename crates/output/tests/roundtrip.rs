@@ -168,3 +168,46 @@ fn resumed_table_equals_an_uninterrupted_one() {
     }
     std::fs::remove_dir_all(dir).ok();
 }
+
+/// An index or a count is written as an integer (`3`, Parquet INT64), not `3e0`, and a table
+/// with such columns resumes like any other.
+#[test]
+fn integer_columns_are_written_as_integers() {
+    use rolldyn_output::ColumnKind;
+    let dir = std::env::temp_dir().join(format!("rolldyn-output-int-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let names = vec!["roller".to_string(), "force_n".to_string()];
+    let kinds = [ColumnKind::Integer, ColumnKind::Real];
+    let mut w =
+        TableWriter::create_typed(&dir, "ints", &names, &kinds, Formats::default()).unwrap();
+    w.write_row(&[1.0, 2.5]).unwrap();
+    w.write_row(&[2.0, f64::NAN]).unwrap();
+    w.write_row(&[f64::NAN, 3.0]).unwrap();
+    let kept = w.kept();
+    w.write_row(&[4.0, 4.0]).unwrap();
+    w.finish().unwrap();
+    let csv = std::fs::read_to_string(dir.join("ints.csv")).unwrap();
+    assert_eq!(
+        csv.lines().collect::<Vec<_>>(),
+        ["roller,force_n", "1,2.5e0", "2,", ",3e0", "4,4e0"]
+    );
+    let reader =
+        SerializedFileReader::new(std::fs::File::open(dir.join("ints.parquet")).unwrap()).unwrap();
+    let first = reader.get_row_iter(None).unwrap().next().unwrap().unwrap();
+    assert_eq!(first.get_long(0).unwrap(), 1);
+    let mut resumed = TableWriter::resume_typed(
+        &dir,
+        "ints",
+        &names,
+        &kinds,
+        Formats::default(),
+        kept,
+        |_| {},
+    )
+    .unwrap();
+    resumed.write_row(&[5.0, 5.0]).unwrap();
+    resumed.finish().unwrap();
+    let csv = std::fs::read_to_string(dir.join("ints.csv")).unwrap();
+    assert_eq!(csv.lines().last(), Some("5,5e0"));
+    std::fs::remove_dir_all(dir).ok();
+}

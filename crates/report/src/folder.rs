@@ -27,6 +27,8 @@ pub enum CsvContent {
 pub struct Table {
     pub header: Vec<String>,
     pub rows: Vec<Vec<String>>,
+    /// The columns of the parameters a sweep varied (shown first, marked).
+    pub varied: Vec<String>,
 }
 
 impl Table {
@@ -179,7 +181,11 @@ pub fn read_table(path: &Path) -> Result<Table, ReportError> {
         .map(|r| r.map(|r| r.iter().map(String::from).collect()))
         .collect::<Result<_, _>>()
         .map_err(bad)?;
-    Ok(Table { header, rows })
+    Ok(Table {
+        header,
+        rows,
+        varied: Vec::new(),
+    })
 }
 
 /// A sweep's `summary.csv` and, per row, the plots of `variants/<name>-wear` or `-fatigue`.

@@ -2,9 +2,9 @@
 
 use crate::folder::{CsvContent, OutputFolder, Plot, Table};
 use crate::quantities::{display, significant};
-use crate::warnings::{Warnings, flattened};
+use crate::warnings::{Level, Warnings, flattened};
 use crate::{
-    CAGE_LAND_FORCE_THRESHOLD_N, RunKind, SCUFFING_CAUTION_MARGIN, SCUFFING_PREDICTED_MARGIN,
+    CAGE_LAND_TO_ROLLER_FORCE_RATIO, RunKind, SCUFFING_CAUTION_MARGIN, SCUFFING_PREDICTED_MARGIN,
 };
 use serde_json::Value;
 use std::fmt::Write;
@@ -17,7 +17,10 @@ const SEED_TABLE: [(&str, &[(&str, &str)]); 6] = [
     (
         "Cage",
         &[
-            ("cage_slip_mean", "cage slip (mean)"),
+            (
+                "cage_slip_mean",
+                "cage slip (mean), fraction 1 − ω_c/ω_epicyclic",
+            ),
             ("cage_speed_mean_rad_s", "cage speed (mean)"),
             ("epicyclic_cage_speed_rad_s", "epicyclic cage speed"),
         ],
@@ -115,13 +118,17 @@ pub fn page(folder: &OutputFolder, warnings: &Warnings) -> String {
         escape(&folder.dir.display().to_string())
     );
     html.push_str(&navigation(folder));
+    html.push_str(&headline_section(folder));
     html.push_str(&warnings_section(warnings));
-    html.push_str(&inputs_section(folder));
     html.push_str(&summary_section(folder));
     if let Some((table, variants)) = &folder.sweep {
-        html.push_str(&variants_section(table, variants));
+        html.push_str(&variants_section(
+            &ordered(table, &varied_columns(folder)),
+            variants,
+        ));
     }
     html.push_str(&plots_section("plots", "Plots", &folder.plots));
+    html.push_str(&inputs_section(folder));
     html.push_str(&tables_section(folder));
     let _ = write!(html, "<script>\n{SORT_SCRIPT}</script>\n</body>\n</html>\n");
     html
@@ -129,14 +136,18 @@ pub fn page(folder: &OutputFolder, warnings: &Warnings) -> String {
 
 fn navigation(folder: &OutputFolder) -> String {
     let mut links = vec![
-        ("warnings", "Warnings"),
-        ("inputs", "Inputs"),
+        ("headline", "Results"),
+        ("warnings", "Findings"),
         ("summary", "Summary"),
     ];
     if folder.sweep.is_some() {
         links.push(("variants", "Variants"));
     }
-    links.extend([("plots", "Plots"), ("tables", "Tables")]);
+    links.extend([
+        ("plots", "Plots"),
+        ("inputs", "Inputs"),
+        ("tables", "Tables"),
+    ]);
     let items: Vec<String> = links
         .iter()
         .map(|(id, label)| format!("<a href=\"#{id}\">{label}</a>"))
@@ -144,33 +155,217 @@ fn navigation(folder: &OutputFolder) -> String {
     format!("<nav>{}</nav>\n", items.join(" · "))
 }
 
-fn warnings_section(warnings: &Warnings) -> String {
-    let class = if warnings.alerts.is_empty() {
-        "warnings clear"
-    } else {
-        "warnings"
+/// The figures that answer a run of each kind, in this order, where the answer has them.
+const HEADLINES: [(RunKind, &[(&str, &str)]); 4] = [
+    (
+        RunKind::Simulate,
+        &[
+            ("cage_slip_mean", "cage slip (mean), fraction"),
+            ("cage_speed_mean_rad_s", "cage speed (mean)"),
+            ("epicyclic_cage_speed_rad_s", "epicyclic cage speed"),
+            (
+                "max_inner_contact_force_n",
+                "largest roller – inner raceway force",
+            ),
+            ("max_roller_cage_force_n", "largest roller – cage force"),
+            ("max_cage_land_force_n", "largest cage – land force"),
+            ("min_scuffing_margin", "scuffing margin s_cr/s (min)"),
+            ("whirl_ratio", "whirl ratio"),
+        ],
+    ),
+    (
+        RunKind::Wear,
+        &[
+            ("life_h", "operating time worn"),
+            ("stop", "stopped by"),
+            ("clearance_increase_m", "radial clearance increase"),
+            (
+                "max_depth_m.inner_raceway",
+                "largest wear depth, inner raceway",
+            ),
+            (
+                "max_depth_m.outer_raceway",
+                "largest wear depth, outer raceway",
+            ),
+            ("max_depth_m.roller", "largest wear depth, roller"),
+            ("max_depth_m.cage_bar", "largest wear depth, cage bar"),
+        ],
+    ),
+    (
+        RunKind::Fatigue,
+        &[
+            ("life_hours", "cage life"),
+            ("endurance_margin", "endurance margin"),
+            ("max_stress_pa", "largest fillet stress"),
+            ("critical_location", "critical fillet"),
+            (
+                "extrapolated_life_revolutions",
+                "extrapolated life, revolutions",
+            ),
+            ("cage_speed_rpm", "cage speed"),
+        ],
+    ),
+    (RunKind::Sweep, &[("varied", "varied")]),
+];
+
+/// The headline: the few figures that answer the run, before anything else.
+fn headline_section(folder: &OutputFolder) -> String {
+    let mut html = String::from("<section id=\"headline\">\n<h2>Results</h2>\n");
+    let Some(m) = &folder.manifest else {
+        html.push_str("<p>No run summary (no <code>run.json</code>); see the plots and tables below.</p>\n</section>\n");
+        return html;
     };
-    let mut html = format!("<section id=\"warnings\" class=\"{class}\">\n<h2>Warnings</h2>\n");
-    if warnings.alerts.is_empty() {
-        html.push_str("<p>No warning: no scuffing, no cage–land contact, every point converged and finite.</p>\n");
-    } else {
-        html.push_str("<ul>\n");
-        for alert in &warnings.alerts {
+    let figures = flattened(&m.summary);
+    let keys = HEADLINES
+        .iter()
+        .find(|(kind, _)| *kind == folder.kind)
+        .map_or(&[][..], |(_, keys)| *keys);
+    let mut cards = String::new();
+    for (key, label) in keys {
+        let value = match m.summary.pointer(&format!("/{}", key.replace('.', "/"))) {
+            Some(Value::Array(items)) => Value::from(
+                items
+                    .iter()
+                    .map(|v| v.as_str().map_or(v.to_string(), String::from))
+                    .collect::<Vec<_>>()
+                    .join(", "),
+            ),
+            Some(v) => v.clone(),
+            None => continue,
+        };
+        let text = match (&value, m.summary.get("damage_per_revolution")) {
+            (Value::Null, Some(d)) if key.starts_with("life_") && d.as_f64() == Some(0.0) => {
+                "∞ (no damaging cycle)".to_string()
+            }
+            (Value::Null, _) => match m
+                .summary
+                .get("non_finite")
+                .and_then(|n| n.get(*key))
+                .and_then(Value::as_str)
+            {
+                Some(reason) => format!("— ({reason})"),
+                None => "—".into(),
+            },
+            _ => value_text(key, &value),
+        };
+        let _ = writeln!(
+            cards,
+            "<div class=\"figure-card\"><div class=\"value\">{}</div><div class=\"label\">{}</div></div>",
+            escape(&text),
+            escape(label)
+        );
+    }
+    if let Some((table, _)) = &folder.sweep {
+        let failed = table
+            .rows
+            .iter()
+            .filter(|r| table.field(r, "error").is_some_and(|e| !e.is_empty()))
+            .count();
+        let _ = writeln!(
+            cards,
+            "<div class=\"figure-card\"><div class=\"value\">{}</div><div class=\"label\">variants ({failed} failed)</div></div>",
+            table.rows.len()
+        );
+    }
+    if cards.is_empty() {
+        for (key, value) in figures.iter().filter(|(_, v)| v.is_number()).take(6) {
+            let _ = writeln!(
+                cards,
+                "<div class=\"figure-card\"><div class=\"value\">{}</div><div class=\"label\"><code>{}</code></div></div>",
+                escape(&value_text(key, value)),
+                escape(key)
+            );
+        }
+    }
+    let _ = write!(
+        html,
+        "<div class=\"headline\">\n{cards}</div>\n</section>\n"
+    );
+    html
+}
+
+/// The findings: errors (red) and warnings (amber) open, notes (grey) folded; a run with
+/// neither shows one green line.
+fn warnings_section(warnings: &Warnings) -> String {
+    let mut html = String::from("<section id=\"warnings\">\n<h2>Findings</h2>\n");
+    if warnings.serious().next().is_none() {
+        html.push_str(
+            "<p class=\"all-clear\">No error or warning: no scuffing, no cage pressed on its land, every point converged, every figure finite.</p>\n",
+        );
+    }
+    for (level, title, open) in [
+        (Level::Error, "Errors", true),
+        (Level::Warning, "Warnings", true),
+        (Level::Note, "Notes", false),
+    ] {
+        let alerts: Vec<_> = warnings.at(level).collect();
+        if alerts.is_empty() {
+            continue;
+        }
+        let _ = writeln!(
+            html,
+            "<details class=\"finding {}\"{}><summary>{title} ({})</summary>\n<ul>",
+            level.name(),
+            if open { " open" } else { "" },
+            alerts.len()
+        );
+        for alert in alerts {
             let _ = writeln!(html, "<li>{}</li>", escape(&alert.to_string()));
         }
-        html.push_str("</ul>\n");
-    }
-    for note in &warnings.notes {
-        let _ = writeln!(html, "<p class=\"note\">{}</p>", escape(note));
+        html.push_str("</ul>\n</details>\n");
     }
     let _ = writeln!(
         html,
-        "<p class=\"note\">Thresholds: scuffing predicted when the minimum scuffing margin s_cr/s is below \
+        "<p class=\"thresholds\">Thresholds: scuffing predicted (error) when the minimum scuffing margin s_cr/s is below \
          {SCUFFING_PREDICTED_MARGIN} (slip past the critical slip), a warning below {SCUFFING_CAUTION_MARGIN}; \
-         cage on its land when the cage–land force exceeds {CAGE_LAND_FORCE_THRESHOLD_N} N \
+         a land-guided cage on its land is a note, a warning when the cage–land force exceeds \
+         {CAGE_LAND_TO_ROLLER_FORCE_RATIO} × the largest roller–cage force \
          (docs/outputs.md, \"Run manifest and HTML report\").</p>\n</section>"
     );
     html
+}
+
+/// The varied parameters of a sweep: the `varied` list of its answer, else none.
+fn varied_columns(folder: &OutputFolder) -> Vec<String> {
+    folder
+        .manifest
+        .as_ref()
+        .and_then(|m| m.summary.get("varied"))
+        .and_then(Value::as_array)
+        .map(|items| {
+            items
+                .iter()
+                .filter_map(|v| v.as_str().map(String::from))
+                .collect()
+        })
+        .unwrap_or_default()
+}
+
+/// `table` with the `variant` column first, the `varied` columns next, then the others.
+fn ordered(table: &Table, varied: &[String]) -> Table {
+    let rank = |name: &str| match name {
+        "variant" => 0,
+        n if varied.iter().any(|v| v == n) => 1,
+        _ => 2,
+    };
+    let mut order: Vec<usize> = (0..table.header.len()).collect();
+    order.sort_by_key(|&k| rank(&table.header[k]));
+    let pick = |row: &[String]| -> Vec<String> {
+        order
+            .iter()
+            .map(|&k| row.get(k).cloned().unwrap_or_default())
+            .collect()
+    };
+    Table {
+        header: pick(&table.header),
+        rows: table.rows.iter().map(|r| pick(r)).collect(),
+        varied: table
+            .header
+            .iter()
+            .filter(|h| varied.contains(h))
+            .cloned()
+            .collect(),
+    }
 }
 
 fn inputs_section(folder: &OutputFolder) -> String {
@@ -250,12 +445,29 @@ fn summary_section(folder: &OutputFolder) -> String {
         figures.len()
     );
     html.push_str("<table class=\"figures\">\n");
-    for (key, value) in &figures {
+    let reasons: Vec<(String, String)> = figures
+        .iter()
+        .filter_map(|(key, value)| {
+            let figure = key
+                .strip_prefix("non_finite.")
+                .map(String::from)
+                .or_else(|| {
+                    key.find(".non_finite.")
+                        .map(|at| format!("{}.{}", &key[..at], &key[at + 12..]))
+                })?;
+            Some((figure, value.as_str().unwrap_or_default().to_string()))
+        })
+        .collect();
+    for (key, value) in figures.iter().filter(|(k, _)| !k.contains("non_finite")) {
+        let mut text = value_text(key, value);
+        if let Some((_, reason)) = reasons.iter().find(|(figure, _)| figure == key) {
+            text = format!("{text} ({reason})");
+        }
         let _ = writeln!(
             html,
             "<tr><th><code>{}</code></th><td>{}</td></tr>",
             escape(key),
-            escape(&value_text(key, value))
+            escape(&text)
         );
     }
     html.push_str("</table>\n</details>\n</section>\n");
@@ -280,11 +492,19 @@ fn seed_table(summary: &Value) -> String {
         );
         for (key, label) in rows {
             let value = summary.get(key).unwrap_or(&Value::Null);
+            let mut text = value_text(key, value);
+            if let Some(reason) = summary
+                .get("non_finite")
+                .and_then(|n| n.get(key))
+                .and_then(Value::as_str)
+            {
+                text = format!("{text} ({reason})");
+            }
             let _ = writeln!(
                 html,
                 "<tr><th>{}</th><td>{}</td></tr>",
                 escape(label.trim_start()),
-                escape(&value_text(key, value))
+                escape(&text)
             );
         }
     }
@@ -301,7 +521,15 @@ fn sortable_table(
     let mut html =
         format!("<div class=\"scroll\"><table id=\"{id}\" class=\"sortable\">\n<thead><tr>");
     for name in &table.header {
-        let _ = write!(html, "<th title=\"sort by {0}\">{0}</th>", escape(name));
+        let class = match table.varied.contains(name) {
+            true => " class=\"varied\"",
+            false => "",
+        };
+        let _ = write!(
+            html,
+            "<th{class} title=\"sort by {0}\">{0}</th>",
+            escape(name)
+        );
     }
     html.push_str("</tr></thead>\n<tbody>\n");
     for (i, row) in table.rows.iter().enumerate() {
@@ -330,7 +558,7 @@ fn variant_anchor(index: usize) -> String {
 fn variants_section(table: &Table, variants: &[crate::folder::Variant]) -> String {
     let mut html = String::from(
         "<section id=\"variants\">\n<h2>Variants</h2>\n<p>Click a column header to sort; click a variant for its section. \
-         Figures in SI units as in the column names.</p>\n",
+         Figures in SI units as in the column names; the varied parameters come first, marked.</p>\n",
     );
     html.push_str(&sortable_table(
         "variants-table",
@@ -344,20 +572,27 @@ fn variants_section(table: &Table, variants: &[crate::folder::Variant]) -> Strin
             variant_anchor(i),
             escape(&variant.name)
         );
-        if let Some(error) = table.field(&variant.row, "error").filter(|e| !e.is_empty()) {
+        if let Some(error) = table
+            .field(&table.rows[i], "error")
+            .filter(|e| !e.is_empty())
+        {
             let _ = writeln!(html, "<p class=\"error\">Failed: {}</p>", escape(error));
         }
         html.push_str("<table class=\"figures\">\n");
-        for (key, field) in table.header.iter().zip(&variant.row) {
+        for (key, field) in table.header.iter().zip(&table.rows[i]) {
             if field.is_empty() || key == "error" || key == "variant" {
                 continue;
             }
             let shown = field
                 .parse::<f64>()
                 .map_or(field.clone(), |v| display(key, v));
+            let class = match table.varied.contains(key) {
+                true => " class=\"varied\"",
+                false => "",
+            };
             let _ = writeln!(
                 html,
-                "<tr><th><code>{}</code></th><td>{}</td></tr>",
+                "<tr{class}><th><code>{}</code></th><td>{}</td></tr>",
                 escape(key),
                 escape(&shown)
             );

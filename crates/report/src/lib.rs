@@ -10,7 +10,8 @@ mod warnings;
 
 pub use manifest::{MANIFEST_FILE, RunKind, RunManifest};
 pub use warnings::{
-    CAGE_LAND_FORCE_THRESHOLD_N, SCUFFING_CAUTION_MARGIN, SCUFFING_PREDICTED_MARGIN,
+    CAGE_LAND_FORCE_THRESHOLD_N, CAGE_LAND_TO_ROLLER_FORCE_RATIO, Level, SCUFFING_CAUTION_MARGIN,
+    SCUFFING_PREDICTED_MARGIN,
 };
 
 use std::path::{Path, PathBuf};
@@ -40,12 +41,24 @@ impl ReportError {
     }
 }
 
-/// A written report: where, of what kind of run, and the warnings at its top.
+/// A written report: where, of what kind of run, and its findings.
 #[derive(Debug, Clone, serde::Serialize)]
 pub struct WrittenReport {
     pub report: PathBuf,
     pub kind: RunKind,
+    /// The errors and warnings (not the notes), most severe first.
     pub warnings: Vec<String>,
+    /// Every finding with its level (error, warning, note).
+    pub findings: Vec<Finding>,
+}
+
+/// One finding of a report.
+#[derive(Debug, Clone, serde::Serialize)]
+pub struct Finding {
+    pub level: Level,
+    /// `""` for the run itself, else `variant <name>`.
+    pub place: String,
+    pub text: String,
 }
 
 /// Writes `dir/report.html` and returns its path.
@@ -63,6 +76,15 @@ pub fn report_folder(dir: &Path) -> Result<WrittenReport, ReportError> {
     Ok(WrittenReport {
         report: path,
         kind: folder.kind,
-        warnings: warnings.alerts.iter().map(|w| w.to_string()).collect(),
+        warnings: warnings.serious().map(|w| w.to_string()).collect(),
+        findings: warnings
+            .alerts
+            .iter()
+            .map(|a| Finding {
+                level: a.level,
+                place: a.place.clone(),
+                text: a.text.clone(),
+            })
+            .collect(),
     })
 }

@@ -289,7 +289,7 @@ pub fn write_outputs(dir: &Path, model: &str, rows: &[FrozenPointRow]) -> Result
                 r.slip_history
                     .iter()
                     .enumerate()
-                    .map(|(i, s)| ((i + 1) as f64, 100.0 * s))
+                    .map(|(i, s)| ((i + 1) as f64, *s))
                     .collect(),
             )
         })
@@ -299,7 +299,7 @@ pub fn write_outputs(dir: &Path, model: &str, rows: &[FrozenPointRow]) -> Result
         &Labels {
             title: &format!("{model}: cage slip per revolution at each frozen point"),
             x: "cage revolution",
-            y: "cage slip, %",
+            y: "cage slip (fraction)",
         },
         &Series::from_pairs(&curves),
     )
@@ -311,14 +311,14 @@ pub fn write_outputs(dir: &Path, model: &str, rows: &[FrozenPointRow]) -> Result
             .filter(|p| p.1.is_finite())
             .collect()
     };
-    let dynamic = curve(|r| 100.0 * r.cage_slip_dynamic);
-    let quasi_static = curve(|r| 100.0 * r.cage_slip_quasi_static);
+    let dynamic = curve(|r| r.cage_slip_dynamic);
+    let quasi_static = curve(|r| r.cage_slip_quasi_static);
     line_plot(
         &dir.join("startup_cage_slip.svg"),
         &Labels {
             title: &format!("{model}: cage slip at the frozen start-up points"),
             x: "start-up time, s",
-            y: "cage slip, %",
+            y: "cage slip (fraction)",
         },
         &[
             Series {

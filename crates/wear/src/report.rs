@@ -6,7 +6,7 @@ use crate::rates::{ContactDiagnostics, SurfaceWear};
 use crate::surface::Surface;
 use rolldyn_geometry::angle_bin_centre_rad;
 use rolldyn_output::{Formats, OutputError, TableWriter};
-use rolldyn_plot::{Field, Labels, PlotError, Series, heat_map, line_plot};
+use rolldyn_plot::{Field, Labels, MapLabels, PlotError, Series, line_plot, map_plot};
 use std::path::{Path, PathBuf};
 
 /// µm per m
@@ -224,18 +224,26 @@ impl WearTables {
             &Series::from_pairs(&rates),
         )?;
         written.push(path);
-        for (name, map) in [
-            ("inner-raceway-map.svg", &depth.inner_map),
-            ("outer-raceway-map.svg", &depth.outer_map),
+        for (name, title, map) in [
+            (
+                "inner-raceway-map.svg",
+                "Inner-raceway wear depth at the end (ring frame)",
+                &depth.inner_map,
+            ),
+            (
+                "outer-raceway-map.svg",
+                "Outer-raceway wear depth at the end (ring frame)",
+                &depth.outer_map,
+            ),
         ] {
             // heat_map stores x fastest: angle along x, axial line along y
             let values: Vec<f64> = map.iter().map(|d| d * UM).collect();
             let (x0, x1) = (positions_mm[0], positions_mm[positions_mm.len() - 1]);
             let path = dir.join(name);
-            heat_map(
+            map_plot(
                 &path,
                 &Labels {
-                    title: "Raceway wear depth at the end, µm (ring frame)",
+                    title,
                     x: "angle, deg",
                     y: "axial position, mm",
                 },
@@ -244,6 +252,10 @@ impl WearTables {
                     nx: depth.bins,
                     ny: depth.lines,
                     extent: (0.0, 360.0, x0, x1),
+                },
+                &MapLabels {
+                    value: "wear depth, µm",
+                    outline: &[],
                 },
             )?;
             written.push(path);
