@@ -3,7 +3,6 @@
 //! rainflow → S–N and Miner → life and critical location, and with an inclusion the life at the
 //! critical location with the inclusion's local stresses.
 
-use std::ops::ControlFlow;
 use crate::cage::{CageGeometry, FilletPoint};
 use crate::damage::{DamageBreakdown, MeanStressSettings, life_hours, miner_damage};
 use crate::frame::{FilletFactors, FrameSettings, fillet_factors};
@@ -15,6 +14,7 @@ use crate::sn::{BelowKnee, SnCurve, SnSettings};
 use crate::unit_stresses::{Stress, UnitStresses, signed_von_mises};
 use rolldyn_geometry::CylindricalRollerBearing;
 use serde::Serialize;
+use std::ops::ControlFlow;
 
 // at its old path too (the `rolldyn fatigue` command names it here); it lives with the export
 pub use crate::loads::RevolutionMaxima;
@@ -392,8 +392,12 @@ pub fn record_loads(
     };
     let settle = settings.settle_revolutions as f64 * period;
     let mut watched = |t: f64| watch(t, settle);
-    sim.run_until_interruptible(settle, &mut rolldyn_dynamics::output::NullSink, &mut watched)
-        .map_err(numerical)?;
+    sim.run_until_interruptible(
+        settle,
+        &mut rolldyn_dynamics::output::NullSink,
+        &mut watched,
+    )
+    .map_err(numerical)?;
     let mut recorder = CageLoadRecorder::default();
     let mut end = settle;
     let sets = loop {

@@ -9,7 +9,7 @@ use rolldyn_contact::boussinesq::BoussinesqOptions;
 use rolldyn_contact::roller_raceway::{
     ContactMethod, ContactReport, PressureMap, RollerRacewayContact, SliceLawChoice,
 };
-use rolldyn_plot::{Field, Labels, Series, heat_map, line_plot};
+use rolldyn_plot::{Field, Labels, MapLabels, Series, line_plot, map_plot};
 use rolldyn_units::{Angle, Force, Length, Quantity};
 use serde::de::{self, Deserializer};
 use serde::{Deserialize, Serialize};
@@ -405,7 +405,7 @@ fn write_outputs(dir: &Path, r: &ContactResult) -> Result<(), Failure> {
 pub fn plot_pressure_map(path: &Path, title: &str, map: &PressureMap) -> Result<(), Failure> {
     let (x0, x1, y0, y1) = map.extent;
     let mpa: Vec<f64> = map.pressure.iter().map(|p| p * 1e-6).collect();
-    heat_map(
+    map_plot(
         path,
         &Labels {
             title,
@@ -417,6 +417,10 @@ pub fn plot_pressure_map(path: &Path, title: &str, map: &PressureMap) -> Result<
             nx: map.nx,
             ny: map.ny,
             extent: (x0 * 1e3, x1 * 1e3, y0 * 1e3, y1 * 1e3),
+        },
+        &MapLabels {
+            value: "pressure, MPa",
+            outline: &[],
         },
     )?;
     Ok(())

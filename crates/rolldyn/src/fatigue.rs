@@ -22,8 +22,8 @@ use rolldyn_fatigue::{
 use rolldyn_report::RunKind;
 use rolldyn_units::{Length, Quantity};
 use serde::{Deserialize, Serialize};
-use std::ops::ControlFlow;
 use std::fmt;
+use std::ops::ControlFlow;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
@@ -227,7 +227,9 @@ pub fn failure(e: FatigueError) -> Failure {
     match e {
         FatigueError::Input(m) => Failure::Input(m),
         FatigueError::Numerical(m) => Failure::Run(m),
-        FatigueError::Interrupted => Failure::Run("fatigue interrupted during the dynamics run".into()),
+        FatigueError::Interrupted => {
+            Failure::Run("fatigue interrupted during the dynamics run".into())
+        }
     }
 }
 
@@ -410,9 +412,13 @@ impl Analysis for Fatigue {
                         ControlFlow::Continue(())
                     }
                 };
-                let (export, maxima, _) =
-                    record_loads(&model, &request.operating.overrides(), &settings, &mut watch)
-                        .map_err(failure)?;
+                let (export, maxima, _) = record_loads(
+                    &model,
+                    &request.operating.overrides(),
+                    &settings,
+                    &mut watch,
+                )
+                .map_err(failure)?;
                 (export, maxima)
             }
         };

@@ -9,7 +9,7 @@ use crate::output::{out_dir, write_csv};
 use crate::table::{Table, Tables};
 use rolldyn_model::journal::{JournalTarget, journal_target, load_journal, parse_grid};
 use rolldyn_output::{default_reason, mark_non_finite};
-use rolldyn_plot::{Field, Labels, Series, heat_map, line_plot};
+use rolldyn_plot::{Field, Labels, MapLabels, Series, line_plot, map_plot};
 use rolldyn_reynolds::journal::{
     FilmStart, JournalBearing, JournalOperating, JournalOptions, JournalResult as Solution,
     solve_eccentricity, solve_load,
@@ -652,7 +652,7 @@ impl<'a> PressureField<'a> {
             }
         }
         let (z0, z1) = (p.z[0].min(p.z[nz - 1]), p.z[0].max(p.z[nz - 1]));
-        heat_map(
+        map_plot(
             &dir.join("pressure_map.svg"),
             &Labels {
                 title: "Film pressure, MPa",
@@ -669,6 +669,10 @@ impl<'a> PressureField<'a> {
                     z0,
                     z1,
                 ),
+            },
+            &MapLabels {
+                value: "film pressure, MPa",
+                outline: &[],
             },
         )?;
         let mid: Vec<(f64, f64)> = self

@@ -12,7 +12,7 @@ use crate::observer::Progress;
 use crate::output::{out_dir, write_csv};
 use crate::table::{Table, Tables};
 use rolldyn_geometry::{BearingModel, DoubleRowTaperedBearing, TaperedRibFace};
-use rolldyn_plot::{Field, Labels, Series, heat_map_outlined, line_plot};
+use rolldyn_plot::{Field, Labels, MapLabels, Series, line_plot, map_plot};
 use rolldyn_quasistatic::QuasiStaticOptions;
 use rolldyn_quasistatic::studies::{self, NviTraction, StudyRow};
 use rolldyn_units::{Length, Quantity};
@@ -562,7 +562,7 @@ fn skid_rows_csv(t: &mut Out, path: &Path, rows: &[StudyRow]) -> Result<(), Fail
     )
 }
 
-/// Cage slip (%) of `rows` grouped by inner speed, against `x(row)`.
+/// Cage slip (fraction of the epicyclic speed) of `rows` grouped by inner speed, against `x(row)`.
 fn slip_curves(rows: &[StudyRow], x: impl Fn(&StudyRow) -> f64) -> Vec<(String, Vec<(f64, f64)>)> {
     let mut speeds: Vec<f64> = rows.iter().map(|r| r.inner_speed_rpm).collect();
     speeds.dedup();
@@ -572,7 +572,7 @@ fn slip_curves(rows: &[StudyRow], x: impl Fn(&StudyRow) -> f64) -> Vec<(String, 
             let points = rows
                 .iter()
                 .filter(|r| r.inner_speed_rpm == n)
-                .filter_map(|r| r.cage_slip.map(|s| (x(r), 100.0 * s)))
+                .filter_map(|r| r.cage_slip.map(|s| (x(r), s)))
                 .collect();
             (format!("{n:.0} rpm"), points)
         })
@@ -653,7 +653,7 @@ fn skidding_study(dir: &Path, t: &mut Out) -> Result<(), Failure> {
             &Labels {
                 title: &format!("O'Brien–Taylor cage slip vs radial load, {label}"),
                 x: "radial load, N",
-                y: "cage slip, %",
+                y: "cage slip (fraction)",
             },
             &Series::from_pairs(&curves),
         )?;
@@ -663,7 +663,7 @@ fn skidding_study(dir: &Path, t: &mut Out) -> Result<(), Failure> {
             &Labels {
                 title: &format!("O'Brien–Taylor cage slip vs misalignment at 201 N, {label}"),
                 x: "misalignment, arcmin",
-                y: "cage slip, %",
+                y: "cage slip (fraction)",
             },
             &Series::from_pairs(&curves),
         )?;
@@ -1156,7 +1156,7 @@ fn write_map_outputs(t: &mut Out, dir: &Path, map: &PressureMap) -> Result<(), F
         s.force_n,
         pair.reduced_curvature()
     );
-    heat_map_outlined(
+    map_plot(
         &dir.join(format!("{name}.svg")),
         &Labels {
             title: &title,
@@ -1174,7 +1174,10 @@ fn write_map_outputs(t: &mut Out, dir: &Path, map: &PressureMap) -> Result<(), F
                 (g.y_min + blocks.ny as f64 * blocks.size) * 1e3,
             ),
         },
-        &outline,
+        &MapLabels {
+            value: "pressure, MPa",
+            outline: &outline,
+        },
     )?;
     Ok(())
 }

@@ -5,7 +5,7 @@
 use crate::file::{SweepError, SweepFile, Variant};
 use crate::run::{Figure, RunOptions, fingerprint, stored};
 use rolldyn_output::{Column, Values, csv_field, write_parquet_table};
-use rolldyn_plot::{Labels, Series, line_plot};
+use rolldyn_plot::{Varied, variant_plot};
 use rolldyn_units::{Dimension, Quantity, UnitError};
 use std::collections::BTreeMap;
 use std::path::Path;
@@ -369,28 +369,16 @@ impl Summary {
         csv.flush().map_err(|e| e.to_string())
     }
 
-    /// `summary.parquet`, with the columns of the CSV (integers as doubles until the Parquet
-    /// writer has a whole-number column).
+    /// `summary.parquet`, with the columns of the CSV (whole numbers as INT64).
     pub fn write_parquet(&self, path: &Path) -> Result<(), String> {
-        let integers: Vec<Vec<f64>> = self
-            .columns
-            .iter()
-            .map(|c| match &c.values {
-                SummaryValues::Integer(v) => {
-                    v.iter().map(|n| n.map_or(f64::NAN, |n| n as f64)).collect()
-                }
-                _ => Vec::new(),
-            })
-            .collect();
         let table: Vec<Column> = self
             .columns
             .iter()
-            .zip(&integers)
-            .map(|(c, as_f64)| Column {
+            .map(|c| Column {
                 name: &c.name,
                 values: match &c.values {
                     SummaryValues::Text(v) => Values::Text(v),
-                    SummaryValues::Integer(_) => Values::Numbers(as_f64),
+                    SummaryValues::Integer(v) => Values::Integers(v),
                     SummaryValues::Real(v) => Values::Numbers(v),
                 },
             })
@@ -398,68 +386,53 @@ impl Summary {
         write_parquet_table(path, &table).map_err(|e| e.to_string())
     }
 
-    /// The x axis of the plots: the first numeric varied column, else the variant's position.
-    fn x_axis(&self) -> (String, Vec<f64>) {
-        let numeric = self.varied.iter().find_map(|name| {
-            let column = self.column(name)?;
-            let values: Vec<f64> = match &column.values {
-                SummaryValues::Real(v) => v.clone(),
-                SummaryValues::Integer(v) => {
-                    v.iter().map(|n| n.map_or(f64::NAN, |n| n as f64)).collect()
-                }
-                SummaryValues::Text(_) => return None,
-            };
-            Some((name.clone(), values))
-        });
-        numeric.unwrap_or_else(|| {
-            let index = match self.column("index").map(|c| &c.values) {
-                Some(SummaryValues::Integer(v)) => v
-                    .iter()
-                    .map(|n| n.map_or(f64::NAN, |n| n as f64 + 1.0))
-                    .collect(),
-                _ => Vec::new(),
-            };
-            ("variant (order in the sweep file)".into(), index)
-        })
+    /// A column's values as numbers (NaN where missing); none for a text column.
+    fn numbers(column: &SummaryColumn) -> Option<Vec<f64>> {
+        match &column.values {
+            SummaryValues::Real(v) => Some(v.clone()),
+            SummaryValues::Integer(v) => {
+                Some(v.iter().map(|n| n.map_or(f64::NAN, |n| n as f64)).collect())
+            }
+            SummaryValues::Text(_) => None,
+        }
     }
 
     /// `<column>.svg` in `dir` for every figure: its value per variant, against the first
-    /// numeric varied key when there is one.
+    /// numeric varied key when there is one, else at the variant names.
     pub fn plot(&self, dir: &Path) -> Result<(), String> {
-        let (x_label, x) = self.x_axis();
+        let names: Vec<String> = match self.column("variant").map(|c| &c.values) {
+            Some(SummaryValues::Text(v)) => {
+                v.iter().map(|n| n.clone().unwrap_or_default()).collect()
+            }
+            _ => Vec::new(),
+        };
+        let varied_values: Vec<(&str, Vec<f64>)> = self
+            .varied
+            .iter()
+            .filter_map(|name| Some((name.as_str(), Self::numbers(self.column(name)?)?)))
+            .collect();
+        let varied: Vec<Varied> = varied_values
+            .iter()
+            .map(|(column, values)| Varied { column, values })
+            .collect();
         let figures = self
             .columns
             .iter()
             .filter(|c| c.name != "index" && !self.varied.contains(&c.name));
         for column in figures {
-            let y: Vec<f64> = match &column.values {
-                SummaryValues::Real(v) => v.clone(),
-                SummaryValues::Integer(v) => {
-                    v.iter().map(|n| n.map_or(f64::NAN, |n| n as f64)).collect()
-                }
-                SummaryValues::Text(_) => continue,
+            let Some(y) = Self::numbers(column) else {
+                continue;
             };
-            let mut points: Vec<(f64, f64)> = x
-                .iter()
-                .zip(&y)
-                .map(|(x, y)| (*x, *y))
-                .filter(|p| p.0.is_finite() && p.1.is_finite())
-                .collect();
-            if points.is_empty() {
+            if y.iter().all(|v| !v.is_finite()) {
                 continue;
             }
-            points.sort_by(|a, b| a.0.total_cmp(&b.0));
-            line_plot(
+            variant_plot(
                 &dir.join(format!("{}.svg", column.name)),
-                &Labels {
-                    title: &format!("{} per variant", column.name),
-                    x: &x_label,
-                    y: &column.name,
-                },
-                &[Series {
-                    label: "",
-                    points: &points,
-                }],
+                &format!("{} per variant", column.name),
+                &column.name,
+                &names,
+                &varied,
+                &y,
             )
             .map_err(|e| e.to_string())?;
         }

@@ -5,7 +5,7 @@ use super::cage_loads::{export_period, sampling, write_cage_loads};
 use super::checkpoint::{checkpoint_interval, resume, write_checkpoint};
 use super::request::SimulateRequest;
 use super::result::{Run, SimulateResult, step_limits};
-use super::sinks::{FileSink, Sinks, encode_note};
+use super::sinks::{FileSink, OrbitCircles, Sinks, encode_note};
 use crate::analysis::Context;
 use crate::failure::Failure;
 use crate::observer::Progress;
@@ -100,7 +100,7 @@ pub fn run(
         }
     }
     let written = match (sinks.files, &dir) {
-        (Some(files), Some(dir)) => files.finish(dir),
+        (Some(files), Some(dir)) => files.finish(dir, &orbit_circles(model)),
         _ => Ok(()),
     };
     let summary = result.map_err(|e| {
@@ -150,4 +150,15 @@ fn memory_tables(memory: MemoryTables) -> Vec<Table> {
             &memory.revolutions,
         ),
     ]
+}
+
+/// The circles of the orbit plots of a cylindrical bearing's run.
+fn orbit_circles(model: &rolldyn_model::Model) -> OrbitCircles {
+    match &model.bearing {
+        rolldyn_geometry::BearingModel::Cylindrical(bearing) => OrbitCircles::of(bearing),
+        _ => OrbitCircles {
+            cage_land_gap_m: None,
+            ring_play_m: 0.0,
+        },
+    }
 }

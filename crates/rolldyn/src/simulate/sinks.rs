@@ -9,8 +9,8 @@ use rolldyn_dynamics::output_columns::{
     column_names, revolution_row, roller_row,
 };
 use rolldyn_fatigue::CageLoadRecorder;
-use rolldyn_output::{Formats, KeptRows, OutputError, TableWriter};
-use rolldyn_plot::{Labels, Series, line_plot};
+use rolldyn_output::{ColumnKind, Formats, KeptRows, OutputError, TableWriter};
+use rolldyn_plot::{ClearanceCircle, Labels, Series, line_plot, orbit_plot};
 use std::path::Path;
 
 /// Keeps at most `capacity` points of a history for plotting (halving the density when full),
@@ -139,6 +139,34 @@ pub fn decode_note(note: &[u8]) -> Result<Option<TablesNote>, String> {
 }
 
 /// Streams samples to tables and keeps decimated histories for the plots.
+/// The circles the orbit plots draw: the cage's radial gap on its guiding land (none for a
+/// cage without one) and the inner ring's radial play, half the diametral clearance G_r.
+pub struct OrbitCircles {
+    pub cage_land_gap_m: Option<f64>,
+    pub ring_play_m: f64,
+}
+
+impl OrbitCircles {
+    pub fn of(bearing: &rolldyn_geometry::CylindricalRollerBearing) -> Self {
+        Self {
+            cage_land_gap_m: bearing.cage_guidance_check().map(|c| c.land_radial_gap),
+            ring_play_m: 0.5 * bearing.clearance.radial,
+        }
+    }
+}
+
+/// The kind of each output column: whole numbers for the counters and indices.
+fn column_kinds(names: &[String]) -> Vec<ColumnKind> {
+    const WHOLE: [&str; 4] = ["roller", "revolution", "precession", "steady"];
+    names
+        .iter()
+        .map(|n| match WHOLE.contains(&n.as_str()) {
+            true => ColumnKind::Integer,
+            false => ColumnKind::Real,
+        })
+        .collect()
+}
+
 pub struct FileSink {
     bearing: TableWriter,
     rollers: TableWriter,
@@ -156,7 +184,9 @@ impl FileSink {
         let fresh = KeptRows { rows: 0, digest: 0 };
         let [bearing, rollers, revolutions] = kept.unwrap_or([fresh; 3]);
         let table = |stem: &str, names: Vec<String>, kept, on_row: &mut dyn FnMut(&[f64])| {
-            TableWriter::resume(dir, stem, &names, Formats::default(), kept, on_row).map_err(
+            let kinds = column_kinds(&names);
+            TableWriter::resume_typed(dir, stem, &names, &kinds, Formats::default(), kept, on_row)
+                .map_err(
                 |e| match resumed {
                     true => Failure::Input(format!(
                         "{e} (--resume continues the --out folder of the run that wrote the checkpoint)"
@@ -214,7 +244,8 @@ impl FileSink {
         Ok(())
     }
 
-    pub fn finish(self, dir: &Path) -> Result<(), Failure> {
+    /// Closes the tables and draws the plots; the orbits within `circles`.
+    pub fn finish(self, dir: &Path, circles: &OrbitCircles) -> Result<(), Failure> {
         if let Some(e) = self.error {
             return Err(Failure::Run(e.to_string()));
         }
@@ -244,31 +275,41 @@ impl FileSink {
             "cage_slip.svg",
             "Cage slip (1 − ω_c/ω_epicyclic)",
             "time, s",
-            "slip",
+            "cage slip (fraction)",
             &[Series {
                 label: "",
                 points: &self.plots.cage_slip.points,
             }],
         )?;
-        plot(
+        let orbit =
+            |file: &str, title: &str, points: &[(f64, f64)], circle: Option<ClearanceCircle>| {
+                let labels = Labels {
+                    title,
+                    x: "x, µm",
+                    y: "y, µm",
+                };
+                let series = [Series { label: "", points }];
+                orbit_plot(&dir.join(file), &labels, &series, circle.as_slice())
+            };
+        orbit(
             "cage_orbit.svg",
             "Cage centre orbit",
-            "x, µm",
-            "y, µm",
-            &[Series {
-                label: "",
-                points: &self.plots.cage_orbit.points,
-            }],
+            &self.plots.cage_orbit.points,
+            circles.cage_land_gap_m.map(|gap| ClearanceCircle {
+                label: "land clearance",
+                centre: (0.0, 0.0),
+                radius: gap * 1e6,
+            }),
         )?;
-        plot(
+        orbit(
             "inner_ring_orbit.svg",
             "Inner-ring centre orbit",
-            "x, µm",
-            "y, µm",
-            &[Series {
-                label: "",
-                points: &self.plots.inner_orbit.points,
-            }],
+            &self.plots.inner_orbit.points,
+            (circles.ring_play_m > 0.0).then(|| ClearanceCircle {
+                label: "radial play G_r/2",
+                centre: (0.0, 0.0),
+                radius: circles.ring_play_m * 1e6,
+            }),
         )?;
         plot(
             "roller_1_forces.svg",

@@ -14,7 +14,7 @@ use rolldyn_dynamics::tapered::{
     sample_row, steady_window, summary_entries,
 };
 use rolldyn_output::{Formats, TableWriter};
-use rolldyn_plot::{Labels, Series, line_plot};
+use rolldyn_plot::{Labels, Series, line_plot, orbit_plot};
 use rolldyn_report::RunKind;
 use std::ops::ControlFlow;
 use std::path::Path;
@@ -201,11 +201,12 @@ fn write_outputs(dir: &Path, run: &TaperedRun) -> Result<(), Failure> {
             "inner_ring_axial_spectrum.svg" => "frequency, Hz",
             _ => "time, ms",
         };
-        line_plot(
-            &dir.join(file),
-            &Labels { title, x, y },
-            &Series::from_pairs(&curves),
-        )
+        let labels = Labels { title, x, y };
+        let series = Series::from_pairs(&curves);
+        match file {
+            "inner_ring_trajectory.svg" => orbit_plot(&dir.join(file), &labels, &series, &[]),
+            _ => line_plot(&dir.join(file), &labels, &series),
+        }
         .map_err(|e| Failure::Run(e.to_string()))?;
     }
     Ok(())
