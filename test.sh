@@ -23,6 +23,9 @@ if [ ${#missing[@]} -gt 0 ]; then
     apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "${missing[@]}"
 fi
 
+# No module of a crate imports, directly or through others, a module that imports it.
+python3 tools/module_cycles.py
+
 cargo test --workspace
 
 # The program the Python answers are compared with, and the package (release builds share their
