@@ -305,7 +305,7 @@ impl FileSink {
             "inner_ring_orbit.svg",
             "Inner-ring centre orbit",
             &self.plots.inner_orbit.points,
-            (circles.ring_play_m > 0.0).then(|| ClearanceCircle {
+            (circles.ring_play_m > 0.0).then_some(ClearanceCircle {
                 label: "radial play G_r/2",
                 centre: (0.0, 0.0),
                 radius: circles.ring_play_m * 1e6,
