@@ -97,8 +97,8 @@ def _table(columns) -> pd.DataFrame:
     for name, kind, values in columns:
         if kind in ("f8", "i8"):
             data[name] = np.frombuffer(values, dtype="<" + kind)
-        else:  # an empty text cell is a missing value, as pandas reads it from CSV
-            data[name] = [v if v != "" else np.nan for v in values]
+        else:  # text; an empty cell is a missing value, as pandas reads it from CSV
+            data[name] = pd.Series([v if v != "" else np.nan for v in values], dtype=str)
     return pd.DataFrame(data)
 
 

@@ -33,7 +33,7 @@ def test_a_local_sweep_equals_the_command_line(tmp_path):
     expected = cli_summary(tmp_path / "cli")
     assert list(python["variant"]) == ["c0", "c9", "c30"]
     assert result.varied == ["clearance.radial_m"]
-    assert list(python.columns[:3]) == ["variant", "index", "clearance.radial_m"]
+    assert list(python.columns[:3]) == ["variant", "clearance.radial_m", "index"]
     pd.testing.assert_frame_equal(timeless(python), timeless(expected), check_exact=True)
 
 

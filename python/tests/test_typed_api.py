@@ -47,11 +47,21 @@ def test_a_result_shows_itself():
         (lambda: rolldyn.skid(MODEL, radial_load="200N..600N:200N"), "skid_sweep"),
         (lambda: rolldyn.oils(), "oils"),
         (lambda: rolldyn.traction(max_pressure="1GPa", rolling_speed="2.5m/s"), "traction"),
+        (lambda: rolldyn.loads("examples/tapered-cassette.toml", radial_load="118862N",
+                               axial_load="31192N"), "tapered_loads"),
+        (lambda: rolldyn.journal(radius="25mm", length="50mm", clearance="50um",
+                                 viscosity="0.05Pas", speed="3000rpm", eccentricity=0.6),
+         "midplane"),
+        (lambda: rolldyn.ehl_line(radius="5mm", viscosity="0.024Pas", rolling_speed="3.5m/s",
+                                  min_film="1um"), "profile"),
+        (lambda: rolldyn.wear(life="10h", out=None), "periods"),
     ],
 )
 def test_every_table_is_a_dataframe(call, table):
     result = call()
     assert table in result.tables, list(result.tables)
+    for name, frame in result.tables.items():
+        assert isinstance(frame, pd.DataFrame), name
     frame = result.tables[table]
     assert isinstance(frame, pd.DataFrame) and len(frame) > 0
     assert getattr(result, table) is frame
@@ -92,3 +102,15 @@ def test_ctrl_c_stops_every_long_call(name, tmp_path):
     assert "interrupted" in out
     # the running step (a sweep variant, a wear period's revolution, a fatigue stage) ends first
     assert time.monotonic() - started < 60
+
+
+def test_integer_columns_are_written_as_integers(tmp_path):
+    rolldyn.simulate(duration="0.5rev", out=tmp_path, tables=False)
+    first_row = (tmp_path / "rollers.csv").read_text().splitlines()[1]
+    header = (tmp_path / "rollers.csv").read_text().splitlines()[0].split(",")
+    assert first_row.split(",")[header.index("roller")] == "1"
+
+
+def test_a_run_warning_is_a_python_warning():
+    with pytest.warns(UserWarning, match="outside the documented range"):
+        rolldyn.film(load="1kN", rolling_speed="1m/s", temperature="250C")
