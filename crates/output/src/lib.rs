@@ -67,7 +67,32 @@ pub enum ColumnKind {
     Integer,
 }
 
+/// The columns that count or index (rows, rollers, revolutions, load sets, variants): whole
+/// numbers wherever a table has them.
+pub const WHOLE_NUMBER_COLUMNS: [&str; 7] = [
+    "row",
+    "roller",
+    "revolution",
+    "precession",
+    "steady",
+    "set",
+    "index",
+];
+
 impl ColumnKind {
+    /// The kind of a column by its name: [`WHOLE_NUMBER_COLUMNS`] are integers, the rest real.
+    pub fn of_column(name: &str) -> Self {
+        match WHOLE_NUMBER_COLUMNS.contains(&name) {
+            true => Self::Integer,
+            false => Self::Real,
+        }
+    }
+
+    /// The kinds of `names`, by [`ColumnKind::of_column`].
+    pub fn of_columns(names: &[String]) -> Vec<Self> {
+        names.iter().map(|n| Self::of_column(n)).collect()
+    }
+
     /// The CSV field of `value` in a column of this kind (empty when it is not finite).
     pub fn csv_field(self, value: f64) -> String {
         match self {
@@ -203,14 +228,15 @@ fn column_names(names: &[String]) -> Result<Vec<String>, String> {
 
 impl TableWriter {
     /// Creates `<dir>/<stem>.csv` and/or `<dir>/<stem>.parquet` with the given column names
-    /// (sanitised for Parquet; names that collide once sanitised are refused).
+    /// (sanitised for Parquet; names that collide once sanitised are refused); the
+    /// [`WHOLE_NUMBER_COLUMNS`] among them hold integers.
     pub fn create(
         dir: &Path,
         stem: &str,
         names: &[String],
         formats: Formats,
     ) -> Result<Self, OutputError> {
-        Self::create_typed(dir, stem, names, &[], formats)
+        Self::create_typed(dir, stem, names, &ColumnKind::of_columns(names), formats)
     }
 
     /// [`TableWriter::create`] with the kind of each column (`kinds[k]` for `names[k]`;
@@ -240,7 +266,7 @@ impl TableWriter {
     /// Parquet file is rebuilt from them; `on_row` sees each kept row (to rebuild what the
     /// caller derives from the rows). Writing then goes on as if the run had never stopped.
     /// Nothing is changed when the CSV file does not fit. With no rows kept the table starts
-    /// anew.
+    /// anew. Column kinds as [`TableWriter::create`].
     pub fn resume(
         dir: &Path,
         stem: &str,
@@ -249,7 +275,15 @@ impl TableWriter {
         kept: KeptRows,
         on_row: impl FnMut(&[f64]),
     ) -> Result<Self, OutputError> {
-        Self::resume_typed(dir, stem, names, &[], formats, kept, on_row)
+        Self::resume_typed(
+            dir,
+            stem,
+            names,
+            &ColumnKind::of_columns(names),
+            formats,
+            kept,
+            on_row,
+        )
     }
 
     /// [`TableWriter::resume`] with the kind of each column (as [`TableWriter::create_typed`]).

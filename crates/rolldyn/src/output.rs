@@ -1,6 +1,7 @@
 //! Writing results to files: output folders, CSV tables.
 
 use crate::failure::Failure;
+use rolldyn_output::ColumnKind;
 use std::path::{Path, PathBuf};
 
 /// Creates the output folder (and parents) and returns it.
@@ -14,7 +15,8 @@ pub fn out_dir(dir: &Path) -> Result<PathBuf, Failure> {
     Ok(dir.to_path_buf())
 }
 
-/// Writes a CSV file with a header row and numeric rows.
+/// Writes a CSV file with a header row and numeric rows (the whole-number columns,
+/// [`rolldyn_output::WHOLE_NUMBER_COLUMNS`], as integers).
 pub fn write_csv(
     path: &Path,
     header: &[&str],
@@ -23,9 +25,10 @@ pub fn write_csv(
     let fail = |e: csv::Error| Failure::Run(format!("cannot write {}: {e}", path.display()));
     let mut writer = csv::Writer::from_path(path).map_err(fail)?;
     writer.write_record(header).map_err(fail)?;
+    let kinds: Vec<ColumnKind> = header.iter().map(|n| ColumnKind::of_column(n)).collect();
     for row in rows {
         writer
-            .write_record(row.iter().map(|&v| rolldyn_output::csv_field(v)))
+            .write_record(row.iter().zip(&kinds).map(|(&v, kind)| kind.csv_field(v)))
             .map_err(fail)?;
     }
     writer.flush()?;

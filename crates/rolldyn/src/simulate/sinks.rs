@@ -9,7 +9,7 @@ use rolldyn_dynamics::output_columns::{
     column_names, revolution_row, roller_row,
 };
 use rolldyn_fatigue::CageLoadRecorder;
-use rolldyn_output::{ColumnKind, Formats, KeptRows, OutputError, TableWriter};
+use rolldyn_output::{Formats, KeptRows, OutputError, TableWriter};
 use rolldyn_plot::{ClearanceCircle, Labels, Series, line_plot, orbit_plot};
 use std::path::Path;
 
@@ -155,18 +155,6 @@ impl OrbitCircles {
     }
 }
 
-/// The kind of each output column: whole numbers for the counters and indices.
-fn column_kinds(names: &[String]) -> Vec<ColumnKind> {
-    const WHOLE: [&str; 4] = ["roller", "revolution", "precession", "steady"];
-    names
-        .iter()
-        .map(|n| match WHOLE.contains(&n.as_str()) {
-            true => ColumnKind::Integer,
-            false => ColumnKind::Real,
-        })
-        .collect()
-}
-
 pub struct FileSink {
     bearing: TableWriter,
     rollers: TableWriter,
@@ -184,9 +172,7 @@ impl FileSink {
         let fresh = KeptRows { rows: 0, digest: 0 };
         let [bearing, rollers, revolutions] = kept.unwrap_or([fresh; 3]);
         let table = |stem: &str, names: Vec<String>, kept, on_row: &mut dyn FnMut(&[f64])| {
-            let kinds = column_kinds(&names);
-            TableWriter::resume_typed(dir, stem, &names, &kinds, Formats::default(), kept, on_row)
-                .map_err(
+            TableWriter::resume(dir, stem, &names, Formats::default(), kept, on_row).map_err(
                 |e| match resumed {
                     true => Failure::Input(format!(
                         "{e} (--resume continues the --out folder of the run that wrote the checkpoint)"
