@@ -103,8 +103,8 @@ impl Analysis for Demo {
             oil_t - 273.15
         ));
         text.push(format!(
-            "  cage slip {:.4} %, max roller load {:.1} N, operating clearance {:.4} mm, friction power {:.1} W",
-            100.0 * skid.cage_slip,
+            "  cage slip {:.6}, max roller load {:.1} N, operating clearance {:.4} mm, friction power {:.1} W",
+            skid.cage_slip,
             skid.max_roller_load_n,
             skid.operating_clearance_m * 1e3,
             skid.power_loss_w

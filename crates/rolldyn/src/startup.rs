@@ -373,16 +373,16 @@ fn write_table(
         "Uω² N",
         "Gr µm",
         "oil °C",
-        "slip dyn%",
-        "drift%",
-        "slip qs%",
+        "slip dyn",
+        "drift",
+        "slip qs",
         "Qmax N",
         "revs"
     )?;
     for r in rows {
         writeln!(
             f,
-            "  {:>5} {:>9.4} {:>8.0} {:>8.1} {:>8.1} {:>8.2} {:>6.1} {:>9.3} {:>8.3} {:>9.3} {:>9.1} {:>5}  {}",
+            "  {:>5} {:>9.4} {:>8.0} {:>8.1} {:>8.1} {:>8.2} {:>6.1} {:>9.5} {:>8.5} {:>9.5} {:>9.1} {:>5}  {}",
             r.label,
             r.time_s,
             r.inner_speed_rad_s * 30.0 / std::f64::consts::PI,
@@ -390,9 +390,9 @@ fn write_table(
             r.rotating_load_n,
             r.clearance_m * 1e6,
             r.oil_temperature_k - rolldyn_units::CELSIUS_ZERO,
-            100.0 * r.cage_slip_dynamic,
-            100.0 * r.slip_drift,
-            100.0 * r.cage_slip_quasi_static,
+            r.cage_slip_dynamic,
+            r.slip_drift,
+            r.cage_slip_quasi_static,
             r.max_roller_load_n,
             r.revolutions,
             r.note

@@ -630,7 +630,7 @@ fn skidding_study(dir: &Path, t: &mut Out) -> Result<(), Failure> {
         say!(t, "## V-06 O'Brien–Taylor, quasi-static, {label}\n");
         say!(
             t,
-            "| speed rpm | oil °C | load N | cage slip % | max roller load N | failed |"
+            "| speed rpm | oil °C | load N | cage slip | max roller load N | failed |"
         );
         say!(t, "|---|---|---|---|---|---|");
         for r in &aligned {
@@ -640,8 +640,7 @@ fn skidding_study(dir: &Path, t: &mut Out) -> Result<(), Failure> {
                 r.inner_speed_rpm,
                 r.temperature_c,
                 r.radial_load_n,
-                r.cage_slip
-                    .map_or("—".into(), |s| format!("{:.4}", 100.0 * s)),
+                r.cage_slip.map_or("—".into(), |s| format!("{:.6}", s)),
                 r.max_roller_load_n
                     .map_or("—".into(), |q| format!("{q:.1}")),
                 r.error.as_deref().unwrap_or("")

@@ -201,7 +201,7 @@ pub fn summary_text(model: &str, s: &RunSummary, limits: &[StepLimit]) -> String
     );
     line(
         "cage slip (mean)",
-        format!("{:.4} %", s.cage_slip_mean * 100.0),
+        format!("{:.6} (fraction of the epicyclic speed)", s.cage_slip_mean),
     );
     line(
         "max inner / outer contact force",
