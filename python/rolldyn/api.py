@@ -165,7 +165,15 @@ def check(model: ModelLike = None, *, speed: Optional[Quantity] = None,
     Returns
     -------
     Result
-        Summary keys: {check}.
+        Summary keys: ``name``, ``kind``, ``roller_diameter_m``, ``roller_length_m``,
+        ``effective_contact_length_m``, ``crown_radius_m``, ``slices``, ``roller``,
+        ``roller_count``, ``pitch_diameter_m``, ``geometric_clearance_m``,
+        ``radial_clearance_m``, ``roller_rib_axial_clearance_m``, ``misalignment_rad``,
+        ``inner_ring``, ``outer_ring``, ``cage``, ``cage_land_diameter_m``,
+        ``cage_pocket``, ``cage_pocket_play_per_side_m``,
+        ``cage_pocket_closing_displacement_m``, ``cage_land_radial_gap_m``,
+        ``cage_land_guided``, ``inner_speed_rad_s``, ``outer_speed_rad_s``,
+        ``epicyclic_cage_speed_rad_s``, ``epicyclic_roller_speed_rad_s``.
     """
     model = as_model(model)
     return call("check", dict(speed=speed, outer_speed=outer_speed), Result, model=model)
@@ -201,7 +209,11 @@ def contact(model: ModelLike = None, *, load: Quantity = "1167N", tilt: Optional
     -------
     Contact
         `pressure`, `x`, `y` (the map as a 2-D array), tables ``pressure_map`` and
-        ``central_line``; summary keys: {contact}.
+        ``central_line``; summary keys: ``model``, ``method``, ``load_n``, ``tilt_rad``,
+        ``cells``, ``approach_m``, ``max_pressure_pa``, ``mid_pressure_pa``,
+        ``mean_pressure_pa``, ``concentration_factor``, ``contact_length_m``,
+        ``max_half_width_m``, ``cells_in_contact``, ``iterations``, ``converged``,
+        ``solve_time_s``.
     """
     model = as_model(model)
     options = dict(load=load, tilt=tilt, cells=cells, width=width, method=method,
@@ -222,7 +234,8 @@ def oils(*, temperature: Optional[Quantity] = None, oil_file: Optional[PathLike]
     Returns
     -------
     Result
-        Table ``oils`` (one row per oil); summary keys: {oils}.
+        Table ``oils`` (one row per oil); summary keys: (the summary is the list of
+        rows, one dict per oil).
     """
     return call("oils", dict(temperature=temperature, oil_file=oil_file), Result)
 
@@ -269,7 +282,11 @@ def traction(
     Returns
     -------
     Result
-        Tables ``traction`` (the curves) and ``cases``; summary keys: {traction}.
+        Tables ``traction`` (the curves) and ``cases``; summary keys: ``oil``,
+        ``rheology``, ``temperature_k``, ``max_pressure_pa``, ``load_n``,
+        ``rolling_speed_m_s``, ``critical_slip``, ``max_traction``,
+        ``no_maximum_reason``, ``film_thickness_m``, ``lambda``, ``warnings``,
+        ``curve``, ``cases``.
     """
     options = dict(locals())
     for key in ("temperature", "max_pressure"):
@@ -285,7 +302,7 @@ def report(folder: PathLike) -> Result:
     Returns
     -------
     Result
-        Summary keys: {report}.
+        Summary keys: ``report``, ``kind``, ``warnings``, ``findings``.
     """
     return call("report", dict(dir=folder), Result)
 
@@ -310,7 +327,16 @@ def skid(model: ModelLike = None, *, speed=None, outer_speed=None, radial_load=N
     Returns
     -------
     Result
-        Summary keys: {skid}; a range gives the table of its points, the varied variable
+        Summary keys: ``kinematic_case``, ``inner_speed_rad_s``, ``outer_speed_rad_s``,
+        ``radial_load_n``, ``misalignment_rad``, ``cage_speed_rad_s``,
+        ``epicyclic_cage_speed_rad_s``, ``cage_slip``, ``roller_slip_reference``,
+        ``rollers``, ``max_roller_load_n``, ``max_contact_pressure_pa``,
+        ``loaded_rollers``, ``load_zone_half_angle_rad``, ``ring_displacement_m``,
+        ``operating_clearance_m``, ``operating_geometry``, ``cage``, ``power_loss_w``,
+        ``power_input_w``, ``power``, ``min_scuffing_margin``, ``static_load_rating_n``,
+        ``solve_time_s``, ``iterations``, ``converged``, ``residuals``,
+        ``friction_model``, ``cage_land_model``, ``cage_drag_law``, ``warnings``; a
+        range gives the table of its points, the varied variable
         first.
     """
     model = as_model(model)
@@ -340,7 +366,8 @@ def loads(model: ModelLike, *, speed=None, outer_speed=None, radial_load=None, a
     Returns
     -------
     Result
-        Summary keys: {loads}.
+        Summary keys: ``model``, ``radial_load_n``, ``axial_load_n``,
+        ``inner_speed_rad_s``, ``misalignment_rad``, ``result``.
     """
     model = as_model(model)
     options = dict(locals())
@@ -376,7 +403,14 @@ def journal(*, file: Optional[PathLike] = None, radius=None, length=None, cleara
     Returns
     -------
     Result
-        Summary keys: {journal}.
+        Summary keys: ``attitude_deg``, ``cavitation``, ``converged``,
+        ``coupling_iterations``, ``damping_ns_per_m``, ``eccentricity``,
+        ``elastic_liner``, ``film_start``, ``friction_torque_nm``,
+        ``friction_variable``, ``grid``, ``iterations``, ``limits``,
+        ``load_iterations``, ``load_n``, ``max_deflection_m``, ``max_pressure_pa``,
+        ``max_temperature_k``, ``mean_temperature_k``, ``min_film_m``, ``power_loss_w``,
+        ``side_flow_m3_s``, ``solve_time_s``, ``sommerfeld``, ``stiffness_n_per_m``,
+        ``thermal``, ``viscosity_law``.
     """
     return call("journal", dict(locals()), Result)
 
@@ -407,7 +441,11 @@ def ehl_line(*, radius, viscosity, rolling_speed, min_film=None, load_per_length
     Returns
     -------
     Result
-        Summary keys: {ehl_line}.
+        Summary keys: ``central_film_m``, ``converged``, ``damping_ns_per_m2``,
+        ``elastic``, ``hertz_half_width_m``, ``hertz_pressure_pa``, ``iterations``,
+        ``limits``, ``load_per_length_n_per_m``, ``max_pressure_pa``, ``min_film_m``,
+        ``outlet_position_m``, ``piezo_per_pa``, ``rigid_approach_m``, ``solve_time_s``,
+        ``squeeze_velocity_m_s``, ``sum_speed_m_s``, ``transient``.
     """
     return call("ehl-line", dict(locals()), Result)
 
@@ -475,7 +513,19 @@ def simulate(
     Returns
     -------
     Run
-        Tables ``bearing``, ``rollers``, ``revolutions``; summary keys: {simulate}.
+        Tables ``bearing``, ``rollers``, ``revolutions``; summary keys:
+        ``cage_orbit_radius_m``, ``cage_slip_mean``, ``cage_speed_mean_rad_s``,
+        ``epicyclic_cage_speed_rad_s``, ``max_cage_land_force_n``,
+        ``max_inner_contact_force_n``, ``max_inner_sliding_axial_m_s``,
+        ``max_inner_sliding_axial_most_loaded_m_s``,
+        ``max_inner_sliding_rolling_direction_m_s``,
+        ``max_inner_sliding_rolling_direction_most_loaded_m_s``,
+        ``max_inner_sliding_speed_m_s``, ``max_outer_contact_force_n``,
+        ``max_relative_slip``, ``max_roller_cage_force_n``,
+        ``max_roller_end_cage_force_n``, ``max_roller_end_rib_force_n``,
+        ``min_scuffing_margin``, ``model``, ``non_finite``, ``output_folder``,
+        ``precession``, ``rejected_steps``, ``rhs_evaluations``, ``simulated_time_s``,
+        ``step_limited_by``, ``steps``, ``wall_time_s``, ``whirl_ratio``.
     """
     model = as_model(model)
     options = dict(locals())
@@ -539,7 +589,11 @@ def wear(
     Returns
     -------
     Result
-        Table ``periods``; summary keys: {wear}.
+        Table ``periods``; summary keys: ``model``, ``method``, ``requested_life_h``,
+        ``revolutions``, ``settle_revolutions``, ``life_h``, ``stop``, ``periods``,
+        ``max_depth_m``, ``roller_depth_from_bar_m``, ``clearance_increase_m``,
+        ``initial_contacts``, ``convergence``, ``wall_time_s``, ``dynamics_wall_s``,
+        ``wear_wall_s``, ``output_folder``, ``files``.
     """
     model = as_model(model)
     options = dict(locals())
@@ -600,7 +654,14 @@ def fatigue(
     Returns
     -------
     Result
-        Summary keys: {fatigue}.
+        Summary keys: ``model``, ``stress_model``, ``load_sets``, ``cage_speed_rpm``,
+        ``stress_concentration``, ``damage_per_revolution``, ``life_revolutions``,
+        ``life_hours``, ``extrapolated_life_revolutions``, ``critical_location``,
+        ``critical_point_m``, ``max_stress_pa``, ``endurance_margin``,
+        ``stress_safety_factor``, ``maxima``, ``inclusion_life_revolutions``,
+        ``inclusion_max_stress_pa``, ``inclusion_location``,
+        ``inclusion_endurance_margin``, ``points``, ``dynamics_wall_s``,
+        ``wall_time_s``, ``files``.
     """
     model = as_model(model) if loads is None else None
     options = dict(locals())
@@ -616,16 +677,17 @@ def rainflow(history: PathLike, *, column: Optional[str] = None, periodic: bool 
     Parameters
     ----------
     history : path
-        A CSV file with a stress column.
+        A CSV file: one value per row (the first column, or `column` of a file with a header).
     column : str, optional
-        The column to count, default the last.
+        The column to count, by its header name.
     periodic : bool
         Count the history as one period of a repeated signal.
 
     Returns
     -------
     Result
-        Table ``cycles``; summary keys: {rainflow}.
+        Table ``cycles`` (range, mean, count); summary keys: ``history``, ``periodic``,
+        ``values``, ``cycles``.
     """
     return call("rainflow", dict(history=history, column=column, periodic=periodic), Result)
 
@@ -653,7 +715,8 @@ def startup(model: ModelLike, *, jobs: Optional[int] = None, revolutions: Option
     Returns
     -------
     Result
-        Tables ``startup`` and ``startup_revolutions``; summary keys: {startup}.
+        Tables ``startup`` and ``startup_revolutions``; summary keys: ``model``,
+        ``revolutions``, ``average_revolutions``, ``output_folder``, ``points``.
     """
     model = as_model(model)
     options = dict(jobs=jobs, revolutions=revolutions, average=average,

@@ -25,10 +25,11 @@ class Result:
             raise AttributeError(name)
         if name in self.tables:
             return self.tables[name]
-        if name in self.summary:
+        if isinstance(self.summary, dict) and name in self.summary:
             return self.summary[name]
+        keys = self.summary if isinstance(self.summary, dict) else []
         raise AttributeError(
-            f"{type(self).__name__} has no {name!r}; summary keys: {', '.join(self.summary)}"
+            f"{type(self).__name__} has no {name!r}; summary keys: {', '.join(keys)}"
             + (f"; tables: {', '.join(self.tables)}" if self.tables else "")
         )
 
@@ -39,22 +40,25 @@ class Result:
         return key in self.summary
 
     def __dir__(self):
-        return sorted(set(super().__dir__()) | set(self.summary) | set(self.tables))
+        keys = set(self.summary) if isinstance(self.summary, dict) else set()
+        return sorted(set(super().__dir__()) | keys | set(self.tables))
 
     def __str__(self) -> str:
         return self.text
 
     def __repr__(self) -> str:
+        items = self.summary.items() if isinstance(self.summary, dict) else []
         figures = ", ".join(
-            f"{k}={v!r}" for k, v in list(self.summary.items())[:4] if not isinstance(v, (dict, list))
+            f"{k}={v!r}" for k, v in list(items)[:4] if not isinstance(v, (dict, list))
         )
         return f"<rolldyn.{type(self).__name__} {figures}…>"
 
     def _repr_html_(self) -> str:
+        items = self.summary.items() if isinstance(self.summary, dict) else []
         rows = "".join(
             f"<tr><th style='text-align:left'>{html.escape(k)}</th>"
             f"<td style='text-align:left'>{html.escape(_short(v))}</td></tr>"
-            for k, v in self.summary.items()
+            for k, v in items
         )
         parts = [f"<b>rolldyn.{type(self).__name__}</b>", f"<table>{rows}</table>"]
         for name, table in self.tables.items():
