@@ -274,7 +274,10 @@ impl FileSink {
                     x: "x, µm",
                     y: "y, µm",
                 };
-                let series = [Series { label: "", points }];
+                let series = [Series {
+                    label: "centre",
+                    points,
+                }];
                 orbit_plot(&dir.join(file), &labels, &series, circle.as_slice())
             };
         orbit(
