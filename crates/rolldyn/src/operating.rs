@@ -121,18 +121,31 @@ impl Duration {
 impl<'de> Deserialize<'de> for Duration {
     /// A string as on the command line, or a number of seconds.
     fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-        #[derive(Deserialize)]
-        #[serde(untagged)]
-        enum Given {
-            Seconds(f64),
-            Text(String),
-        }
-        match Given::deserialize(deserializer)? {
-            Given::Seconds(s) => Duration::Time(s).checked(&s.to_string()),
-            Given::Text(t) => t.parse(),
-        }
-        .map_err(de::Error::custom)
+        seconds_or_text(deserializer, |s| Duration::Time(s).checked(&s.to_string()))
     }
+}
+
+/// A value given as a number of seconds (`seconds` makes it) or as its command-line text
+/// (`FromStr`): the request form of a duration or a period.
+pub fn seconds_or_text<'de, D, T>(
+    deserializer: D,
+    seconds: impl FnOnce(f64) -> Result<T, String>,
+) -> Result<T, D::Error>
+where
+    D: Deserializer<'de>,
+    T: FromStr<Err = String>,
+{
+    #[derive(Deserialize)]
+    #[serde(untagged)]
+    enum Given {
+        Seconds(f64),
+        Text(String),
+    }
+    match Given::deserialize(deserializer)? {
+        Given::Seconds(s) => seconds(s),
+        Given::Text(t) => t.parse(),
+    }
+    .map_err(de::Error::custom)
 }
 
 /// Parallel jobs: the number asked for, or the number of cores.

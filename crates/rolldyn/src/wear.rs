@@ -6,7 +6,7 @@
 use crate::analysis::{Analysis, Context};
 use crate::failure::Failure;
 use crate::observer::Progress;
-use crate::operating::Operating;
+use crate::operating::{Operating, seconds_or_text};
 use crate::output::out_dir;
 use crate::run_record::{ModelOrigin, finish_out_folder};
 use crate::table::{Table, Tables};
@@ -20,7 +20,7 @@ use rolldyn_wear::{
     ExposureWidth, OperabilityLimits, PeriodControl, PressureModel, StopReason, Surface, WearError,
     WearMethod, WearSettings,
 };
-use serde::de::{self, Deserializer};
+use serde::de::Deserializer;
 use serde::{Deserialize, Serialize};
 use std::fmt;
 use std::ops::ControlFlow;
@@ -81,17 +81,7 @@ impl Period {
 impl<'de> Deserialize<'de> for Period {
     /// `"auto"`, a time with units (`"1905h"`) or a number of seconds.
     fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-        #[derive(Deserialize)]
-        #[serde(untagged)]
-        enum Given {
-            Seconds(f64),
-            Text(String),
-        }
-        match Given::deserialize(deserializer)? {
-            Given::Seconds(s) => Period::Fixed(s).checked(&s.to_string()),
-            Given::Text(t) => t.parse(),
-        }
-        .map_err(de::Error::custom)
+        seconds_or_text(deserializer, |s| Period::Fixed(s).checked(&s.to_string()))
     }
 }
 
