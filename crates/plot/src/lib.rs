@@ -123,19 +123,7 @@ pub fn line_plot(path: &Path, labels: &Labels, series: &[Series]) -> Result<(), 
     write_svg(path, "line-plot", |root| {
         let (x0, x1) = axes::bounds(series.iter().flat_map(|s| s.points.iter().map(|p| p.0)));
         let (y0, y1) = data_range(series.iter().flat_map(|s| s.points.iter().map(|p| p.1)));
-        let mut chart = frame(root, labels.title)
-            .build_cartesian_2d(x0..x1, y0..y1)
-            .map_err(|e| e.to_string())?;
-        chart
-            .configure_mesh()
-            .x_label_formatter(&|v| tick_label(*v, x0, x1))
-            .y_label_formatter(&|v| tick_label(*v, y0, y1))
-            .label_style(("sans-serif", TICK_FONT))
-            .axis_desc_style(("sans-serif", AXIS_FONT))
-            .x_desc(labels.x)
-            .y_desc(labels.y)
-            .draw()
-            .map_err(|e| e.to_string())?;
+        let mut chart = linear_chart(root, labels, (x0, x1), (y0, y1))?;
         for (k, s) in series.iter().enumerate() {
             let color = Palette99::pick(k).to_rgba();
             chart
@@ -194,19 +182,7 @@ pub fn orbit_plot(
         };
         let ((x0, x1), (y0, y1)) =
             axes::equal_aspect((x0, x1), (y0, y1), width_px / height_px, 0.06);
-        let mut chart = frame(root, labels.title)
-            .build_cartesian_2d(x0..x1, y0..y1)
-            .map_err(|e| e.to_string())?;
-        chart
-            .configure_mesh()
-            .x_label_formatter(&|v| tick_label(*v, x0, x1))
-            .y_label_formatter(&|v| tick_label(*v, y0, y1))
-            .label_style(("sans-serif", TICK_FONT))
-            .axis_desc_style(("sans-serif", AXIS_FONT))
-            .x_desc(labels.x)
-            .y_desc(labels.y)
-            .draw()
-            .map_err(|e| e.to_string())?;
+        let mut chart = linear_chart(root, labels, (x0, x1), (y0, y1))?;
         let grey = RGBColor(120, 120, 120);
         for c in circles {
             let outline: Vec<(f64, f64)> = (0..=180)
@@ -297,24 +273,43 @@ pub fn variant_plot(
     }
 }
 
+/// The titled frame of `root` over `x` × `y` with its axes drawn: ticks labelled with the
+/// digits that tell them apart, `labels.x` and `labels.y` as axis titles.
+fn linear_chart<'a, 'b>(
+    root: &'a Root<'b>,
+    labels: &Labels,
+    (x0, x1): (f64, f64),
+    (y0, y1): (f64, f64),
+) -> Result<
+    ChartContext<
+        'a,
+        SVGBackend<'b>,
+        Cartesian2d<plotters::coord::types::RangedCoordf64, plotters::coord::types::RangedCoordf64>,
+    >,
+    String,
+> {
+    let mut chart = frame(root, labels.title)
+        .build_cartesian_2d(x0..x1, y0..y1)
+        .map_err(|e| e.to_string())?;
+    chart
+        .configure_mesh()
+        .x_label_formatter(&|v| tick_label(*v, x0, x1))
+        .y_label_formatter(&|v| tick_label(*v, y0, y1))
+        .label_style(("sans-serif", TICK_FONT))
+        .axis_desc_style(("sans-serif", AXIS_FONT))
+        .x_desc(labels.x)
+        .y_desc(labels.y)
+        .draw()
+        .map_err(|e| e.to_string())?;
+    Ok(chart)
+}
+
 /// A single series drawn as a line with a marker at each point.
 fn marked_plot(path: &Path, labels: &Labels, points: &[(f64, f64)]) -> Result<(), PlotError> {
     write_svg(path, "line-plot", |root| {
         let (x0, x1) = data_range(points.iter().map(|p| p.0));
         let (y0, y1) = data_range(points.iter().map(|p| p.1));
-        let mut chart = frame(root, labels.title)
-            .build_cartesian_2d(x0..x1, y0..y1)
-            .map_err(|e| e.to_string())?;
-        chart
-            .configure_mesh()
-            .x_label_formatter(&|v| tick_label(*v, x0, x1))
-            .y_label_formatter(&|v| tick_label(*v, y0, y1))
-            .label_style(("sans-serif", TICK_FONT))
-            .axis_desc_style(("sans-serif", AXIS_FONT))
-            .x_desc(labels.x)
-            .y_desc(labels.y)
-            .draw()
-            .map_err(|e| e.to_string())?;
+        let mut chart = linear_chart(root, labels, (x0, x1), (y0, y1))?;
         let color = Palette99::pick(0).to_rgba();
         chart
             .draw_series(LineSeries::new(
