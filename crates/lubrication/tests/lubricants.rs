@@ -145,43 +145,6 @@ fn vg220_walther_and_incomplete_entries() {
 }
 
 #[test]
-fn user_oil_from_toml() {
-    let text = r#"
-        name = "my-oil"
-        source = "data sheet"
-        temperature_range_k = [293.15, 393.15]
-        density = { kind = "polynomial_celsius", coeffs = [870.0, -0.6] }
-        viscosity = { kind = "kinematic", law = { kind = "walther", a = 8.8222, b = 3.3867 } }
-        pressure_viscosity = { kind = "constant", value = 2.0e-8 }
-        shear_modulus = { kind = "constant", value = 1.0e9 }
-        eyring_stress = { kind = "exponential", value_ref = 5.0e6, t_ref_k = 313.15, beta_per_k = 0.01 }
-        beta0_per_k = 0.03
-        kappa_per_k_pa = 1.0e-10
-        thermal_conductivity = { kind = "constant", value = 0.13 }
-        mixed_friction = { lambda_bd = 0.01, lambda_hd = 1.5 }
-    "#;
-    let oil: Lubricant = toml::from_str(text).unwrap();
-    assert_relative_eq!(
-        oil.density(40.0 + C0).unwrap(),
-        870.0 - 24.0,
-        max_relative = 1e-12
-    );
-    assert_relative_eq!(
-        oil.dynamic_viscosity(40.0 + C0).unwrap(),
-        846.0 * 220e-6,
-        max_relative = 2e-3 // A, B rounded to 4 decimals
-    );
-    assert_relative_eq!(
-        oil.eyring_stress(323.15).unwrap(),
-        5e6 * (-0.1f64).exp(),
-        max_relative = 1e-12
-    );
-    assert!(TractionModel::muraki(oil).is_ok());
-    // unknown keys are rejected (typos in user files must not pass silently)
-    assert!(toml::from_str::<Lubricant>(&format!("{text}\nviscosity_index = 95")).is_err());
-}
-
-#[test]
 fn beta0_derived_from_viscosity_law_when_absent() {
     let mut oil = lubricant_by_name("nvi65").unwrap();
     oil.beta0_per_k = None;
@@ -241,20 +204,25 @@ fn library_oils_are_physical_and_bad_user_oils_are_rejected() {
         let oil = rolldyn_lubrication::lubricant_by_name(name).unwrap();
         oil.validate().unwrap_or_else(|e| panic!("{name}: {e}"));
     }
-    let bad: rolldyn_lubrication::Lubricant = toml::from_str(
-        "name = \"x\"\ntemperature_range_k = [300.0, 400.0]\n\
-         viscosity = { kind = \"dynamic\", law = { kind = \"constant\", value = -0.01 } }\n",
-    )
-    .unwrap();
+    let seed = rolldyn_lubrication::lubricant_by_name("seed002-test-oil").unwrap();
+    let bad = rolldyn_lubrication::Lubricant {
+        viscosity: Some(ViscosityLaw::Dynamic {
+            law: TempLaw::Constant { value: -0.01 },
+        }),
+        ..seed.clone()
+    };
     assert!(
         bad.validate()
             .unwrap_err()
             .to_string()
             .contains("viscosity")
     );
-    let bad: rolldyn_lubrication::Lubricant = toml::from_str(
-        "name = \"x\"\ntemperature_range_k = [300.0, 400.0]\nmixed_friction = { lambda_bd = 3.0, lambda_hd = 1.0 }\n",
-    )
-    .unwrap();
+    let bad = rolldyn_lubrication::Lubricant {
+        mixed_friction: Some(rolldyn_lubrication::lubricant::MixedLimitsData {
+            lambda_bd: 3.0,
+            lambda_hd: 1.0,
+        }),
+        ..seed
+    };
     assert!(bad.validate().is_err());
 }
