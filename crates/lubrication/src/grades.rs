@@ -11,15 +11,16 @@
 //! | ᾱ(θ) | Wooster correlation at 40 and 100 °C, linear in θ between ([`wooster_pressure_viscosity`]) |
 //! | K_f(θ) | Cragoe correlation from the 15 °C density ([`cragoe_thermal_conductivity`]) |
 //! | β0 | −d ln η0/dT of the viscosity law (`beta0_per_k = None`) |
-//! | Γ, τ0, κ | transferred from the seed oil of the same class (ESTIMATED) |
+//! | Γ, τ0 | transferred from the seed oil of the same class (ESTIMATED) |
+//! | κ | −dᾱ/dθ of the ᾱ law: in seed 000 eq. (1.9), ln η carries ᾱp − (β0 + κp)ΔT, so ∂²ln η/∂p∂T = −κ |
 
 use crate::correlations::{
     cragoe_thermal_conductivity, density_from_15c, wooster_pressure_viscosity,
 };
 use crate::error::LubError;
 use crate::library::{
-    NVI65_SHEAR_MODULUS_PA, PAO1_KAPPA_PER_K_PA, VNII_EYRING_STRESS_PA, VNII_KAPPA_PER_K_PA,
-    VNII_SHEAR_MODULUS_PA, pao1_eyring_stress, pao1_shear_modulus,
+    NVI65_SHEAR_MODULUS_PA, VNII_EYRING_STRESS_PA, VNII_SHEAR_MODULUS_PA, pao1_eyring_stress,
+    pao1_shear_modulus,
 };
 use crate::lubricant::{CELSIUS_ZERO, Lubricant, TempLaw, ViscosityLaw};
 use crate::provenance::{OilProperty, PropertySource};
@@ -30,9 +31,13 @@ use crate::viscosity_index::nu100_from_viscosity_index;
 /// viscosity at 40 °C in mm²/s (the grade's limits are ±10 %).
 pub const ISO_VG_GRADES: [u32; 12] = [10, 15, 22, 32, 46, 68, 100, 150, 220, 320, 460, 680];
 
-/// Temperature range of the class oils, °C: the two viscosity points at 40 and 100 °C with a
-/// 20 K margin on each side (the transferred traction laws were fitted at 40…100 °C).
+/// Temperature range of the mineral oils, °C: the two viscosity points at 40 and 100 °C with a
+/// 20 K margin on each side.
 const RANGE_C: [f64; 2] = [20.0, 120.0];
+
+/// Temperature range of the PAO oils, °C: 20 K below the 40 °C point, but not above 100 °C,
+/// where the transferred PAO1 fit of Γ(θ) ends (its cubic has a spurious minimum at 111 °C).
+const PAO_RANGE_C: [f64; 2] = [20.0, 100.0];
 
 /// Temperature range of the aero-engine oils, °C (bearing chambers run hotter; same margin
 /// below, 50 K above the 100 °C viscosity point).
@@ -97,7 +102,7 @@ impl BaseOil {
         }
     }
 
-    /// Γ, τ0, κ of the class: the seed oil of the same class, transferred (ESTIMATED).
+    /// Γ, τ0 of the class: the seed oil of the same class, transferred (ESTIMATED).
     fn traction(self) -> ClassTraction {
         match self {
             BaseOil::Mineral => ClassTraction {
@@ -105,7 +110,6 @@ impl BaseOil {
                     value: NVI65_SHEAR_MODULUS_PA,
                 },
                 eyring_stress: TempLaw::Constant { value: 5.0e6 },
-                kappa: None,
                 shear_modulus_source: "Gamma = 3 GPa of the mineral oil NVI 65 (seed 000 §2.3), \
                                        transferred to the class",
                 eyring_stress_source: "tau0 = 5 MPa, middle of the 2-10 MPa of mineral oils at \
@@ -114,7 +118,6 @@ impl BaseOil {
             BaseOil::Pao => ClassTraction {
                 shear_modulus: pao1_shear_modulus(),
                 eyring_stress: pao1_eyring_stress(),
-                kappa: Some(PAO1_KAPPA_PER_K_PA),
                 shear_modulus_source: "Gamma(theta) of PAO1 VG 320 (seed 000 §2.2), transferred \
                                        to the class",
                 eyring_stress_source: "tau0(theta) of PAO1 VG 320 (seed 000 §2.2), transferred \
@@ -127,7 +130,6 @@ impl BaseOil {
                 eyring_stress: TempLaw::Constant {
                     value: VNII_EYRING_STRESS_PA,
                 },
-                kappa: Some(VNII_KAPPA_PER_K_PA),
                 shear_modulus_source: "Gamma of the synthetic aviation turbine oil VNII NP \
                                        50-1-4u (seed 000 §3.1.2), transferred to the class",
                 eyring_stress_source: "tau0 of the synthetic aviation turbine oil VNII NP \
@@ -141,7 +143,6 @@ impl BaseOil {
 struct ClassTraction {
     shear_modulus: TempLaw,
     eyring_stress: TempLaw,
-    kappa: Option<f64>,
     shear_modulus_source: &'static str,
     eyring_stress_source: &'static str,
 }
@@ -176,7 +177,10 @@ pub fn iso_vg(grade: u32, base: BaseOil) -> Result<Lubricant, LubError> {
         name: format!("iso-vg-{grade}-{}", base.name()),
         class: format!("ISO VG {grade} {} (VI {vi:.0})", base.name()),
         base,
-        range_c: RANGE_C,
+        range_c: match base {
+            BaseOil::Pao => PAO_RANGE_C,
+            _ => RANGE_C,
+        },
         nu40_m2_s: nu40,
         nu100_m2_s: nu100,
         viscosity: PropertySource::estimated(
@@ -308,14 +312,10 @@ fn build(recipe: Recipe) -> Lubricant {
         PropertySource::estimated(OilProperty::ShearModulus, traction.shear_modulus_source),
         PropertySource::estimated(OilProperty::EyringStress, traction.eyring_stress_source),
     ];
-    let mut missing = vec!["Lambda_bd / Lambda_hd".to_string()];
-    match traction.kappa {
-        Some(_) => provenance.push(PropertySource::estimated(
-            OilProperty::Kappa,
-            "kappa of the seed oil of the same class, transferred",
-        )),
-        None => missing.push("kappa".into()),
-    }
+    provenance.push(PropertySource::estimated(
+        OilProperty::Kappa,
+        "-d alpha/d theta of the alpha law (seed 000 eq. 1.9: d2 ln eta/dp dT = -kappa)",
+    ));
     Lubricant {
         source: format!(
             "{}; class values where no data is given (see measured / estimated)",
@@ -333,10 +333,10 @@ fn build(recipe: Recipe) -> Lubricant {
         shear_modulus: Some(traction.shear_modulus),
         eyring_stress: Some(traction.eyring_stress),
         beta0_per_k: None,
-        kappa_per_k_pa: traction.kappa,
+        kappa_per_k_pa: Some(-alpha_slope),
         thermal_conductivity: Some(cragoe_thermal_conductivity(recipe.density_15c_kg_m3)),
         mixed_friction: None,
-        missing,
+        missing: vec!["Lambda_bd / Lambda_hd".to_string()],
         provenance,
     }
 }

@@ -12,7 +12,7 @@
 //! | `seed002-test-oil` | seed 002 roller–plate oil μ = 0.024 Pa·s, α = 0.75e-8 1/Pa | isothermal films | temperature dependence, density, rheology |
 //! | `irp-150` | seed 002 gearbox oil IRP-150 μ = 0.14 Pa·s, α = 1.4e-8 1/Pa | isothermal films | temperature dependence, density, rheology |
 //!
-//! | `iso-vg-<N>-mineral`, `iso-vg-<N>-pao` | ISO 3448 grades N = 10 … 680 ([`crate::grades`]) | everything | Λ_bd/Λ_hd; κ (mineral) |
+//! | `iso-vg-<N>-mineral`, `iso-vg-<N>-pao` | ISO 3448 grades N = 10 … 680 ([`crate::grades`]) | everything | Λ_bd/Λ_hd |
 //! | `mil-prf-23699`, `mil-prf-7808`, `vg220-gear` | aero-engine and gear oils ([`crate::grades`]) | everything | Λ_bd/Λ_hd |
 //!
 //! Each oil lists in [`Lubricant::provenance`] which property is measured and which estimated.
@@ -109,13 +109,13 @@ fn iso_vg_by_name(key: &str) -> Option<Result<Lubricant, LubError>> {
 /// Γ of NVI 65 (seed 000 §2.3), Pa.
 pub(crate) const NVI65_SHEAR_MODULUS_PA: f64 = 3e9;
 /// κ of PAO1 (seed 000 §2.2), 1/(K·Pa).
-pub(crate) const PAO1_KAPPA_PER_K_PA: f64 = 1.2e-10;
+const PAO1_KAPPA_PER_K_PA: f64 = 1.2e-10;
 /// Γ of VNII NP 50-1-4u (seed 000 §3.1.2), Pa.
 pub(crate) const VNII_SHEAR_MODULUS_PA: f64 = 5e7;
 /// τ0 of VNII NP 50-1-4u (seed 000 §3.1.2), Pa.
 pub(crate) const VNII_EYRING_STRESS_PA: f64 = 3e5;
 /// κ (γ) of VNII NP 50-1-4u (seed 000 §3.1.2), 1/(K·Pa).
-pub(crate) const VNII_KAPPA_PER_K_PA: f64 = 1e-11;
+const VNII_KAPPA_PER_K_PA: f64 = 1e-11;
 
 /// Γ(θ) of PAO1 (seed 000 §2.2): 7.444 + 0.0163θ − 0.002083θ² + 0.0000121θ³ GPa, θ in °C.
 pub(crate) fn pao1_shear_modulus() -> TempLaw {

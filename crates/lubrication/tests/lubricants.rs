@@ -159,6 +159,7 @@ fn beta0_derived_from_viscosity_law_when_absent() {
 fn property_table_error_below_half_percent() {
     use rolldyn_lubrication::traction::table::{HotProps, PropertyTable};
     let mut worst: f64 = 0.0;
+    let mut worst_at = ("", "", 0.0);
     for name in KNOWN_OILS {
         let mut oil = lubricant_by_name(name).unwrap();
         if oil.density.is_none() {
@@ -171,24 +172,27 @@ fn property_table_error_below_half_percent() {
             let t = (t0 + 0.01 * i as f64).min(t1);
             let a = tab.get(t).unwrap();
             let b = HotProps::closed_form(&oil, t);
-            for (x, y) in [
-                (a.eta0, b.eta0),
-                (a.alpha, b.alpha),
-                (a.gamma, b.gamma),
-                (a.tau0, b.tau0),
-                (a.beta0, b.beta0),
-                (a.k_f, b.k_f),
+            for (property, x, y) in [
+                ("eta0", a.eta0, b.eta0),
+                ("alpha", a.alpha, b.alpha),
+                ("gamma", a.gamma, b.gamma),
+                ("tau0", a.tau0, b.tau0),
+                ("beta0", a.beta0, b.beta0),
+                ("k_f", a.k_f, b.k_f),
             ] {
                 if y.is_nan() {
                     assert!(x.is_nan());
                     continue;
                 }
-                worst = worst.max((x / y - 1.0).abs());
+                if (x / y - 1.0).abs() > worst {
+                    worst = (x / y - 1.0).abs();
+                    worst_at = (name, property, t);
+                }
             }
         }
         assert!(tab.get(t1 + 0.1).is_none() && tab.get(t0 - 0.1).is_none());
     }
-    eprintln!("worst table interpolation error: {worst:e}");
+    eprintln!("worst table interpolation error: {worst:e} at {worst_at:?}");
     assert!(worst <= 5e-3, "worst relative interpolation error {worst}");
     assert!(
         worst <= 1e-4,
