@@ -163,8 +163,8 @@ struct Recipe {
 /// ISO VG `grade` (one of [`ISO_VG_GRADES`]) of a mineral or PAO base oil: ν40 the grade
 /// midpoint, ν100 from the class viscosity index by ASTM D2270.
 pub fn iso_vg(grade: u32, base: BaseOil) -> Result<Lubricant, LubError> {
-    let vi = base.typical_viscosity_index();
-    let (Some((vi, vi_source)), true) = (vi, ISO_VG_GRADES.contains(&grade)) else {
+    let class_vi = base.typical_viscosity_index();
+    let Some((vi, vi_source)) = class_vi.filter(|_| ISO_VG_GRADES.contains(&grade)) else {
         return Err(LubError::InvalidInput(format!(
             "no built-in ISO VG {grade} {} oil (grades {ISO_VG_GRADES:?}, mineral or pao)",
             base.name()
