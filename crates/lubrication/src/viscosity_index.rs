@@ -102,7 +102,7 @@ const Y_MIN: f64 = 2.0;
 /// (L, H) of D2270 for a 100 °C viscosity `y` in mm²/s: Table 1 interpolated linearly (§5.1.1),
 /// the §5.1.2 quadratics above 70 mm²/s.
 fn reference_viscosities(y: f64) -> Result<(f64, f64), LubError> {
-    if !(y >= Y_MIN) {
+    if y.is_nan() || y < Y_MIN {
         return Err(LubError::InvalidInput(format!(
             "the viscosity index is not defined for a 100 °C viscosity of {y} mm²/s \
              (ASTM D2270 needs at least 2 mm²/s)"
