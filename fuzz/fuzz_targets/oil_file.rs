@@ -1,9 +1,7 @@
-//! Oil files (`--oil-file`, `lubricant.file`): deserialising and validating a lubricant must
-//! not panic.
+//! Oil files (`--oil-file`, `lubricant.file`): parsing, unit conversion and validation of a
+//! lubricant must not panic.
 #![no_main]
 
 libfuzzer_sys::fuzz_target!(|text: &str| {
-    if let Ok(oil) = toml::from_str::<rolldyn_lubrication::Lubricant>(text) {
-        let _ = oil.validate();
-    }
+    let _ = rolldyn_model::parse_oil_file(text, "fuzz.toml");
 });

@@ -226,18 +226,23 @@ def contact(model: ModelLike = None, *, load: Quantity = "1167N", tilt: Optional
 def oils(*, temperature: Optional[Quantity] = None, oil_file: Optional[PathLike] = None) -> Result:
     """The lubricant library with each oil's properties at `temperature` (`rolldyn oils`).
 
+    The seeds' oils, the ISO VG grades 10…680 as ``iso-vg-<N>-mineral`` / ``iso-vg-<N>-pao``,
+    ``mil-prf-23699``, ``mil-prf-7808`` and ``vg220-gear``; each row says which properties are
+    measured and which estimated, with the source of each (docs/lubricants.md).
+
     Parameters
     ----------
     temperature : float or str, optional
         Default 40 °C (K as a number).
     oil_file : path, optional
-        Also list a user oil file.
+        Also list a user oil file (TOML; values with units such as ``"870 kg/m3"``).
 
     Returns
     -------
     Result
-        Table ``oils`` (one row per oil); summary keys: (the summary is the list of
-        rows, one dict per oil).
+        Table ``oils`` (one row per oil); the summary is the list of rows, one dict per oil,
+        with the properties at `temperature` (SI), ``class``, ``nu40_m2_s``, ``nu100_m2_s``,
+        ``viscosity_index``, ``measured``, ``estimated``, ``provenance`` and ``missing``.
     """
     return call("oils", dict(temperature=temperature, oil_file=oil_file), Result)
 

@@ -305,6 +305,49 @@ fn user_oil_file_is_listed_and_usable() {
 }
 
 #[test]
+fn oil_database_lists_grades_with_provenance() {
+    let v = json(&rolldyn(&["oils", "--json"]));
+    let oils = v.as_array().unwrap();
+    assert_eq!(oils.len(), 35);
+    let vg68 = oils
+        .iter()
+        .find(|o| o["name"] == "iso-vg-68-mineral")
+        .unwrap();
+    assert!((vg68["nu40_m2_s"].as_f64().unwrap() / 68e-6 - 1.0).abs() < 1e-9);
+    assert!((vg68["viscosity_index"].as_f64().unwrap() - 95.0).abs() < 1e-6);
+    assert!(
+        vg68["estimated"]
+            .as_array()
+            .unwrap()
+            .contains(&"pressure_viscosity".into())
+    );
+    let jet = oils.iter().find(|o| o["name"] == "mil-prf-23699").unwrap();
+    assert_eq!(jet["measured"], serde_json::json!(["viscosity"]));
+    assert!((jet["nu100_m2_s"].as_f64().unwrap() / 5.1e-6 - 1.0).abs() < 1e-9);
+    let text = String::from_utf8_lossy(&rolldyn(&["oils"]).stdout).to_string();
+    assert!(
+        text.contains("mil-prf-7808") && text.contains("measured") && text.contains("estimated")
+    );
+}
+
+#[test]
+fn oil_file_with_a_bad_unit_names_file_and_key() {
+    let text = std::fs::read_to_string(example("oils/iso-vg68-mineral.toml")).unwrap();
+    let bad = std::env::temp_dir().join(format!("rolldyn-bad-unit-{}.toml", std::process::id()));
+    std::fs::write(&bad, text.replace("\"20 1/GPa\"", "\"20 GPa\"")).unwrap();
+    let out = rolldyn(&["oils", "--oil-file", bad.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr).to_string();
+    assert!(
+        err.contains(bad.file_name().unwrap().to_str().unwrap())
+            && err.contains("pressure_viscosity")
+            && err.contains("GPa"),
+        "{err}"
+    );
+    std::fs::remove_file(bad).ok();
+}
+
+#[test]
 fn skid_point_and_sweep() {
     let v = json(&rolldyn(&[
         "skid",

@@ -9,7 +9,11 @@
 //! | module | content | SPEC |
 //! |---|---|---|
 //! | [`lubricant`] | [`Lubricant`] (serde-deserialisable user oils), temperature laws, [`SolidThermal`] | §4.1, §4.2 |
-//! | [`library`] | built-in oils of the seeds, looked up by name ([`lubricant_by_name`]) | §4.2 |
+//! | [`library`] | built-in oils, looked up by name ([`lubricant_by_name`]) | §4.2 |
+//! | [`grades`] | ISO VG grades (mineral, PAO), aero-engine and gear oils | — |
+//! | [`provenance`] | measured / estimated and the source of each property | — |
+//! | [`viscosity_index`] | ASTM D2270 viscosity index and its inverse | — |
+//! | [`correlations`] | Wooster ᾱ, Cragoe K_f, density from 15 °C | — |
 //! | [`viscosity`] | Walther/ASTM D341 fit, Barus and Roelands pressure–viscosity | §4.1, §4.2.5 |
 //! | [`contact_state`] | [`ContactState`]: the operating point of one contact (slice); Hertz (2.15)/(2.16) | §2.3, §4.6 |
 //! | [`film`] | film-thickness formulas (2.17), (2.19), seed 001, Pan–Hamrock, Hamrock–Dowson | §4.7 |
@@ -42,22 +46,27 @@
 #![warn(missing_docs)]
 
 pub mod contact_state;
+pub mod correlations;
 mod error;
 pub mod film;
+pub mod grades;
 pub mod library;
 pub mod lubricant;
 pub mod mixture;
+pub mod provenance;
 pub mod regime;
 pub mod scuffing;
 mod special;
 pub mod traction;
 pub mod viscosity;
+pub mod viscosity_index;
 
 pub use contact_state::{ContactGeometry, ContactState, HertzContact};
 pub use error::LubError;
 pub use film::{FilmFormula, FilmResult, FilmSettings};
 pub use library::{KNOWN_OILS, lubricant_by_name};
 pub use lubricant::{Lubricant, OilProperties, SolidThermal, TempLaw, ViscosityLaw};
+pub use provenance::{Basis, OilProperty, PropertySource};
 pub use regime::{FrictionRegime, LambdaDefinition, LubricationRegime};
 pub use scuffing::{CriticalSlip, SlipSearch, critical_slip};
 pub use traction::{

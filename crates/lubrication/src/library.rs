@@ -12,15 +12,23 @@
 //! | `seed002-test-oil` | seed 002 roller–plate oil μ = 0.024 Pa·s, α = 0.75e-8 1/Pa | isothermal films | temperature dependence, density, rheology |
 //! | `irp-150` | seed 002 gearbox oil IRP-150 μ = 0.14 Pa·s, α = 1.4e-8 1/Pa | isothermal films | temperature dependence, density, rheology |
 //!
+//! | `iso-vg-<N>-mineral`, `iso-vg-<N>-pao` | ISO 3448 grades N = 10 … 680 ([`crate::grades`]) | everything | Λ_bd/Λ_hd |
+//! | `mil-prf-23699`, `mil-prf-7808`, `vg220-gear` | aero-engine and gear oils ([`crate::grades`]) | everything | Λ_bd/Λ_hd |
+//!
+//! Each oil lists in [`Lubricant::provenance`] which property is measured and which estimated.
+//!
 //! Temperature laws that the seeds write in °C are stored as `*_celsius` [`TempLaw`]s: the API
 //! still takes kelvin and converts internally (θ = T − 273.15).
 
 use crate::error::LubError;
+use crate::grades::{BaseOil, iso_vg, mil_prf_7808, mil_prf_23699, vg220_gear};
 use crate::lubricant::{CELSIUS_ZERO, Lubricant, MixedLimitsData, TempLaw, ViscosityLaw};
+use crate::provenance::{OilProperty, PropertySource};
 use crate::viscosity::walther_from_two_points;
 
-/// Names of the built-in oils (CLI keys).
-pub const KNOWN_OILS: [&str; 8] = [
+/// Names of the built-in oils (CLI keys): the seeds' oils, the ISO VG grades, the aero-engine
+/// and gear oils.
+pub const KNOWN_OILS: [&str; 35] = [
     "pao1-vg320",
     "nvi65",
     "vnii-np-50-1-4u",
@@ -29,6 +37,33 @@ pub const KNOWN_OILS: [&str; 8] = [
     "ipm-10",
     "seed002-test-oil",
     "irp-150",
+    "iso-vg-10-mineral",
+    "iso-vg-15-mineral",
+    "iso-vg-22-mineral",
+    "iso-vg-32-mineral",
+    "iso-vg-46-mineral",
+    "iso-vg-68-mineral",
+    "iso-vg-100-mineral",
+    "iso-vg-150-mineral",
+    "iso-vg-220-mineral",
+    "iso-vg-320-mineral",
+    "iso-vg-460-mineral",
+    "iso-vg-680-mineral",
+    "iso-vg-10-pao",
+    "iso-vg-15-pao",
+    "iso-vg-22-pao",
+    "iso-vg-32-pao",
+    "iso-vg-46-pao",
+    "iso-vg-68-pao",
+    "iso-vg-100-pao",
+    "iso-vg-150-pao",
+    "iso-vg-220-pao",
+    "iso-vg-320-pao",
+    "iso-vg-460-pao",
+    "iso-vg-680-pao",
+    "mil-prf-23699",
+    "mil-prf-7808",
+    "vg220-gear",
 ];
 
 /// Look up a built-in oil by name (case-insensitive; `_` and ` ` are accepted for `-`).
@@ -44,11 +79,64 @@ pub fn lubricant_by_name(name: &str) -> Result<Lubricant, LubError> {
         "ipm-10" => Ok(ipm_10()),
         "seed002-test-oil" => Ok(seed002_test_oil()),
         "irp-150" => Ok(irp_150()),
-        _ => Err(LubError::UnknownOil {
-            name: name.to_string(),
-            known: KNOWN_OILS.to_vec(),
+        "mil-prf-23699" => Ok(mil_prf_23699()),
+        "mil-prf-7808" => Ok(mil_prf_7808()),
+        "vg220-gear" => Ok(vg220_gear()),
+        _ => iso_vg_by_name(&key).unwrap_or_else(|| {
+            Err(LubError::UnknownOil {
+                name: name.to_string(),
+                known: KNOWN_OILS.to_vec(),
+            })
         }),
     }
+}
+
+/// `iso-vg-<N>-mineral` / `iso-vg-<N>-pao` of a listed grade, or `None`.
+fn iso_vg_by_name(key: &str) -> Option<Result<Lubricant, LubError>> {
+    let rest = key.strip_prefix("iso-vg-")?;
+    let (grade, base) = rest.split_once('-')?;
+    let base = match base {
+        "mineral" => BaseOil::Mineral,
+        "pao" => BaseOil::Pao,
+        _ => return None,
+    };
+    let grade: u32 = grade.parse().ok()?;
+    crate::grades::ISO_VG_GRADES
+        .contains(&grade)
+        .then(|| iso_vg(grade, base))
+}
+
+/// Γ of NVI 65 (seed 000 §2.3), Pa.
+pub(crate) const NVI65_SHEAR_MODULUS_PA: f64 = 3e9;
+/// κ of PAO1 (seed 000 §2.2), 1/(K·Pa).
+const PAO1_KAPPA_PER_K_PA: f64 = 1.2e-10;
+/// Γ of VNII NP 50-1-4u (seed 000 §3.1.2), Pa.
+pub(crate) const VNII_SHEAR_MODULUS_PA: f64 = 5e7;
+/// τ0 of VNII NP 50-1-4u (seed 000 §3.1.2), Pa.
+pub(crate) const VNII_EYRING_STRESS_PA: f64 = 3e5;
+/// κ (γ) of VNII NP 50-1-4u (seed 000 §3.1.2), 1/(K·Pa).
+const VNII_KAPPA_PER_K_PA: f64 = 1e-11;
+
+/// Γ(θ) of PAO1 (seed 000 §2.2): 7.444 + 0.0163θ − 0.002083θ² + 0.0000121θ³ GPa, θ in °C.
+pub(crate) fn pao1_shear_modulus() -> TempLaw {
+    TempLaw::PolynomialCelsius {
+        coeffs: vec![7.444e9, 0.0163e9, -0.002083e9, 0.0000121e9],
+    }
+}
+
+/// τ0(θ) of PAO1 (seed 000 §2.2): 8.46 − 0.054θ MPa, θ in °C.
+pub(crate) fn pao1_eyring_stress() -> TempLaw {
+    TempLaw::PolynomialCelsius {
+        coeffs: vec![8.46e6, -0.054e6],
+    }
+}
+
+/// `properties` given by the seed `source`, each as measured.
+fn given_by(source: &str, properties: &[OilProperty]) -> Vec<PropertySource> {
+    properties
+        .iter()
+        .map(|p| PropertySource::measured(*p, source))
+        .collect()
 }
 
 fn c(t_c: f64) -> f64 {
@@ -68,6 +156,7 @@ fn c(t_c: f64) -> f64 {
 pub fn pao1_vg320() -> Lubricant {
     Lubricant {
         name: "pao1-vg320".into(),
+        class: "PAO, ISO VG 320".into(),
         source: "seed 000 §2.2 (PAO1 ISO VG 320 temperature laws, K_f, kappa, beta0); density: flag F-25 assumption (docs/theory.md appendix A)".into(),
         temperature_range_k: [c(40.0), c(100.0)],
         density: Some(TempLaw::Constant { value: 850.0 }),
@@ -81,20 +170,35 @@ pub fn pao1_vg320() -> Lubricant {
             coeffs: vec![15.666e-9, -0.0666e-9],
         }),
         roelands_z: None,
-        shear_modulus: Some(TempLaw::PolynomialCelsius {
-            coeffs: vec![7.444e9, 0.0163e9, -0.002083e9, 0.0000121e9],
-        }),
-        eyring_stress: Some(TempLaw::PolynomialCelsius {
-            coeffs: vec![8.46e6, -0.054e6],
-        }),
+        shear_modulus: Some(pao1_shear_modulus()),
+        eyring_stress: Some(pao1_eyring_stress()),
         beta0_per_k: Some(0.023),
-        kappa_per_k_pa: Some(1.2e-10),
+        kappa_per_k_pa: Some(PAO1_KAPPA_PER_K_PA),
         thermal_conductivity: Some(TempLaw::Constant { value: 0.1304 }),
         mixed_friction: None,
         missing: vec![
             "oil density (850 kg/m^3 assumed, flag F-25)".into(),
             "Lambda_bd / Lambda_hd".into(),
         ],
+        provenance: [
+            given_by(
+                "seed 000 §2.2",
+                &[
+                    OilProperty::Viscosity,
+                    OilProperty::PressureViscosity,
+                    OilProperty::ShearModulus,
+                    OilProperty::EyringStress,
+                    OilProperty::Beta0,
+                    OilProperty::Kappa,
+                    OilProperty::ThermalConductivity,
+                ],
+            ),
+            vec![PropertySource::estimated(
+                OilProperty::Density,
+                "850 kg/m3 assumed (SPEC flag F-25)",
+            )],
+        ]
+        .concat(),
     }
 }
 
@@ -107,6 +211,7 @@ pub fn pao1_vg320() -> Lubricant {
 pub fn nvi65() -> Lubricant {
     Lubricant {
         name: "nvi65".into(),
+        class: "mineral (NVI 65)".into(),
         source: "seed 000 Table 2.3 and fits of §2.3 (eta(theta), alpha(theta) in MPa^-1 per F-26), Gamma = 3 GPa, Lambda 1.35/3.05".into(),
         temperature_range_k: [c(19.0), c(60.0)],
         density: None,
@@ -121,7 +226,9 @@ pub fn nvi65() -> Lubricant {
             coeffs: vec![0.0259e-6, -0.0001e-6],
         }),
         roelands_z: None,
-        shear_modulus: Some(TempLaw::Constant { value: 3e9 }),
+        shear_modulus: Some(TempLaw::Constant {
+            value: NVI65_SHEAR_MODULUS_PA,
+        }),
         eyring_stress: None,
         beta0_per_k: Some(0.04),
         kappa_per_k_pa: None,
@@ -136,6 +243,16 @@ pub fn nvi65() -> Lubricant {
             "thermal conductivity K_f".into(),
             "density".into(),
         ],
+        provenance: given_by(
+            "seed 000 Table 2.3 and §2.3",
+            &[
+                OilProperty::Viscosity,
+                OilProperty::PressureViscosity,
+                OilProperty::ShearModulus,
+                OilProperty::Beta0,
+                OilProperty::MixedFriction,
+            ],
+        ),
     }
 }
 
@@ -149,16 +266,21 @@ pub fn nvi65() -> Lubricant {
 pub fn vnii_np_50_1_4u() -> Lubricant {
     Lubricant {
         name: "vnii-np-50-1-4u".into(),
+        class: "synthetic aviation turbine oil".into(),
         source: "seed 000 §3.1.2 (beta0, gamma=kappa, Gamma, tau0, Lambda 0.2/1.5)".into(),
         temperature_range_k: [c(50.0), c(100.0)],
         density: None,
         viscosity: None,
         pressure_viscosity: None,
         roelands_z: None,
-        shear_modulus: Some(TempLaw::Constant { value: 5e7 }),
-        eyring_stress: Some(TempLaw::Constant { value: 3e5 }),
+        shear_modulus: Some(TempLaw::Constant {
+            value: VNII_SHEAR_MODULUS_PA,
+        }),
+        eyring_stress: Some(TempLaw::Constant {
+            value: VNII_EYRING_STRESS_PA,
+        }),
         beta0_per_k: Some(0.025),
-        kappa_per_k_pa: Some(1e-11),
+        kappa_per_k_pa: Some(VNII_KAPPA_PER_K_PA),
         thermal_conductivity: None,
         mixed_friction: Some(MixedLimitsData {
             lambda_bd: 0.2,
@@ -170,6 +292,16 @@ pub fn vnii_np_50_1_4u() -> Lubricant {
             "thermal conductivity K_f".into(),
             "density".into(),
         ],
+        provenance: given_by(
+            "seed 000 §3.1.2",
+            &[
+                OilProperty::ShearModulus,
+                OilProperty::EyringStress,
+                OilProperty::Beta0,
+                OilProperty::Kappa,
+                OilProperty::MixedFriction,
+            ],
+        ),
     }
 }
 
@@ -182,6 +314,7 @@ pub fn vnii_np_50_1_4u() -> Lubricant {
 pub fn vg220_mineral() -> Lubricant {
     Lubricant {
         name: "vg220-mineral".into(),
+        class: "mineral, ISO VG 220 (grease base oil)".into(),
         source: "seed 000 §3.2.1 (nu 220 / 19 mm^2/s at 40 / 100 C); Walther/ASTM D341 interpolation (standard form)".into(),
         temperature_range_k: [c(40.0), c(100.0)],
         density: None,
@@ -204,6 +337,7 @@ pub fn vg220_mineral() -> Lubricant {
             "kappa".into(),
             "thermal conductivity K_f".into(),
         ],
+        provenance: given_by("seed 000 §3.2.1", &[OilProperty::Viscosity]),
     }
 }
 
@@ -211,6 +345,7 @@ fn name_only(name: &str, source: &str, range_c: [f64; 2], missing: &[&str]) -> L
     Lubricant {
         name: name.into(),
         source: source.into(),
+        class: String::new(),
         temperature_range_k: [c(range_c[0]), c(range_c[1])],
         density: None,
         viscosity: None,
@@ -223,6 +358,7 @@ fn name_only(name: &str, source: &str, range_c: [f64; 2], missing: &[&str]) -> L
         thermal_conductivity: None,
         mixed_friction: None,
         missing: missing.iter().map(|s| s.to_string()).collect(),
+        provenance: Vec::new(),
     }
 }
 
@@ -263,6 +399,10 @@ pub fn seed002_test_oil() -> Lubricant {
             law: TempLaw::Constant { value: 0.024 },
         }),
         pressure_viscosity: Some(TempLaw::Constant { value: 0.75e-8 }),
+        provenance: given_by(
+            "seed 002",
+            &[OilProperty::Viscosity, OilProperty::PressureViscosity],
+        ),
         ..name_only(
             "seed002-test-oil",
             "seed 002 roller-plate oil (mu = 0.024 Pa s, alpha = 0.75e-8 1/Pa)",
@@ -283,6 +423,10 @@ pub fn irp_150() -> Lubricant {
             law: TempLaw::Constant { value: 0.14 },
         }),
         pressure_viscosity: Some(TempLaw::Constant { value: 1.4e-8 }),
+        provenance: given_by(
+            "seed 002 ch. 5",
+            &[OilProperty::Viscosity, OilProperty::PressureViscosity],
+        ),
         ..name_only(
             "irp-150",
             "seed 002 ch. 5 gearbox oil IRP-150 (mu = 0.14 Pa s, alpha = 1.4e-8 1/Pa)",

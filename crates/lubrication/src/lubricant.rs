@@ -1,38 +1,19 @@
 //! Lubricant and solid property models (SPEC §4.1, §4.2).
 //!
-//! A [`Lubricant`] is a set of temperature laws ([`TempLaw`]) in SI units. It deserialises from
-//! TOML/JSON so that engineers can supply their own oils; every optional property that a seed does
-//! not give is `None`, and models that need it refuse to build ([`crate::LubError::MissingProperty`]).
-//!
-//! ### User oil file (TOML, all SI; temperatures in kelvin)
-//! ```toml
-//! name = "my-oil"
-//! source = "supplier data sheet 2024"
-//! temperature_range_k = [293.15, 393.15]
-//! density = { kind = "polynomial_celsius", coeffs = [870.0, -0.6] }        # kg/m³, θ in °C
-//! viscosity = { kind = "kinematic", law = { kind = "walther", a = 8.8222, b = 3.3867 } }
-//! pressure_viscosity = { kind = "constant", value = 2.0e-8 }                # ᾱ, 1/Pa
-//! shear_modulus = { kind = "constant", value = 1.0e9 }                       # Γ, Pa
-//! eyring_stress = { kind = "constant", value = 5.0e6 }                       # τ0, Pa
-//! beta0_per_k = 0.03                                                          # β0, 1/K
-//! kappa_per_k_pa = 1.0e-10                                                    # κ (γ of seed 000), 1/(K·Pa)
-//! thermal_conductivity = { kind = "constant", value = 0.13 }                 # K_f, W/(m·K)
-//! mixed_friction = { lambda_bd = 0.01, lambda_hd = 1.5 }                     # Λ limits of (1.3)
-//! ```
-//! Keys: `kind` of a [`TempLaw`] is one of `constant`, `polynomial_celsius`, `power_celsius`,
-//! `power_kelvin`, `exponential`, `walther` (see the variants). `viscosity.kind` is `kinematic`
-//! (law in m²/s, multiplied by the density) or `dynamic` (law in Pa·s).
-
-use serde::Deserialize;
+//! A [`Lubricant`] is a set of temperature laws ([`TempLaw`]) in SI units, with the provenance of
+//! each property ([`PropertySource`]: measured or estimated, and from where). Every optional
+//! property that a source does not give is `None`, and models that need it refuse to build
+//! ([`crate::LubError::MissingProperty`]). User oil files (TOML with units) are read by
+//! `rolldyn_model::oil_file` into this type.
 
 use crate::error::LubError;
+use crate::provenance::{Basis, OilProperty, PropertySource};
 
 /// 0 °C in kelvin.
 pub const CELSIUS_ZERO: f64 = 273.15;
 
 /// A scalar property as a function of temperature. Output in SI units of the property.
-#[derive(Debug, Clone, PartialEq, Deserialize)]
-#[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
+#[derive(Debug, Clone, PartialEq)]
 pub enum TempLaw {
     /// Temperature-independent value.
     Constant {
@@ -103,8 +84,7 @@ impl TempLaw {
 }
 
 /// Atmospheric-pressure viscosity law.
-#[derive(Debug, Clone, PartialEq, Deserialize)]
-#[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
+#[derive(Debug, Clone, PartialEq)]
 pub enum ViscosityLaw {
     /// Kinematic viscosity ν(T) in m²/s; dynamic viscosity η = ρ(T)·ν(T) (needs `density`).
     Kinematic {
@@ -119,8 +99,7 @@ pub enum ViscosityLaw {
 }
 
 /// Film-parameter limits Λ_bd, Λ_hd of the mixed-friction blend (1.3).
-#[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
-#[serde(deny_unknown_fields)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct MixedLimitsData {
     /// Λ below which friction is boundary
     pub lambda_bd: f64,
@@ -132,51 +111,43 @@ pub struct MixedLimitsData {
 ///
 /// Properties that a data set does not define are `None`; [`Lubricant::missing`] documents what
 /// the source lacks. Use the accessor methods (they take kelvin).
-#[derive(Debug, Clone, PartialEq, Deserialize)]
-#[serde(deny_unknown_fields)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Lubricant {
     /// Name (library key or user name).
     pub name: String,
     /// Where the data come from (seed, table/equation), free text.
-    #[serde(default)]
     pub source: String,
+    /// Oil class and grade, e.g. `ISO VG 68 mineral (VI 95)`; empty when the source gives none.
+    pub class: String,
     /// Valid temperature range [T_min, T_max] in K of the fits. The traction model clamps the
     /// property temperature to this range (and flags it).
     pub temperature_range_k: [f64; 2],
     /// Density ρ(T), kg/m³.
-    #[serde(default)]
     pub density: Option<TempLaw>,
     /// Atmospheric viscosity η_N0(T) / ν(T).
-    #[serde(default)]
     pub viscosity: Option<ViscosityLaw>,
     /// Barus pressure–viscosity coefficient ᾱ(T), 1/Pa ((1.5), (002-3.8)).
-    #[serde(default)]
     pub pressure_viscosity: Option<TempLaw>,
     /// Roelands pressure–viscosity index Z; if `None` it is derived from ᾱ (α = 5.1e-9 (ln η0 + 9.67) Z).
-    #[serde(default)]
     pub roelands_z: Option<f64>,
     /// Oil shear modulus Γ(T) (G in seed 000), Pa ((1.4)).
-    #[serde(default)]
     pub shear_modulus: Option<TempLaw>,
     /// Eyring characteristic stress τ0(T), Pa ((1.4)).
-    #[serde(default)]
     pub eyring_stress: Option<TempLaw>,
     /// Temperature–viscosity coefficient β0 of (1.5)/(1.9), 1/K. If `None`, derived from the
     /// viscosity law as −d ln η0/dT.
-    #[serde(default)]
     pub beta0_per_k: Option<f64>,
     /// Combined temperature–pressure coefficient κ (printed γ in (1.9) and for VNII; F-24), 1/(K·Pa).
-    #[serde(default)]
     pub kappa_per_k_pa: Option<f64>,
     /// Oil thermal conductivity K_f(T) (λ_c of seed 001), W/(m·K).
-    #[serde(default)]
     pub thermal_conductivity: Option<TempLaw>,
     /// Λ_bd / Λ_hd recommended with this oil for (1.3).
-    #[serde(default)]
     pub mixed_friction: Option<MixedLimitsData>,
     /// What the source does not give (documentation only).
-    #[serde(default)]
     pub missing: Vec<String>,
+    /// Where each given property comes from (measured or estimated); a property without an
+    /// entry has no stated provenance (user oil files may omit it).
+    pub provenance: Vec<PropertySource>,
 }
 
 /// Properties of an oil evaluated at one temperature (SI). Missing items are `None`.
@@ -265,6 +236,18 @@ impl Lubricant {
             ));
         }
         Ok(())
+    }
+
+    /// The properties whose provenance is `basis`, in [`OilProperty::ALL`] order.
+    pub fn properties_with(&self, basis: Basis) -> Vec<OilProperty> {
+        OilProperty::ALL
+            .into_iter()
+            .filter(|p| {
+                self.provenance
+                    .iter()
+                    .any(|s| s.property == *p && s.basis == basis)
+            })
+            .collect()
     }
 
     /// Is `t_k` inside the documented temperature range?
@@ -409,7 +392,7 @@ pub(crate) enum Property {
 
 /// Thermal properties of the contacting solids (K_m, ρ_m, c_m of (1.9); λ, γ, c of the seed 001
 /// Blok formula).
-#[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct SolidThermal {
     /// thermal conductivity, W/(m·K)

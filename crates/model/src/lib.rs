@@ -11,6 +11,7 @@ mod convert;
 mod dynamics;
 mod error;
 pub mod journal;
+pub mod oil_file;
 mod operation;
 mod raceway_wear;
 pub mod schema;
@@ -21,6 +22,7 @@ pub use dynamics::{
     CageLandLaw, DynamicsInputs, EndFrictionLaw, EndPairInputs, PairInputs, RollerCageLaw,
 };
 pub use error::{MAX_QUOTED_CHARS, ModelError, shorten_long_words};
+pub use oil_file::{load_oil_file, parse_oil_file};
 pub use operation::{
     DEFAULT_STARTUP_REVOLUTIONS, FixedLoad, FrozenPoint, Lubrication, Operating, Schedules,
     Startup, Temperatures,

@@ -386,15 +386,8 @@ pub(crate) fn lubrication(
                 .parent()
                 .unwrap_or(Path::new("."))
                 .join(file);
-            let text = crate::read_input_file(&path).map_err(|e| {
-                GeometryError::new("lubricant.file", format!("{}: {e}", path.display()))
-            })?;
-            toml::from_str(&text).map_err(|e| {
-                GeometryError::new(
-                    "lubricant.file",
-                    format!("{}: {}", path.display(), e.message().trim()),
-                )
-            })?
+            crate::load_oil_file(&path)
+                .map_err(|e| GeometryError::new("lubricant.file", e.to_string()))?
         }
         _ => {
             return Err(GeometryError::new(

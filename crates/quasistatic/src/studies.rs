@@ -377,6 +377,7 @@ pub fn ipm10_assumed() -> Lubricant {
         name: "ipm-10 (assumed data)".into(),
         source: "seed 001 names the oil only; typical light mineral turbine oil data (assumed)"
             .into(),
+        class: "light mineral turbine oil (assumed)".into(),
         temperature_range_k: [celsius(20.0), celsius(150.0)],
         density: Some(TempLaw::Constant { value: 860.0 }),
         viscosity: Some(ViscosityLaw::Kinematic {
@@ -399,6 +400,7 @@ pub fn ipm10_assumed() -> Lubricant {
             lambda_hd: 1.5,
         }),
         missing: vec!["everything: assumed values".into()],
+        provenance: Vec::new(),
     }
 }
 

@@ -42,24 +42,7 @@ impl OilChoice {
         let Some(path) = &self.oil_file else {
             return lubricant_by_name(&self.oil).map_err(|e| Failure::Input(e.to_string()));
         };
-        let file = path.display().to_string();
-        let text = rolldyn_model::read_input_file(path)
-            .map_err(|e| Failure::Input(format!("{file}: {e}")))?;
-        toml::from_str(&text).map_err(|e| {
-            let line = e
-                .span()
-                .map(|s| {
-                    format!(
-                        ":{}",
-                        text[..s.start.min(text.len())].matches('\n').count() + 1
-                    )
-                })
-                .unwrap_or_default();
-            Failure::Input(format!(
-                "{file}{line}: {}",
-                e.message().trim().replace('\n', " ")
-            ))
-        })
+        rolldyn_model::load_oil_file(path).map_err(|e| Failure::Input(e.to_string()))
     }
 
     /// Warns (or fails when `strict`) when `temperature_k` is outside the oil's range.

@@ -5,7 +5,8 @@ use crate::analysis::{Analysis, Context};
 use crate::failure::Failure;
 use crate::oil::OilChoice;
 use crate::table::{Table, Tables};
-use rolldyn_lubrication::{KNOWN_OILS, Lubricant, lubricant_by_name};
+use rolldyn_lubrication::viscosity_index::viscosity_index;
+use rolldyn_lubrication::{Basis, KNOWN_OILS, Lubricant, OilProperty, lubricant_by_name};
 use rolldyn_units::{Quantity, Temperature};
 use serde::{Deserialize, Serialize};
 use std::fmt;
@@ -46,12 +47,37 @@ pub struct OilRow {
     pub kappa_per_k_pa: Option<f64>,
     pub thermal_conductivity_w_mk: Option<f64>,
     pub missing: Vec<String>,
+    /// Oil class and grade (empty when the source gives none).
+    pub class: String,
+    /// ν at 40 and 100 °C (the points of the viscosity grade and index), m²/s.
+    pub nu40_m2_s: Option<f64>,
+    pub nu100_m2_s: Option<f64>,
+    /// ASTM D2270 viscosity index from `nu40_m2_s` and `nu100_m2_s`.
+    pub viscosity_index: Option<f64>,
+    /// Keys of the properties from a measurement (standard, data sheet, test).
+    pub measured: Vec<String>,
+    /// Keys of the properties from a correlation, class value or another oil.
+    pub estimated: Vec<String>,
+    /// Each property's basis and source.
+    pub provenance: Vec<ProvenanceRow>,
 }
+
+/// Where one property of an oil comes from.
+#[derive(Clone, Debug, Serialize)]
+pub struct ProvenanceRow {
+    pub property: String,
+    pub basis: String,
+    pub source: String,
+}
+
+/// 40 °C and 100 °C, K: the temperatures of ISO 3448 grades and ASTM D2270.
+const VISCOSITY_GRADE_TEMPERATURES_K: [f64; 2] = [313.15, 373.15];
 
 impl OilRow {
     /// The properties of `oil` at `t` (K).
     pub fn of(oil: &Lubricant, t: f64) -> Self {
         let p = oil.properties(t);
+        let [nu40, nu100] = VISCOSITY_GRADE_TEMPERATURES_K.map(|t| oil.kinematic_viscosity(t).ok());
         Self {
             name: oil.name.clone(),
             source: oil.source.clone(),
@@ -68,6 +94,23 @@ impl OilRow {
             kappa_per_k_pa: p.kappa,
             thermal_conductivity_w_mk: p.thermal_conductivity,
             missing: oil.missing.clone(),
+            class: oil.class.clone(),
+            nu40_m2_s: nu40,
+            nu100_m2_s: nu100,
+            viscosity_index: nu40
+                .zip(nu100)
+                .and_then(|(a, b)| viscosity_index(a, b).ok()),
+            measured: keys(oil.properties_with(Basis::Measured)),
+            estimated: keys(oil.properties_with(Basis::Estimated)),
+            provenance: oil
+                .provenance
+                .iter()
+                .map(|s| ProvenanceRow {
+                    property: s.property.key().into(),
+                    basis: s.basis.name().into(),
+                    source: s.source.clone(),
+                })
+                .collect(),
         }
     }
 
@@ -91,6 +134,26 @@ impl OilRow {
                 .filter(|v| !(v.is_finite() && *v > 0.0))
                 .map(|v| (name, v))
         })
+    }
+}
+
+fn keys(properties: Vec<OilProperty>) -> Vec<String> {
+    properties.iter().map(|p| p.key().to_string()).collect()
+}
+
+/// Short symbol of a property in the text listing.
+fn symbol(key: &str) -> &str {
+    match OilProperty::from_key(key) {
+        Some(OilProperty::Viscosity) => "ν",
+        Some(OilProperty::Density) => "ρ",
+        Some(OilProperty::PressureViscosity) => "α",
+        Some(OilProperty::ShearModulus) => "Γ",
+        Some(OilProperty::EyringStress) => "τ0",
+        Some(OilProperty::Beta0) => "β0",
+        Some(OilProperty::Kappa) => "κ",
+        Some(OilProperty::ThermalConductivity) => "K",
+        Some(OilProperty::MixedFriction) => "Λ",
+        None => key,
     }
 }
 
@@ -140,7 +203,13 @@ impl Tables for OilsResult {
                     "thermal_conductivity_w_mk",
                     real(|r| r.thermal_conductivity_w_mk),
                 )
-                .text("missing", text(|r| r.missing.join("; "))),
+                .text("missing", text(|r| r.missing.join("; ")))
+                .text("class", text(|r| r.class.clone()))
+                .real("nu40_m2_s", real(|r| r.nu40_m2_s))
+                .real("nu100_m2_s", real(|r| r.nu100_m2_s))
+                .real("viscosity_index", real(|r| r.viscosity_index))
+                .text("measured", text(|r| r.measured.join(" ")))
+                .text("estimated", text(|r| r.estimated.join(" "))),
         ]
     }
 }
@@ -186,9 +255,32 @@ impl fmt::Display for OilsResult {
                 if r.in_range { "" } else { "  (outside range)" }
             )?;
         }
+        writeln!(
+            f,
+            "\n{:<18} {:<40} {:>8} {:>8} {:>5}  {:<18} estimated",
+            "name", "class", "ν40", "ν100", "VI", "measured"
+        )?;
+        let symbols =
+            |keys: &[String]| keys.iter().map(|k| symbol(k)).collect::<Vec<_>>().join(" ");
+        for r in &self.oils {
+            writeln!(
+                f,
+                "{:<18} {:<40} {:>8} {:>8} {:>5}  {:<18} {}",
+                r.name,
+                if r.class.is_empty() { "—" } else { &r.class },
+                cell(r.nu40_m2_s, 1e6, 2),
+                cell(r.nu100_m2_s, 1e6, 2),
+                cell(r.viscosity_index, 1.0, 0),
+                symbols(&r.measured),
+                symbols(&r.estimated)
+            )?;
+        }
         let mut sources = Vec::new();
         for r in &self.oils {
             sources.push(format!("{}: {}", r.name, r.source));
+            for p in &r.provenance {
+                sources.push(format!("    {} ({}): {}", p.property, p.basis, p.source));
+            }
             if !r.missing.is_empty() {
                 sources.push(format!("    missing: {}", r.missing.join("; ")));
             }
