@@ -266,6 +266,23 @@ impl ContaminationLevel {
     }
 }
 
+impl std::str::FromStr for ContaminationLevel {
+    type Err = String;
+    /// A level by its name (`normal-cleanliness`).
+    fn from_str(text: &str) -> Result<Self, Self::Err> {
+        Self::ALL
+            .into_iter()
+            .find(|l| l.name() == text.trim())
+            .ok_or_else(|| {
+                let names: Vec<&str> = Self::ALL.iter().map(|l| l.name()).collect();
+                format!(
+                    "'{text}' is no ISO 281 Table 13 level ({})",
+                    names.join(", ")
+                )
+            })
+    }
+}
+
 /// Contamination factor e_C of a level: the low (conservative) end of its ISO 281:2007
 /// Table 13 range. The table gives ranges, to be narrowed by experience; the low end is the
 /// value that does not overstate the life.
@@ -469,5 +486,9 @@ mod tests {
         assert_eq!(l.factor_range(0.099), (0.5, 0.6));
         assert_eq!(l.factor_range(0.1), (0.6, 0.8));
         assert_eq!(contamination_factor(l, 0.2), 0.6);
+        for level in ContaminationLevel::ALL {
+            assert_eq!(level.name().parse::<ContaminationLevel>(), Ok(level));
+        }
+        assert!("dirty".parse::<ContaminationLevel>().is_err());
     }
 }
