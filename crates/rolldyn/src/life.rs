@@ -11,6 +11,7 @@ use crate::loads::{LoadsRequest, load_case};
 use crate::operating::{LoadDirectionName, Operating};
 use crate::table::{Table, Tables};
 use rolldyn_geometry::{BearingModel, CylindricalRollerBearing, DoubleRowTaperedBearing};
+use rolldyn_lubrication::Lubricant;
 use rolldyn_model::{Model, Temperatures};
 use rolldyn_quasistatic::tapered::{TaperedLoadSettings, TiltCondition, solve_tapered_loads};
 use rolldyn_quasistatic::{
@@ -281,10 +282,10 @@ impl Analysis for Life {
         let a1 = iso281::reliability_factor(reliability_percent)
             .map_err(|e| Failure::Input(format!("--reliability: {e}")))?;
         let (contamination, e_c) = contamination(request, dpw, &mut defaults)?;
-        let oil = model
+        let lubricant = model
             .lubrication
             .as_ref()
-            .map(|l| l.oil.name.clone())
+            .map(|l| &l.oil)
             .ok_or_else(|| {
                 Failure::Input(
                     model
@@ -311,6 +312,7 @@ impl Analysis for Life {
         let factors = Factors {
             a1,
             e_c,
+            oil: lubricant,
             ratings: &ratings,
             geometry: &geometry,
         };
@@ -334,7 +336,7 @@ impl Analysis for Life {
             a1,
             contamination,
             e_c,
-            oil,
+            oil: lubricant.name.clone(),
             defaults,
             lives,
             conditions,
@@ -509,10 +511,11 @@ impl OperatingPoint {
     }
 }
 
-/// What every condition shares: a1, e_C, the ratings.
+/// What every condition shares: a1, e_C, the oil, the ratings.
 struct Factors<'a> {
     a1: f64,
     e_c: f64,
+    oil: &'a Lubricant,
     ratings: &'a Ratings,
     geometry: &'a RollerBearingGeometry,
 }
@@ -543,10 +546,9 @@ fn condition_life(
     let speed = point.relative_speed();
     let l10_rev = iso281::basic_rating_life(r.dynamic_n, p);
 
-    let lubrication = model.lubrication.as_ref().expect("checked by the caller");
     let viscosity_m2_s = match request.viscosity {
         Some(v) => v.si(),
-        None => lubrication
+        None => factors
             .oil
             .kinematic_viscosity(point.oil_temperature)
             .map_err(|e| {
@@ -703,13 +705,15 @@ fn tapered_laminae(
         axial_load: Some(Quantity::from_si(point.axial_load)),
         ..point.operating.clone()
     };
-    let case = load_case(
+    let mut case = load_case(
         &LoadsRequest {
             operating,
             ..LoadsRequest::default()
         },
         model,
     )?;
+    // at rest: no centrifugal force in the ratings' load distribution
+    case.inner_speed_rad_s = 0.0;
     let solved = solve_tapered_loads(bearing, &case, &TaperedLoadSettings::default())
         .map_err(|e| qs_failure(model, e))?;
     let mut laminae = LaminaLoads::default();
