@@ -49,7 +49,10 @@ fn text_names_the_defaults_and_a_duty_cycle_combines() {
         "time=0.3,speed=8000rpm,radial-load=12kN",
     ]);
     let text = String::from_utf8(out.stdout).unwrap();
-    assert!(text.contains("default: contamination normal-cleanliness"), "{text}");
+    assert!(
+        text.contains("default: contamination normal-cleanliness"),
+        "{text}"
+    );
     assert!(text.contains("default: reliability 90 %"), "{text}");
     assert!(text.contains("duty cycle (Palmgren–Miner)"), "{text}");
 }

@@ -282,18 +282,14 @@ impl Analysis for Life {
         let a1 = iso281::reliability_factor(reliability_percent)
             .map_err(|e| Failure::Input(format!("--reliability: {e}")))?;
         let (contamination, e_c) = contamination(request, dpw, &mut defaults)?;
-        let lubricant = model
-            .lubrication
-            .as_ref()
-            .map(|l| &l.oil)
-            .ok_or_else(|| {
-                Failure::Input(
-                    model
-                        .source
-                        .error("lubricant", "life needs a [lubricant] section (κ = ν/ν1)")
-                        .to_string(),
-                )
-            })?;
+        let lubricant = model.lubrication.as_ref().map(|l| &l.oil).ok_or_else(|| {
+            Failure::Input(
+                model
+                    .source
+                    .error("lubricant", "life needs a [lubricant] section (κ = ν/ν1)")
+                    .to_string(),
+            )
+        })?;
 
         let rows: Vec<DutyRow> = if request.duty.is_empty() {
             vec![DutyRow {
