@@ -382,6 +382,58 @@ def loads(model: ModelLike, *, speed=None, outer_speed=None, radial_load=None, a
     return call("loads", options, Result, model=model, groups={"operating": OPERATING})
 
 
+def life(model: ModelLike, *, speed=None, outer_speed=None, radial_load=None, axial_load=None,
+         load_direction: Optional[str] = None, oil_temperature=None, misalignment=None,
+         clearance=None, contamination: Optional[str] = None,
+         contamination_factor: Optional[float] = None, reliability: Optional[float] = None,
+         viscosity=None, duty: Optional[Sequence[dict]] = None) -> Result:
+    """Rating life of a cylindrical or double-row tapered bearing (`rolldyn life`): ISO 281
+    C_r, L10 and L_nm, ISO 76 C0r and s0, ISO/TS 16281 L10r of each ring and the bearing from
+    the slice loads of the load distribution; a duty cycle combined by Palmgren–Miner.
+
+    Parameters
+    ----------
+    model : Model or path
+        A cylindrical or double-row tapered bearing with a ``[lubricant]``.
+    speed, outer_speed, radial_load, axial_load, load_direction, oil_temperature, misalignment
+        Overrides of the model's operating point (floats SI, or strings with units).
+    clearance : float or str, optional
+        Diametral operating clearance of a cylindrical bearing (replaces the derived one), m.
+    contamination : str, optional
+        ISO 281 Table 13 level: ``"extreme-cleanliness"``, ``"high-cleanliness"``,
+        ``"normal-cleanliness"`` (the default, named in ``defaults``),
+        ``"slight-contamination"``, ``"typical-contamination"``, ``"severe-contamination"``,
+        ``"very-severe-contamination"``; e_C is the low end of the level's range.
+    contamination_factor : float, optional
+        e_C (0…1) given directly instead of a level.
+    reliability : float, optional
+        Reliability in % from ISO 281 Table 12 (default 90, named in ``defaults``).
+    viscosity : float or str, optional
+        Kinematic viscosity at the operating temperature, m²/s (replaces the model oil's).
+    duty : list of dict, optional
+        Duty-cycle rows ``{"time": 0.3, "speed": "5000 rpm", "radial_load": "15 kN"}`` (keys
+        ``time`` — a share or hours —, ``speed``, ``radial_load``, ``axial_load``,
+        ``oil_temperature``); each row's lives are combined by Palmgren–Miner.
+
+    Returns
+    -------
+    Result
+        Summary keys: ``model``, ``kind``, ``ratings`` (``dynamic_n`` C_r, ``static_n`` C0r,
+        ``fatigue_limit_n`` C_u, ``fc``, the dimensions, the lamina ratings),
+        ``reliability_percent``, ``a1``, ``contamination``, ``e_c``, ``oil``, ``defaults``,
+        ``s0``, ``lives`` (``l10_rev``, ``l10_h``, ``l_nm_rev``, ``l_nm_h``, ``l10r_rev``,
+        ``l10r_h``: of the only condition or the duty cycle), ``conditions`` (per row: loads,
+        ``equivalent_load``, ``s0``, ``l10_*``, ``viscosity_m2_s``, ``nu1_m2_s``, ``kappa``,
+        ``a_iso``, ``l_nm_*``, ``clearance_m``, ``misalignment_rad``, ``l10r_inner_rev``,
+        ``l10r_outer_rev``, ``l10r_*``). Tables ``conditions`` and ``slices`` (lamina loads).
+    """
+    model = as_model(model)
+    options = dict(locals())
+    options.pop("model")
+    options["duty"] = list(duty or [])
+    return call("life", options, Result, model=model, groups={"operating": OPERATING})
+
+
 def journal(*, file: Optional[PathLike] = None, radius=None, length=None, clearance=None,
             viscosity=None, speed=None, eccentricity: Optional[float] = None, load=None,
             temperature=None, cavitation: Optional[str] = None, grid: Optional[str] = None,

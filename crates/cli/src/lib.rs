@@ -39,6 +39,9 @@ pub enum Command {
     /// Quasi-static load distribution of a double-row tapered bearing (radial, axial load,
     /// tilting moment or misalignment): roller, rib loads and load zones per row.
     Loads(commands::loads::Args),
+    /// Rating life: ISO 281 C_r, L10, L_nm, ISO 76 s0, ISO/TS 16281 L10r from the slice loads;
+    /// duty cycles by Palmgren–Miner.
+    Life(commands::life::Args),
     /// Time-domain 6-DOF dynamics of a cylindrical roller bearing.
     Simulate(commands::simulate::Args),
     /// Run a table of model variants in parallel (any model key can vary).
@@ -76,6 +79,7 @@ pub fn execute(command: Command) -> Result<(), Failure> {
         Command::Wear(args) => commands::wear::run(args),
         Command::Fatigue(args) => commands::fatigue::run(args),
         Command::Loads(args) => commands::loads::run(args),
+        Command::Life(args) => commands::life::run(args),
         Command::Simulate(args) => commands::simulate::run(args),
         Command::Skid(args) => commands::skid::run(args),
         Command::Oils(args) => commands::oils::run(args),

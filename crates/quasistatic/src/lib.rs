@@ -65,7 +65,7 @@ pub use conditions::{
 pub use error::{QsError, Residual};
 pub use kinematics::KinematicCase;
 pub use load_distribution::{LoadCase, LoadDistribution, LoadModel, RollerLoad};
-pub use model::static_load_rating;
+pub use model::{rating_geometry, static_load_rating};
 pub use operating_geometry::{OperatingGeometry, operating_geometry};
 pub use options::{LandMomentArm, QuasiStaticOptions, SlipReference};
 pub use results::{ContactResult, RollerResult, SkidResult, Zone};

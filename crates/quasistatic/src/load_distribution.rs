@@ -231,6 +231,22 @@ impl LoadModel {
         &self.outer
     }
 
+    /// Slice forces of `roller` (a roller of a solved distribution) on the inner and the outer
+    /// raceway [N], in the order of the slices: the slice approaches of the module docs at its
+    /// approaches and tilts (inner tilt θ_j − β_j, outer β_j).
+    pub fn slice_loads(&self, roller: &RollerLoad) -> [Vec<f64>; 2] {
+        let mut inner = vec![0.0; self.inner.len()];
+        let mut outer = vec![0.0; self.outer.len()];
+        self.inner.evaluate(
+            roller.inner_approach_m,
+            roller.ring_tilt_rad - roller.roller_tilt_rad,
+            &mut inner,
+        );
+        self.outer
+            .evaluate(roller.outer_approach_m, roller.roller_tilt_rad, &mut outer);
+        [inner, outer]
+    }
+
     /// Outer-contact approach carrying `force` at zero tilt.
     fn outer_approach(&self, force: f64, tol: f64) -> Result<f64, QsError> {
         self.outer

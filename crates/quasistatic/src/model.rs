@@ -10,6 +10,8 @@
 //! final evaluation, scuffing margins, powers
 //! ```
 
+use rolldyn_rating::RollerBearingGeometry;
+use rolldyn_rating::iso76::static_radial_rating;
 use std::time::Instant;
 
 use crate::cage_equilibrium::{CageBalance, CageSetup, LandSetup, RollerOnCage, cage_balance};
@@ -596,13 +598,24 @@ fn contact_result(
     }
 }
 
+/// The internal dimensions of a cylindrical roller bearing that its ISO 76 / ISO 281 ratings
+/// take: D_we, L_we (the profile's effective length), α = 0, D_pw, Z, one row.
+pub fn rating_geometry(bearing: &CylindricalRollerBearing) -> RollerBearingGeometry {
+    RollerBearingGeometry {
+        roller_diameter_m: bearing.roller.diameter,
+        effective_length_m: bearing.roller.profile.effective_length(),
+        contact_angle_rad: 0.0,
+        pitch_diameter_m: bearing.pitch_diameter(),
+        rollers_per_row: bearing.roller_count,
+        rows: 1,
+    }
+}
+
 /// Basic static radial load rating of a cylindrical roller bearing, ISO 76 (standard form, not
-/// in the seeds): C₀r = 44 (1 − D_we/D_pw) Z L_we D_we (N, mm).
+/// in the seeds): C₀r = 44 (1 − D_we/D_pw) Z L_we D_we (N, mm), [`static_radial_rating`] with
+/// α = 0 and one row.
 pub fn static_load_rating(bearing: &CylindricalRollerBearing) -> f64 {
-    let dw = bearing.roller.diameter * 1e3;
-    let lwe = bearing.roller.profile.effective_length() * 1e3;
-    let dpw = bearing.pitch_diameter() * 1e3;
-    44.0 * (1.0 - dw / dpw) * bearing.roller_count as f64 * lwe * dw
+    static_radial_rating(&rating_geometry(bearing))
 }
 
 /// See [`crate::solve_with_land_model`].

@@ -164,7 +164,7 @@ impl Analysis for Loads {
 }
 
 /// The load case from the model's `[operating]` and `[misalignment]` sections and the request.
-fn load_case(
+pub(crate) fn load_case(
     request: &LoadsRequest,
     model: &rolldyn_model::Model,
 ) -> Result<TaperedLoadCase, Failure> {

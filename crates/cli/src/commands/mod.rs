@@ -9,6 +9,7 @@ pub mod fatigue;
 pub mod film;
 mod jobs_args;
 pub mod journal;
+pub mod life;
 pub mod loads;
 mod oil_args;
 pub mod oils;

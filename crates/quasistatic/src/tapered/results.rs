@@ -96,6 +96,11 @@ pub struct TaperedLoads {
     pub rollers: Vec<TaperedRollerLoad>,
     /// Balance checks.
     pub checks: TaperedSumChecks,
+    /// Slice forces of each roller (in the order of `rollers`) on the cone and on the cup [N],
+    /// slices in the order of the roller's slice stack (small end first): the lamina loads of
+    /// ISO/TS 16281.
+    #[serde(skip)]
+    pub slice_loads_n: Vec<[Vec<f64>; 2]>,
 }
 
 /// Columns of the per-roller table ([`roller_row`]).

@@ -198,6 +198,29 @@ impl RowRoller {
         }
     }
 
+    /// Approach of slice `i` to the raceway `line` in `placement`: its reach less the distance
+    /// of its centre from the line [m].
+    fn slice_approach(&self, i: usize, placement: &Placement, line: &Line) -> f64 {
+        self.reach[i] - line.distance(placement.mid + self.x[i] * placement.axis)
+    }
+
+    /// Slice forces on the cone and on the cup at `pose` [N], in the order of the slices.
+    pub fn slice_loads(&self, pose: RollerPose, loading: &RollerLoading) -> [Vec<f64>; 2] {
+        let p = self.place(pose);
+        [(CONE, &self.cone), (CUP, &loading.cup)].map(|(race, line)| {
+            (0..self.x.len())
+                .map(|i| {
+                    let delta = self.slice_approach(i, &p, line);
+                    if delta <= ROUNDING_APPROACH {
+                        0.0
+                    } else {
+                        self.k[race][i] * delta.powf(self.n[race])
+                    }
+                })
+                .collect()
+        })
+    }
+
     /// Contact forces, generalised forces and energy at `pose`.
     pub fn evaluate(&self, pose: RollerPose, loading: &RollerLoading) -> RollerState {
         let p = self.place(pose);
@@ -209,7 +232,7 @@ impl RowRoller {
             let n = self.n[race];
             for i in 0..self.x.len() {
                 let centre = p.mid + self.x[i] * p.axis;
-                let delta = self.reach[i] - line.distance(centre);
+                let delta = self.slice_approach(i, &p, line);
                 if delta <= ROUNDING_APPROACH {
                     continue;
                 }

@@ -65,6 +65,7 @@ pub(crate) fn summarise(
     }
     let mut cup_side = applied;
     let mut rollers = Vec::with_capacity(2 * z);
+    let mut slice_loads_n = Vec::with_capacity(2 * z);
     let mut rows = Vec::with_capacity(2);
     for k in 0..2 {
         let mut cup_force = [0.0; 5];
@@ -77,6 +78,7 @@ pub(crate) fn summarise(
             let (f_cup, m_cup) =
                 motion.wrench_to_bearing(st.q[CUP] * loading.cup.normal, st.moment[CUP]);
             add_wrench(&mut cup_force, psi, -f_cup, -m_cup);
+            slice_loads_n.push(problem.rows[k].slice_loads(st.pose, &loading));
             rollers.push(TaperedRollerLoad {
                 row: k,
                 index: j,
@@ -115,6 +117,7 @@ pub(crate) fn summarise(
         rows: [rows.remove(0), rows.remove(0)],
         rollers,
         checks,
+        slice_loads_n,
     }
 }
 
