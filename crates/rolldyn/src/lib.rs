@@ -30,6 +30,7 @@ pub mod fatigue;
 pub mod film;
 pub mod journal;
 pub mod loads;
+pub mod new_model;
 pub mod model_source;
 pub mod observer;
 pub mod oil;
@@ -75,6 +76,7 @@ pub const ANALYSES: &[&str] = &[
     fatigue::Fatigue::NAME,
     fatigue::Rainflow::NAME,
     study::Study::NAME,
+    new_model::NewModel::NAME,
 ];
 
 /// Runs the analysis `name` on a request given as JSON (a field the request does not have is
@@ -100,6 +102,7 @@ pub fn run_json(name: &str, request: &str, context: &Context<'_>) -> Result<Answ
         fatigue::Fatigue::NAME => analysis::answer::<fatigue::Fatigue>(request, context),
         fatigue::Rainflow::NAME => analysis::answer::<fatigue::Rainflow>(request, context),
         study::Study::NAME => analysis::answer::<study::Study>(request, context),
+        new_model::NewModel::NAME => analysis::answer::<new_model::NewModel>(request, context),
         _ => Err(Failure::Input(format!(
             "no analysis named '{name}' (known: {})",
             ANALYSES.join(", ")

@@ -10,6 +10,7 @@ pub mod film;
 mod jobs_args;
 pub mod journal;
 pub mod loads;
+pub mod new;
 mod oil_args;
 pub mod oils;
 mod operating_args;
