@@ -35,9 +35,9 @@ fn derived(value: f64, why: impl Into<String>) -> Dim {
 
 const MM: f64 = 1e-3;
 
-/// Roller diameter D_w ≈ 0.25 … 0.3 (D − d) for cylindrical roller bearings of the diameter
-/// series 0…3 (Harris & Kotzalas, *Essential Concepts of Bearing Technology*, 5th ed., ch. 2;
-/// the middle of the range is taken).
+/// Roller diameter D_w ≈ 0.25 … 0.3 (D − d), the rule of thumb of issue 38 (after Harris &
+/// Kotzalas, *Essential Concepts of Bearing Technology*; docs/theory.md §13.2 says what was and
+/// was not checked); the middle of the range is taken.
 pub const ROLLER_DIAMETER_FRACTION: f64 = 0.275;
 /// Axial width of a rib, per side: the ring's chamfer r_s plus 0.2 D_w of rib face.
 pub const RIB_FACE_PER_ROLLER_DIAMETER: f64 = 0.2;
@@ -192,7 +192,7 @@ pub fn design(input: &DesignInput) -> Result<BearingDesign, DesignError> {
     check_walls(b, inner_raceway.value, outer_raceway.value, input)?;
     let rib_height = RIB_HEIGHT_PER_ROLLER_DIAMETER * d_w;
     let rib_rule = format!(
-        "rib height {} D_w = {} above the raceway",
+        "rib height {} D_w = {} above the raceway, theory §13.3",
         RIB_HEIGHT_PER_ROLLER_DIAMETER,
         mm(rib_height)
     );
@@ -208,7 +208,7 @@ pub fn design(input: &DesignInput) -> Result<BearingDesign, DesignError> {
     };
     let rib_play = estimated(
         round_to(RIB_PLAY_PER_ROLLER_DIAMETER * d_w, 0.01 * MM).max(0.02 * MM),
-        format!("roller–rib axial play {} D_w", RIB_PLAY_PER_ROLLER_DIAMETER),
+        format!("roller–rib axial play {} D_w, theory §13.3", RIB_PLAY_PER_ROLLER_DIAMETER),
     );
     let rib_spacing = derived(l_w + rib_play.value, "L_w + roller–rib axial play");
     let land_width = derived(
@@ -219,14 +219,14 @@ pub fn design(input: &DesignInput) -> Result<BearingDesign, DesignError> {
         round_to(FLOATING_CLEARANCE_PER_LAND_DIAMETER * guiding_rib.value, 0.05 * MM)
             .max(0.1 * MM),
         format!(
-            "{} % of the land diameter (seed bearings 2002834, 1032930: 0.29 %, 0.26 %)",
+            "{} % of the land diameter as the seed bearings 2002834, 1032930 (0.29 %, 0.26 %), theory §13.4",
             100.0 * FLOATING_CLEARANCE_PER_LAND_DIAMETER
         ),
     );
     let g = floating_clearance.value;
     let gap = round_to(CAGE_GAP_PER_ROLLER_DIAMETER * d_w, 0.1 * MM);
     let gap_rule = format!(
-        "{} D_w = {} radial gap to the ring it does not run on",
+        "{} D_w = {} radial gap to the ring it does not run on, theory §13.4",
         CAGE_GAP_PER_ROLLER_DIAMETER,
         mm(gap)
     );
@@ -283,7 +283,7 @@ pub fn design(input: &DesignInput) -> Result<BearingDesign, DesignError> {
     );
     let fillet_radius = estimated(
         round_to(0.03 * d_w, 0.1 * MM).max(0.2 * MM),
-        "window-corner fillet 0.03 D_w (machined pocket corner)",
+        "window-corner fillet 0.03 D_w, theory §13.4",
     );
     let size_mm = d_w / MM;
     let crown_straight = estimated(
@@ -352,13 +352,13 @@ pub fn design(input: &DesignInput) -> Result<BearingDesign, DesignError> {
         lip,
         no_lip,
         fillet_radius,
-        edge_break: estimated(0.3 * MM, "rib edge break 0.3 mm (as the example models)"),
+        edge_break: estimated(0.3 * MM, "edge break 0.3 mm as the example models"),
         crown_straight,
         crown_drop,
         roller_chamfer,
         raceway_ra: source(RACEWAY_RA_UM * 1e-6, format!("{NHBB}: roller paths 6 µin Ra")),
-        roller_ra: estimated(RACEWAY_RA_UM * 1e-6, "as the raceways"),
-        cage_ra: estimated(1.6e-6, "machined surface Ra 1.6 µm (turned/broached finish)"),
+        roller_ra: estimated(RACEWAY_RA_UM * 1e-6, "as the raceways (NHBB gives no roller finish)"),
+        cage_ra: estimated(1.6e-6, "machined surface Ra 1.6 µm, theory §13.4"),
         oil_temperature,
         warnings,
     })
@@ -401,8 +401,8 @@ fn roller_diameter(input: &DesignInput) -> Result<Dim, DesignError> {
     Ok(estimated(
         round_to(raw, step),
         format!(
-            "D_w ≈ {} (D − d) = {}, rounded to {} (Harris & Kotzalas, Essential Concepts of \
-             Bearing Technology, ch. 2: 0.25–0.3 (D − d))",
+            "D_w ≈ {} (D − d) = {}, rounded to {}: the middle of the rule of thumb \
+             0.25–0.3 (D − d), theory §13.2",
             ROLLER_DIAMETER_FRACTION,
             mm(raw),
             mm(step)
@@ -435,7 +435,7 @@ fn roller_length(input: &DesignInput, rib_width: f64, d_w: f64) -> Result<Dim, D
     Ok(estimated(
         l,
         format!(
-            "L_w = B − 2 (r_s + {} D_w) rounded down to 0.5 mm: two ribs of chamfer plus face",
+            "L_w = B − 2 (r_s + {} D_w) rounded down to 0.5 mm: two ribs of chamfer plus face, theory §13.2",
             RIB_FACE_PER_ROLLER_DIAMETER
         ),
     ))
@@ -505,7 +505,7 @@ fn roller_count(
         z,
         Basis::Estimated(format!(
             "Z = ⌊π D_pw / (D_w + face clearance + {} D_w)⌋: cage bars at least {} D_w wide on \
-             the pitch circle",
+             the pitch circle, theory §13.2",
             BAR_PER_ROLLER_DIAMETER, BAR_PER_ROLLER_DIAMETER
         )),
     ))
@@ -546,7 +546,7 @@ fn retaining_lip(
     }
     let diameter = 2.0 * rho.hypot(half_window);
     let rule = format!(
-        "edges {} from a centred roller (1.2 × land gap + G_r/2), window {} D_w",
+        "edges {} from a centred roller (1.2 × land gap + G_r/2), window {} D_w, theory §13.4",
         mm(play),
         LIP_WINDOW_PER_ROLLER_DIAMETER
     );
@@ -557,7 +557,7 @@ fn retaining_lip(
             window: estimated(round_to(2.0 * half_window, 0.001 * MM), rule),
             tip_radius: estimated(
                 (0.2 * MM).min(round_to(0.25 * thickness, 0.01 * MM)),
-                "lip edge radius 0.2 mm (as 2002834), at most a quarter of the lip",
+                "lip edge radius 0.2 mm as 2002834, at most a quarter of the lip",
             ),
         }),
         None,
