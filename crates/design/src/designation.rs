@@ -59,7 +59,10 @@ const TAPERED_SERIES: [&str; 5] = ["302", "303", "320", "322", "323"];
 pub fn parse(text: &str) -> Result<Designation, String> {
     let compact: String = text.chars().filter(|c| !c.is_whitespace()).collect();
     let compact = compact.to_ascii_uppercase();
-    let letters: String = compact.chars().take_while(|c| c.is_ascii_alphabetic()).collect();
+    let letters: String = compact
+        .chars()
+        .take_while(|c| c.is_ascii_alphabetic())
+        .collect();
     let rest = &compact[letters.len()..];
     let digits: String = rest.chars().take_while(|c| c.is_ascii_digit()).collect();
     let suffix = &rest[digits.len()..];
@@ -102,11 +105,11 @@ pub fn parse(text: &str) -> Result<Designation, String> {
         .into_iter()
         .find(|s| s.designation() == series_text)
         .ok_or_else(|| {
-            format!(
-                "'{text}': dimension series '{series_text}' is not one of 10, 2, 22, 3, 23"
-            )
+            format!("'{text}': dimension series '{series_text}' is not one of 10, 2, 22, 3, 23")
         })?;
-    let bore_code: u32 = code_text.parse().map_err(|_| format!("'{text}': bad bore code"))?;
+    let bore_code: u32 = code_text
+        .parse()
+        .map_err(|_| format!("'{text}': bad bore code"))?;
     let bore_mm = match bore_code {
         0 => 10.0,
         1 => 12.0,

@@ -168,20 +168,26 @@ pub fn boundary(series: DimensionSeries, bore_mm: f64) -> Option<BoundaryRow> {
             .iter()
             .find(|r| matches(r[0]))
             .map(|r| row(r[0], r[1], r[2], r[3])),
-        DimensionSeries::S02 | DimensionSeries::S22 => DIAMETER_SERIES_2
-            .iter()
-            .find(|r| matches(r[0]))
-            .map(|r| {
-                let width = if series == DimensionSeries::S02 { r[2] } else { r[3] };
+        DimensionSeries::S02 | DimensionSeries::S22 => {
+            DIAMETER_SERIES_2.iter().find(|r| matches(r[0])).map(|r| {
+                let width = if series == DimensionSeries::S02 {
+                    r[2]
+                } else {
+                    r[3]
+                };
                 row(r[0], r[1], width, r[4])
-            }),
-        DimensionSeries::S03 | DimensionSeries::S23 => DIAMETER_SERIES_3
-            .iter()
-            .find(|r| matches(r[0]))
-            .map(|r| {
-                let width = if series == DimensionSeries::S03 { r[2] } else { r[3] };
+            })
+        }
+        DimensionSeries::S03 | DimensionSeries::S23 => {
+            DIAMETER_SERIES_3.iter().find(|r| matches(r[0])).map(|r| {
+                let width = if series == DimensionSeries::S03 {
+                    r[2]
+                } else {
+                    r[3]
+                };
                 row(r[0], r[1], width, r[4])
-            }),
+            })
+        }
     }
 }
 
@@ -202,7 +208,9 @@ pub fn tabulated_bores(series: DimensionSeries) -> Vec<f64> {
 /// gives no chamfer, its r_s min is taken from here.
 pub fn nearest(bore_mm: f64, outside_mm: f64, width_mm: f64) -> (DimensionSeries, BoundaryRow) {
     let distance = |r: &BoundaryRow| {
-        (r.bore_mm - bore_mm).abs() + (r.outside_mm - outside_mm).abs() + (r.width_mm - width_mm).abs()
+        (r.bore_mm - bore_mm).abs()
+            + (r.outside_mm - outside_mm).abs()
+            + (r.width_mm - width_mm).abs()
     };
     DimensionSeries::ALL
         .iter()

@@ -6,6 +6,9 @@
 //!
 //! Lengths are in metres, speeds in rad/s, forces in N, temperatures in K.
 
+// Validation reads `!(x > 0.0)` on purpose: it is also true for NaN, which must be rejected.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
 pub mod designation;
 pub mod iso15;
 pub mod iso5753;

@@ -82,9 +82,12 @@ fn heading(out: &mut String, d: &BearingDesign) {
          replace them with the\n# manufacturer's values where known. The roller–cage contact \
          law is derived at load from\n# [cage.pocket] (docs/model-format.md, [dynamics.roller_cage])."
     );
-    let _ = writeln!(out, "# Ring chamfer r_s min = {} mm ({}); ISO 582 gives the largest chamfer for it.",
+    let _ = writeln!(
+        out,
+        "# Ring chamfer r_s min = {} mm ({}); ISO 582 gives the largest chamfer for it.",
         d.chamfer_min.value * 1e3,
-        comment(&d.chamfer_min.basis).trim_start_matches("# "));
+        comment(&d.chamfer_min.basis).trim_start_matches("# ")
+    );
     let _ = writeln!(out, "\n[bearing]");
     let _ = writeln!(out, "name = \"{}\"", i.name);
     let _ = writeln!(out, "kind = \"cylindrical\"");
@@ -198,12 +201,18 @@ fn lip_table(lip: &Lip) -> String {
 fn cage(out: &mut String, d: &BearingDesign) {
     let _ = writeln!(out, "\n[cage]");
     let _ = writeln!(out, "# {}", d.input.cage.description());
-    let guidance = if d.outer_guided() { "outer-land" } else { "inner-land" };
+    let guidance = if d.outer_guided() {
+        "outer-land"
+    } else {
+        "inner-land"
+    };
     line(
         out,
         "guidance",
         &format!("\"{guidance}\""),
-        &Basis::Estimated("centred on the rims of the two ribs of one ring (machined cages)".into()),
+        &Basis::Estimated(
+            "centred on the rims of the two ribs of one ring (machined cages)".into(),
+        ),
     );
     length(out, "floating_clearance", &d.floating_clearance);
     length(out, "pocket_axial", &d.pocket_axial);
@@ -216,7 +225,11 @@ fn cage(out: &mut String, d: &BearingDesign) {
     let _ = writeln!(out, "faces = \"flat\"");
     length(out, "face_clearance", &d.face_clearance);
     if let Some(lip) = &d.lip {
-        let key = if lip.at_bore { "inner_lip" } else { "outer_lip" };
+        let key = if lip.at_bore {
+            "inner_lip"
+        } else {
+            "outer_lip"
+        };
         line(out, key, &lip_table(lip), &lip.diameter.basis);
     }
     if let Some(why) = &d.no_lip {
@@ -257,11 +270,24 @@ fn operating(out: &mut String, d: &BearingDesign) {
     };
     let given = Basis::Source("given".into());
     let _ = writeln!(out, "\n[operating]");
-    let _ = writeln!(out, "# Inner ring rotating, outer ring fixed, load fixed in space.");
+    let _ = writeln!(
+        out,
+        "# Inner ring rotating, outer ring fixed, load fixed in space."
+    );
     let rpm = op.speed * 60.0 / std::f64::consts::TAU;
-    line(out, "inner_speed", &format!("\"{} rpm\"", trim(rpm)), &given);
+    line(
+        out,
+        "inner_speed",
+        &format!("\"{} rpm\"", trim(rpm)),
+        &given,
+    );
     let _ = writeln!(out, "outer_speed = \"0 rpm\"");
-    line(out, "radial_load", &format!("\"{} N\"", trim(op.radial_load)), &given);
+    line(
+        out,
+        "radial_load",
+        &format!("\"{} N\"", trim(op.radial_load)),
+        &given,
+    );
     if let Some(t) = &d.oil_temperature {
         line(
             out,

@@ -2,7 +2,7 @@
 //! each value is a [`Dim`] with its [`Basis`] — a standard's table, the user's input, an
 //! estimate by a named rule, or a consequence of other values.
 
-use crate::{DesignError, DesignInput, iso5753, iso15};
+use crate::{DesignError, DesignInput, iso15, iso5753};
 use std::f64::consts::PI;
 
 /// Where a value comes from.
@@ -24,13 +24,22 @@ pub struct Dim {
 }
 
 fn source(value: f64, why: impl Into<String>) -> Dim {
-    Dim { value, basis: Basis::Source(why.into()) }
+    Dim {
+        value,
+        basis: Basis::Source(why.into()),
+    }
 }
 fn estimated(value: f64, why: impl Into<String>) -> Dim {
-    Dim { value, basis: Basis::Estimated(why.into()) }
+    Dim {
+        value,
+        basis: Basis::Estimated(why.into()),
+    }
 }
 fn derived(value: f64, why: impl Into<String>) -> Dim {
-    Dim { value, basis: Basis::Derived(why.into()) }
+    Dim {
+        value,
+        basis: Basis::Derived(why.into()),
+    }
 }
 
 const MM: f64 = 1e-3;
@@ -208,7 +217,10 @@ pub fn design(input: &DesignInput) -> Result<BearingDesign, DesignError> {
     };
     let rib_play = estimated(
         round_to(RIB_PLAY_PER_ROLLER_DIAMETER * d_w, 0.01 * MM).max(0.02 * MM),
-        format!("roller–rib axial play {} D_w, theory §13.3", RIB_PLAY_PER_ROLLER_DIAMETER),
+        format!(
+            "roller–rib axial play {} D_w, theory §13.3",
+            RIB_PLAY_PER_ROLLER_DIAMETER
+        ),
     );
     let rib_spacing = derived(l_w + rib_play.value, "L_w + roller–rib axial play");
     let land_width = derived(
@@ -216,8 +228,11 @@ pub fn design(input: &DesignInput) -> Result<BearingDesign, DesignError> {
         "rib width (B − rib spacing)/2: the cage runs on the rib rims",
     );
     let floating_clearance = estimated(
-        round_to(FLOATING_CLEARANCE_PER_LAND_DIAMETER * guiding_rib.value, 0.05 * MM)
-            .max(0.1 * MM),
+        round_to(
+            FLOATING_CLEARANCE_PER_LAND_DIAMETER * guiding_rib.value,
+            0.05 * MM,
+        )
+        .max(0.1 * MM),
         format!(
             "{} % of the land diameter as the seed bearings 2002834, 1032930 (0.29 %, 0.26 %), theory §13.4",
             100.0 * FLOATING_CLEARANCE_PER_LAND_DIAMETER
@@ -236,11 +251,17 @@ pub fn design(input: &DesignInput) -> Result<BearingDesign, DesignError> {
             .map_or(inner_raceway.value, |r| r.value.max(inner_raceway.value));
         (
             estimated(below + 2.0 * gap, gap_rule),
-            derived(guiding_rib.value - g, "land (outer rib bore) − floating clearance"),
+            derived(
+                guiding_rib.value - g,
+                "land (outer rib bore) − floating clearance",
+            ),
         )
     } else {
         (
-            derived(guiding_rib.value + g, "land (inner rib rim) + floating clearance"),
+            derived(
+                guiding_rib.value + g,
+                "land (inner rib rim) + floating clearance",
+            ),
             estimated(outer_raceway.value - 2.0 * gap, gap_rule),
         )
     };
@@ -287,7 +308,10 @@ pub fn design(input: &DesignInput) -> Result<BearingDesign, DesignError> {
     );
     let size_mm = d_w / MM;
     let crown_straight = estimated(
-        round_to(l_w * nhbb(size_mm, |r| r.2 / r.0).clamp(0.457, 0.485), 0.1 * MM),
+        round_to(
+            l_w * nhbb(size_mm, |r| r.2 / r.0).clamp(0.457, 0.485),
+            0.1 * MM,
+        ),
         format!("flat length as a fraction of the roller size, {NHBB}"),
     );
     let crown_drop = estimated(
@@ -356,8 +380,14 @@ pub fn design(input: &DesignInput) -> Result<BearingDesign, DesignError> {
         crown_straight,
         crown_drop,
         roller_chamfer,
-        raceway_ra: source(RACEWAY_RA_UM * 1e-6, format!("{NHBB}: roller paths 6 µin Ra")),
-        roller_ra: estimated(RACEWAY_RA_UM * 1e-6, "as the raceways (NHBB gives no roller finish)"),
+        raceway_ra: source(
+            RACEWAY_RA_UM * 1e-6,
+            format!("{NHBB}: roller paths 6 µin Ra"),
+        ),
+        roller_ra: estimated(
+            RACEWAY_RA_UM * 1e-6,
+            "as the raceways (NHBB gives no roller finish)",
+        ),
         cage_ra: estimated(1.6e-6, "machined surface Ra 1.6 µm, theory §13.4"),
         oil_temperature,
         warnings,
@@ -370,7 +400,10 @@ fn check_boundary(b: &crate::Boundary) -> Result<(), DesignError> {
         return Err(DesignError::new("--bore", "must be a positive length"));
     }
     if !(positive(b.outside) && b.outside > b.bore) {
-        return Err(DesignError::new("--outside", "must be larger than the bore"));
+        return Err(DesignError::new(
+            "--outside",
+            "must be larger than the bore",
+        ));
     }
     if !(positive(b.width) && b.width <= b.outside) {
         return Err(DesignError::new(
@@ -416,7 +449,11 @@ fn roller_length(input: &DesignInput, rib_width: f64, d_w: f64) -> Result<Dim, D
         if !(l > 0.0 && l < width) {
             return Err(DesignError::new(
                 "--roller-length",
-                format!("{} must be positive and shorter than the width {}", mm(l), mm(width)),
+                format!(
+                    "{} must be positive and shorter than the width {}",
+                    mm(l),
+                    mm(width)
+                ),
             ));
         }
         return Ok(source(l, "given (--roller-length)"));
@@ -495,7 +532,10 @@ fn roller_count(
 ) -> Result<(usize, Basis), DesignError> {
     if let Some(z) = input.rollers {
         if z < 3 {
-            return Err(DesignError::new("--rollers", "a bearing needs at least 3 rollers"));
+            return Err(DesignError::new(
+                "--rollers",
+                "a bearing needs at least 3 rollers",
+            ));
         }
         return Ok((z, Basis::Source("given (--rollers)".into())));
     }

@@ -4,7 +4,7 @@
 use rolldyn_design::iso15::{self, DimensionSeries};
 use rolldyn_design::iso5753::{self, ClearanceGroup};
 use rolldyn_design::{
-    Boundary, CageMaterial, DesignInput, RibArrangement, designation, design, model_file,
+    Boundary, CageMaterial, DesignInput, RibArrangement, design, designation, model_file,
 };
 
 /// ISO 15 rows as a manufacturer lists them (SKF *Rolling bearings* catalogue, cylindrical
@@ -32,18 +32,36 @@ fn iso_15_rows_match_the_catalogue() {
 /// ISO 5753-1 Table 4: d over 65 up to 80 mm, and the edges of a row.
 #[test]
 fn iso_5753_clearance_by_bore() {
-    assert_eq!(iso5753::radial_clearance_um(ClearanceGroup::CN, 75.0), Some([40.0, 75.0]));
-    assert_eq!(iso5753::radial_clearance_um(ClearanceGroup::C3, 80.0), Some([65.0, 100.0]));
-    assert_eq!(iso5753::radial_clearance_um(ClearanceGroup::C3, 80.5), Some([75.0, 110.0]));
-    assert_eq!(iso5753::radial_clearance_um(ClearanceGroup::C2, 20.0), Some([0.0, 25.0]));
-    assert_eq!(iso5753::radial_clearance_um(ClearanceGroup::CN, 300.0), None);
+    assert_eq!(
+        iso5753::radial_clearance_um(ClearanceGroup::CN, 75.0),
+        Some([40.0, 75.0])
+    );
+    assert_eq!(
+        iso5753::radial_clearance_um(ClearanceGroup::C3, 80.0),
+        Some([65.0, 100.0])
+    );
+    assert_eq!(
+        iso5753::radial_clearance_um(ClearanceGroup::C3, 80.5),
+        Some([75.0, 110.0])
+    );
+    assert_eq!(
+        iso5753::radial_clearance_um(ClearanceGroup::C2, 20.0),
+        Some([0.0, 25.0])
+    );
+    assert_eq!(
+        iso5753::radial_clearance_um(ClearanceGroup::CN, 300.0),
+        None
+    );
 }
 
 #[test]
 fn designations_are_read_with_or_without_spaces() {
     let nu = designation::parse("NU 2215").unwrap();
     assert_eq!(nu.text, "NU2215");
-    assert_eq!((nu.ribs, nu.series, nu.bore_code), (RibArrangement::Nu, DimensionSeries::S22, 15));
+    assert_eq!(
+        (nu.ribs, nu.series, nu.bore_code),
+        (RibArrangement::Nu, DimensionSeries::S22, 15)
+    );
     assert_eq!(designation::parse("nj310").unwrap().row.outside_mm, 110.0);
     assert_eq!(designation::parse("N 1012").unwrap().row.bore_mm, 60.0);
     assert_eq!(designation::parse("NUP 204").unwrap().row.width_mm, 14.0);

@@ -178,11 +178,14 @@ impl Analysis for NewModel {
 
     fn run(request: &NewModelRequest, context: &Context<'_>) -> Result<NewModelResult, Failure> {
         let input = design_input(request)?;
-        let design = rolldyn_design::design(&input)
-            .map_err(|e| Failure::Input(format!("new: {e}")))?;
+        let design =
+            rolldyn_design::design(&input).map_err(|e| Failure::Input(format!("new: {e}")))?;
         let text = model_file::write(&design);
         rolldyn_model::parse(&text, &format!("<rolldyn new {}>", input.name)).map_err(|e| {
-            Failure::Input(format!("new: the model designed for {} does not load: {e}", input.name))
+            Failure::Input(format!(
+                "new: the model designed for {} does not load: {e}",
+                input.name
+            ))
         })?;
         for warning in &design.warnings {
             context.observer.warning(warning);
@@ -219,7 +222,10 @@ impl Analysis for NewModel {
 /// The generator's input from the request: the designation's ISO 15 row or the three boundary
 /// dimensions (not both).
 fn design_input(r: &NewModelRequest) -> Result<DesignInput, Failure> {
-    let given = [&r.bore, &r.outside, &r.width].iter().filter(|q| q.is_some()).count();
+    let given = [&r.bore, &r.outside, &r.width]
+        .iter()
+        .filter(|q| q.is_some())
+        .count();
     let (name, ribs, boundary) = match (&r.designation, given) {
         (Some(text), 0) => {
             if r.ribs.is_some() {

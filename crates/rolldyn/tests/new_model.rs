@@ -84,13 +84,22 @@ fn refusals_name_the_input() {
         (r#"{"designation": "30215"}"#, "double-row-tapered"),
         (r#"{"designation": "NU2215", "bore": "75 mm"}"#, "not both"),
         (r#"{"bore": "75 mm", "outside": "130 mm"}"#, "all of --bore"),
-        (r#"{"designation": "NU2215", "speed": "5000 rpm"}"#, "--radial-load"),
+        (
+            r#"{"designation": "NU2215", "speed": "5000 rpm"}"#,
+            "--radial-load",
+        ),
         (
             r#"{"bore": "75 mm", "outside": "130 mm", "width": "31 mm", "roller_diameter": "30 mm"}"#,
             "--roller-diameter",
         ),
-        (r#"{"designation": "NU2215", "rollers": 40}"#, "roller.count"),
-        (r#"{"designation": "NU2215", "oil": "no-such-oil"}"#, "no-such-oil"),
+        (
+            r#"{"designation": "NU2215", "rollers": 40}"#,
+            "roller.count",
+        ),
+        (
+            r#"{"designation": "NU2215", "oil": "no-such-oil"}"#,
+            "no-such-oil",
+        ),
     ] {
         let Err(Failure::Input(e)) = new_model(json) else {
             panic!("{json} is accepted");
