@@ -237,7 +237,9 @@ def check(model: ModelLike = None, *, speed: Optional[Quantity] = None,
         ``cage_pocket``, ``cage_pocket_play_per_side_m``,
         ``cage_pocket_closing_displacement_m``, ``cage_land_radial_gap_m``,
         ``cage_land_guided``, ``inner_speed_rad_s``, ``outer_speed_rad_s``,
-        ``epicyclic_cage_speed_rad_s``, ``epicyclic_roller_speed_rad_s``.
+        ``epicyclic_cage_speed_rad_s``, ``epicyclic_roller_speed_rad_s``, ``design_notes``
+        (list of ``{"key", "text"}``: findings a designer should look at, e.g. a stated
+        clearance other than the raceway diameters imply).
     """
     model = as_model(model)
     return call("check", dict(speed=speed, outer_speed=outer_speed), Result, model=model)

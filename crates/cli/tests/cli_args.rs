@@ -18,11 +18,36 @@ fn refused(out: &Output, words: &[&str]) {
 #[test]
 fn negative_load_reaches_the_validation_naming_the_flag() {
     let model = example("2002834.toml");
-    for load in ["-5N", "-5"] {
+    for load in ["-5N", "-5kN"] {
         let out = rolldyn(&["contact", &model, "--load", load, "--method", "hertz"]);
         refused(&out, &["--load", "positive"]);
         assert!(!String::from_utf8_lossy(&out.stderr).contains("tip:"));
     }
+}
+
+/// Issue 38: `--duration 5` ran 5 s instead of 5 revolutions, `--radial-load 15` gave 15 N,
+/// `skid --speed 5000` was 5000 rad/s: a bare number on a dimensional flag is refused, naming
+/// the flag and showing the value with a unit.
+#[test]
+fn bare_numbers_on_dimensional_flags_are_refused_with_an_example() {
+    let model = example("2002834.toml");
+    for (args, example) in [
+        (&["simulate", &model, "--duration", "5"][..], "5rev"),
+        (&["simulate", &model, "--radial-load", "15"], "15 kN"),
+        (&["skid", &model, "--speed", "5000"], "5000 rpm"),
+        (&["skid", &model, "--speed", "4000rpm,5000"], "5000 rpm"),
+        (&["check", &model, "--speed", "5000"], "5000 rpm"),
+        (&["oils", "--temperature", "40"], "40 C"),
+        (&["wear", &model, "--period", "1905"], "1905 s"),
+    ] {
+        let flag = args.iter().find(|a| a.starts_with("--")).unwrap();
+        refused(&rolldyn(args), &[flag, "no unit", example]);
+    }
+    // Zero is zero in every unit but a temperature's; dimensionless values stay bare.
+    let out = rolldyn(&[
+        "contact", &model, "--load", "1kN", "--tilt", "0", "--method", "hertz",
+    ]);
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
 }
 
 #[test]

@@ -259,6 +259,7 @@ impl CylindricalRollerBearing {
     }
 
     fn validate_cage(&self, cage: &Cage) -> Result<(), GeometryError> {
+        self.validate_envelope(cage)?;
         let ctx = self.pocket_context(cage);
         cage.pocket
             .check_fit(&ctx, 0.5 * self.clearance.radial.max(0.0))?;

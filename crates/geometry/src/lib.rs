@@ -10,6 +10,7 @@ mod bearing;
 mod cage;
 mod cage_guidance;
 pub mod cage_pocket;
+mod envelope;
 mod error;
 mod kinematics;
 mod mass;
@@ -29,6 +30,7 @@ pub use cage_pocket::{
     BarSection, CagePocket, PocketContext, PocketFaces, PocketPlay, PocketWalls, RetainingLip,
     WallPiece,
 };
+pub use envelope::DesignNote;
 pub use error::{GeometryError, require_positive};
 pub use kinematics::{cage_slip, epicyclic_cage_speed, epicyclic_roller_speed};
 pub use mass::MassProperties;

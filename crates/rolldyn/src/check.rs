@@ -157,6 +157,15 @@ pub struct Summary {
     pub outer_speed_rad_s: Option<f64>,
     pub epicyclic_cage_speed_rad_s: Option<f64>,
     pub epicyclic_roller_speed_rad_s: Option<f64>,
+    /// findings a designer should look at (the model runs as given)
+    pub design_notes: Vec<Note>,
+}
+
+/// A design note on a model key (`rolldyn_geometry::DesignNote`).
+#[derive(Clone, Debug, Serialize)]
+pub struct Note {
+    pub key: String,
+    pub text: String,
 }
 
 /// Derived dimensions of a double-row tapered bearing (SI units; docs/theory.md "Double-row
@@ -323,6 +332,14 @@ pub fn summarise(model: &BearingModel, inner_speed: f64, outer_speed: f64) -> Su
             s.epicyclic_cage_speed_rad_s = Some(b.epicyclic_cage_speed(inner_speed, outer_speed));
             s.epicyclic_roller_speed_rad_s =
                 Some(b.epicyclic_roller_speed(inner_speed, outer_speed));
+            s.design_notes = b
+                .design_notes()
+                .into_iter()
+                .map(|n| Note {
+                    key: n.key,
+                    text: n.text,
+                })
+                .collect();
         }
         BearingModel::Tapered(_) => s.kind = "double-row tapered",
     }
@@ -490,6 +507,9 @@ fn describe(s: &Summary) -> Vec<String> {
         );
         line("epicyclic cage speed", rpm(wc));
         line("epicyclic roller spin speed", rpm(wr));
+    }
+    for note in &s.design_notes {
+        out.push(format!("  note ({}): {}", note.key, note.text));
     }
     out
 }

@@ -83,6 +83,11 @@ impl FromStr for Duration {
                     .parse()
                     .map_err(|_| format!("'{text}': expected e.g. 20rev or 0.2s"))?,
             ),
+            None if text.parse::<f64>().is_ok() => {
+                return Err(format!(
+                    "'{text}' has no unit: give cage revolutions or a time, e.g. {text}rev or {text}s"
+                ));
+            }
             None => Duration::Time(
                 Quantity::<Time>::parse(text)
                     .map_err(|e| e.to_string())?

@@ -32,6 +32,16 @@ pub enum UnitError {
         expected: Dimension,
         accepted: &'static str,
     },
+    #[error(
+        "'{text}' has no unit: give {expected} with its unit, e.g. '{text} {example}' \
+         (accepted units: {accepted}; a bare number is only SI in a file or from Python)"
+    )]
+    MissingUnit {
+        text: String,
+        expected: Dimension,
+        example: &'static str,
+        accepted: &'static str,
+    },
     #[error("'{text}' is below absolute zero (0 K = -273.15 °C)")]
     BelowAbsoluteZero { text: String },
     #[error("'{text}': {reason}")]
@@ -64,7 +74,9 @@ impl<D: Dim> Quantity<D> {
         D::DIMENSION
     }
 
-    /// Parses `"<number> [unit]"`; a missing unit means SI.
+    /// Parses `"<number> <unit>"`. A text must carry its unit (only a dimensionless value or a
+    /// zero other than a temperature may be bare): a bare number is SI only as a number (TOML,
+    /// JSON, Python float), never as text.
     pub fn parse(text: &str) -> Result<Self, UnitError> {
         parse_si(text, D::DIMENSION).map(Self::from_si)
     }
@@ -109,7 +121,18 @@ fn parse_scaled(text: &str, expected: Dimension) -> Result<(f64, f64), UnitError
     }
     let unit = unit.trim();
     if unit.is_empty() {
-        return Ok((value, 0.0));
+        // Zero is zero in every unit but a temperature's.
+        if expected == Dimension::Dimensionless
+            || (value == 0.0 && expected != Dimension::Temperature)
+        {
+            return Ok((value, 0.0));
+        }
+        return Err(UnitError::MissingUnit {
+            text: text.to_string(),
+            expected,
+            example: expected.example_unit(),
+            accepted: expected.examples(),
+        });
     }
     let found = unit_table::lookup(unit, expected).ok_or_else(|| UnitError::UnknownUnit {
         unit: unit.to_string(),

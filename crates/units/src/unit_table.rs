@@ -4,6 +4,24 @@ use crate::dimension::Dimension;
 
 impl Dimension {
     /// A few accepted spellings, for error messages.
+    /// The unit an error message suggests, the one engineers write most (`mm`, `kN`, `rpm`).
+    pub fn example_unit(self) -> &'static str {
+        use Dimension::*;
+        match self {
+            Length => "mm",
+            Force => "kN",
+            Pressure => "MPa",
+            Angle => "deg",
+            AngularSpeed => "rpm",
+            Temperature => "C",
+            KinematicViscosity => "cSt",
+            DynamicViscosity => "mPa s",
+            Time => "s",
+            PerPressure => "1/GPa",
+            _ => self.si_symbol(),
+        }
+    }
+
     pub fn examples(self) -> &'static str {
         use Dimension::*;
         match self {
@@ -248,11 +266,11 @@ mod tests {
             "7.5 /GPa",
             "7.5 1/GPa",
             "7.5e-3/MPa",
-            "7.5e-9",
         ] {
             let a: Quantity<PerPressure> = text.parse().unwrap();
             assert!((a.si() - 7.5e-9).abs() < 1e-21, "{text}");
         }
+        assert!("7.5e-9".parse::<Quantity<PerPressure>>().is_err(), "a text needs its unit");
         assert!("7.5e-9/K".parse::<Quantity<PerPressure>>().is_err());
         assert!("7.5e-9 1/K".parse::<Quantity<PerPressure>>().is_err());
     }

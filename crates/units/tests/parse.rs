@@ -50,9 +50,18 @@ fn no_space_and_exponents() {
 }
 
 #[test]
-fn plain_numbers_are_si() {
-    assert!(close(si::<Length>("0.165"), 0.165));
-    assert!(close(si::<Temperature>("300"), 300.0));
+fn plain_numbers_are_si_and_a_text_needs_its_unit() {
+    assert!(close(si::<Dimensionless>("0.3"), 0.3));
+    for (bare, example) in [("15", "15 kN"), ("5000", "5000 rpm"), ("300", "300 C")] {
+        let err = match example.split_once(' ').unwrap().1 {
+            "kN" => Quantity::<Force>::parse(bare).map(|_| ()),
+            "rpm" => Quantity::<AngularSpeed>::parse(bare).map(|_| ()),
+            _ => Quantity::<Temperature>::parse(bare).map(|_| ()),
+        }
+        .unwrap_err();
+        assert!(matches!(err, UnitError::MissingUnit { .. }), "{err}");
+        assert!(err.to_string().contains(example), "{err}");
+    }
     let parsed: std::collections::BTreeMap<String, Quantity<Length>> =
         toml::from_str("a = 0.01\nb = 2\nc = \"3 mm\"").unwrap();
     assert!(close(parsed["a"].si(), 0.01));
