@@ -50,8 +50,9 @@ const MM: f64 = 1e-3;
 pub const ROLLER_DIAMETER_FRACTION: f64 = 0.275;
 /// Axial width of a rib, per side: the ring's chamfer r_s plus 0.2 D_w of rib face.
 pub const RIB_FACE_PER_ROLLER_DIAMETER: f64 = 0.2;
-/// Rib height above the raceway, 0.25 D_w: the rib face reaches above the roller's end chamfer
-/// to half the roller radius.
+/// Rib height above the raceway, 0.25 D_w: within the usual 0.2–0.35 D_w (Harris & Kotzalas,
+/// *Essential Concepts of Bearing Technology*, 5th ed., §1.3, as `rolldyn_geometry`'s envelope
+/// notes cite it), the rib face reaching past the roller's end chamfer to half its radius.
 pub const RIB_HEIGHT_PER_ROLLER_DIAMETER: f64 = 0.25;
 /// Cage bar width at the pitch circle at least 0.3 D_w (machined window cage); sets Z.
 pub const BAR_PER_ROLLER_DIAMETER: f64 = 0.3;
@@ -201,7 +202,7 @@ pub fn design(input: &DesignInput) -> Result<BearingDesign, DesignError> {
     check_walls(b, inner_raceway.value, outer_raceway.value, input)?;
     let rib_height = RIB_HEIGHT_PER_ROLLER_DIAMETER * d_w;
     let rib_rule = format!(
-        "rib height {} D_w = {} above the raceway, theory §13.3",
+        "rib height {} D_w = {} above the raceway (usual 0.2–0.35 D_w), theory §13.3",
         RIB_HEIGHT_PER_ROLLER_DIAMETER,
         mm(rib_height)
     );

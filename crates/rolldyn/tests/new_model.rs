@@ -14,8 +14,9 @@ fn new_model(json: &str) -> Result<rolldyn::new_model::NewModelResult, Failure> 
 }
 
 /// Every type (NU, NJ, NUP, N), dimension series (10, 2, 22, 3, 23) and bore code 04…40 of the
-/// tables: the model written loads (rolldyn_model validates the geometry) and its own check
-/// finds the clearance the raceways imply equal to the stated one.
+/// tables: the model written loads (rolldyn_model validates the geometry: pocket fit, cage in
+/// the rings' envelope) and `check` has no design note (stated clearance = the raceways', land
+/// on the rib rims, rib heights, cage width).
 #[test]
 fn every_supported_designation_gives_a_valid_model() {
     let mut models = 0;
@@ -40,6 +41,8 @@ fn every_supported_designation_gives_a_valid_model() {
                     bearing.clearance.radial
                 );
                 assert!(implied > 0.0, "{designation}");
+                let notes = bearing.design_notes();
+                assert!(notes.is_empty(), "{designation}: {notes:?}");
                 models += 1;
             }
         }
