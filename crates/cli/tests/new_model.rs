@@ -42,8 +42,8 @@ fn a_designation_gives_a_model_that_checks_and_skids() {
         "5000rpm",
         "--radial-load",
         "15kN",
-        "--oil-temperature",
-        "70C",
+        "--temperatures",
+        "oil=70C",
         "--json",
     ]));
     assert!(skid["cage_slip"].is_number(), "{skid}");

@@ -262,9 +262,9 @@ fn operating(out: &mut String, d: &BearingDesign) {
     let Some(op) = d.input.operating else {
         let _ = writeln!(
             out,
-            "\n# No [operating] section: no speed and load were given to `rolldyn new`. Give them to\n\
-             # the analyses (`rolldyn skid FILE --speed 5000rpm --radial-load 15kN --oil-temperature 70C`)\n\
-             # or add [operating] (docs/model-format.md)."
+            "\n# No [operating] section: no speed and load were given to `rolldyn new` (--speed,\n\
+             # --radial-load, --oil-temperature). Give them to the analyses' flags or add [operating]\n\
+             # with inner_speed, radial_load and temperatures.oil (docs/model-format.md)."
         );
         return;
     };

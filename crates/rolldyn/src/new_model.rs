@@ -147,7 +147,7 @@ impl fmt::Display for NewModelResult {
         };
         writeln!(
             f,
-            "{}: wrote {file} ({} × {} × {} mm, {} rollers Ø{} × {} mm, D_pw {} mm, G_r {} µm, \
+            "{}: wrote {file} ({} × {} × {} mm, {} rollers Ø{} × {} mm, D_pw {:.3} mm, G_r {:.1} µm, \
              cage {}, oil {})",
             self.name,
             self.bore_m * 1e3,
