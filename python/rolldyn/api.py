@@ -706,7 +706,11 @@ def fatigue(
     fillet_radius : float or str, optional
     stress_concentration : pair of float, optional
     sn_curve : path, optional
-    coating_factor, safety_factor : float, optional
+        CSV rows ``N, sigma_a_MPa`` replacing the S–N curve of the cage's material.
+    coating_factor : float, optional
+        Replaces the coating factor of ``cage.plating`` (silver: 1.5); refused on an unplated
+        cage.
+    safety_factor : float, optional
     below_knee : {"no-damage", "extrapolate", "haibach"}, optional
     loads : path, optional
         A cage-load export (`simulate(cage_loads=...)`) instead of a dynamics run.
@@ -724,7 +728,8 @@ def fatigue(
         ``stress_concentration``, ``damage_per_revolution``, ``life_revolutions``,
         ``life_hours``, ``extrapolated_life_revolutions``, ``critical_location``,
         ``critical_point_m``, ``max_stress_pa``, ``endurance_margin``,
-        ``stress_safety_factor``, ``maxima``, ``inclusion_life_revolutions``,
+        ``stress_safety_factor``, ``maxima``, ``sn`` (the S–N curve's material, source,
+        ultimate strength and coating factor with its source), ``inclusion_life_revolutions``,
         ``inclusion_max_stress_pa``, ``inclusion_location``,
         ``inclusion_endurance_margin``, ``points``, ``dynamics_wall_s``,
         ``wall_time_s``, ``files``.

@@ -3,6 +3,7 @@
 //! of stress histories ([`rainflow`]) and reading a history ([`history`]).
 
 pub mod cage;
+pub mod cage_material;
 pub mod calculix;
 pub mod damage;
 pub mod frame;

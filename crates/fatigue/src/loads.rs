@@ -5,6 +5,7 @@
 //! user's own finite-element model can read it too.
 
 use crate::cage::CageGeometry;
+use crate::cage_material::CageMaterial;
 use parquet::file::reader::{FileReader, SerializedFileReader};
 use parquet::record::Field;
 use rolldyn_output::mixed_table::{Column, Values, write_parquet_table};
@@ -81,6 +82,10 @@ pub struct ExportHeader {
     /// the model the loads come from
     pub model: String,
     pub cage: CageGeometry,
+    /// the cage's material and plating, whose S–N curve the fatigue run uses (absent in exports
+    /// written before the materials carried fatigue data)
+    #[serde(default)]
+    pub cage_material: Option<CageMaterial>,
     /// axial position (±) of the roller ↔ bar evaluation points, m
     pub bar_station_z_m: f64,
     /// mean cage speed over the revolution, rpm
@@ -296,6 +301,7 @@ mod tests {
                 units: "SI".into(),
                 model: "test".into(),
                 cage,
+                cage_material: None,
                 bar_station_z_m: 0.004,
                 cage_speed_rpm: 3000.0,
             },

@@ -5,7 +5,7 @@
 use crate::cage::FilletPoint;
 use crate::loads::CageLoadExport;
 use crate::plots::{rainflow_matrix, sn_diagram};
-use crate::study::{FatigueResult, FatigueSettings};
+use crate::study::FatigueResult;
 use crate::unit_stresses::signed_von_mises;
 use rolldyn_output::non_finite::csv_field;
 use rolldyn_plot::{Labels, Series, line_plot};
@@ -26,7 +26,6 @@ pub fn write_report(
     dir: &Path,
     export: &CageLoadExport,
     result: &FatigueResult,
-    settings: &FatigueSettings,
 ) -> Result<Vec<PathBuf>, String> {
     let mut files = Vec::new();
     let loads = dir.join("cage-loads.parquet");
@@ -98,7 +97,7 @@ pub fn write_report(
     rainflow_matrix(&matrix, &result.critical_cycles, MATRIX_BINS).map_err(|e| e.to_string())?;
     files.push(matrix);
     let sn = dir.join("sn-diagram.svg");
-    sn_diagram(&sn, &settings.sn, &result.critical_damage).map_err(|e| e.to_string())?;
+    sn_diagram(&sn, &result.answer.sn.curve, &result.critical_damage).map_err(|e| e.to_string())?;
     files.push(sn);
     Ok(files)
 }

@@ -1,4 +1,4 @@
-//! The S–N (Wöhler) curve of the cage steel (theory §10.5, seed 000 §3.1.1.8): a table of
+//! The S–N (Wöhler) curve of the cage material (theory §10.5, seed 000 §3.1.1.8): a table of
 //! (N, σ_a) points of the fully reversed (R = −1) base curve, interpolated linearly in
 //! (lg N, lg σ_a), knocked down by the coating and the stress safety factor:
 //! σ_a,allow(N) = σ_a,base(N) / (k_coat · k_safety).
@@ -6,26 +6,17 @@
 //! Outside the table: above the first point (the low-cycle side) the first segment's slope
 //! continues; below the last point (the knee) [`BelowKnee`] decides.
 
+use rolldyn_geometry::{FatigueStrength, first_invalid_sn_point};
 use serde::{Deserialize, Serialize};
 
 /// MPa → Pa (the unit of σ_a in a user's CSV table).
 const MPA: f64 = 1e6;
 
-/// Seed 000 §3.1.1.8: 40KhN2MA-Sh at 100 °C reaches 10⁶ cycles at σ_a = 480 MPa, R = −1.
-pub const SEED_FATIGUE_STRENGTH_PA: f64 = 480e6;
-/// The life at [`SEED_FATIGUE_STRENGTH_PA`].
-pub const SEED_FATIGUE_STRENGTH_CYCLES: f64 = 1e6;
-/// Basquin exponent b of AISI 4340 (aircraft quality, σ_u 1172 MPa), σ_a = A N^b from unnotched
-/// axial tests at zero mean stress: Dowling N. E., *Mechanical Behavior of Materials*, 4th ed.,
-/// Pearson 2013, Table 9.1 (b = B = −0.0977).
-pub const AISI_4340_BASQUIN_EXPONENT: f64 = -0.0977;
-/// Ultimate tensile strength of the same AISI 4340 (Dowling 2013, Table 9.1: 1172 MPa).
-pub const AISI_4340_ULTIMATE_STRENGTH_PA: f64 = 1172e6;
-/// The knee of the default curve: 10⁷ cycles, the test base of the fatigue limit of steels (a
-/// rolldyn choice; the seed gives no knee).
-pub const AISI_4340_KNEE_CYCLES: f64 = 1e7;
-/// The first point of the default table (the low-cycle side beyond it extrapolates).
-pub const AISI_4340_FIRST_CYCLES: f64 = 1e3;
+// the seed's cage-steel constants live with its database entry (`40khn2ma-sh`)
+pub use rolldyn_geometry::material_database::{
+    AISI_4340_BASQUIN_EXPONENT, AISI_4340_FIRST_CYCLES, AISI_4340_KNEE_CYCLES,
+    AISI_4340_ULTIMATE_STRENGTH_PA, SEED_FATIGUE_STRENGTH_CYCLES, SEED_FATIGUE_STRENGTH_PA,
+};
 
 /// What a cycle below the knee (the last table point) does.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
@@ -44,7 +35,8 @@ pub enum BelowKnee {
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(default)]
 pub struct SnSettings {
-    /// silver plating shifts the curve down by lg k_coat (seed 000 §3.1.1.8: lg 1.5)
+    /// a plating shifts the curve down by lg k_coat (silver, seed 000 §3.1.1.8: lg 1.5; a
+    /// fatigue run takes it from `cage.plating`, [`crate::cage_material`])
     pub coating_factor: f64,
     /// stress margin (seed 000 §3.1.1.8: normative 1.5 … 2.5); 1.0 by default so that the seed's
     /// single lg 1.5 shift is reproduced (F-55 proposal)
@@ -90,24 +82,6 @@ pub struct SnCurve {
     settings: SnSettings,
 }
 
-/// The first point of `points` (by index) that breaks the rules of an S–N table, and why.
-fn first_invalid(points: &[(f64, f64)]) -> Option<(usize, String)> {
-    let usable = |&(n, s): &(f64, f64)| n.is_finite() && s.is_finite() && n > 0.0 && s > 0.0;
-    if let Some(i) = points.iter().position(|p| !usable(p)) {
-        let (n, s) = points[i];
-        return Some((
-            i,
-            format!("N = {n} and σ_a = {s} Pa must be finite and positive"),
-        ));
-    }
-    let i = (1..points.len())
-        .find(|&i| points[i].0 <= points[i - 1].0 || points[i].1 >= points[i - 1].1)?;
-    Some((
-        i,
-        "N must increase and σ_a decrease from point to point".into(),
-    ))
-}
-
 /// A point in (lg N, lg σ_a).
 fn log_point(&(n, s): &(f64, f64)) -> (f64, f64) {
     (n.log10(), s.log10())
@@ -131,7 +105,7 @@ impl SnCurve {
         if points.len() < 2 {
             return Err(SnError::TooFewPoints(points.len()));
         }
-        if let Some((index, reason)) = first_invalid(&points) {
+        if let Some((index, reason)) = first_invalid_sn_point(&points) {
             return Err(SnError::Point { index, reason });
         }
         Ok(Self {
@@ -156,22 +130,18 @@ impl SnCurve {
         Ok(self)
     }
 
-    /// The default cage-steel curve (40KhN2MA-Sh ≈ AISI 4340, theory §10.5): the seed's 480 MPa
-    /// at 10⁶ cycles with the Basquin slope of AISI 4340 (Dowling 2013, Table 9.1), tabulated per
-    /// decade from 10³ cycles to the knee at 10⁷ (383 MPa).
+    /// The seed's cage-steel curve (database entry `40khn2ma-sh`, theory §10.5): the seed's 480
+    /// MPa at 10⁶ cycles with the Basquin slope of AISI 4340 (Dowling 2013, Table 9.1),
+    /// tabulated per decade from 10³ cycles to the knee at 10⁷ (383 MPa).
     pub fn aisi_4340() -> Self {
-        let decade = |n: f64| n.log10().round() as i32;
-        let points = (decade(AISI_4340_FIRST_CYCLES)..=decade(AISI_4340_KNEE_CYCLES))
-            .map(|lg_n| {
-                let n = 10f64.powi(lg_n);
-                let ratio = n / SEED_FATIGUE_STRENGTH_CYCLES;
-                (
-                    n,
-                    SEED_FATIGUE_STRENGTH_PA * ratio.powf(AISI_4340_BASQUIN_EXPONENT),
-                )
-            })
-            .collect();
-        Self::new(points).expect("the Basquin table is monotone")
+        let record = rolldyn_geometry::material_database::find("40khn2ma-sh")
+            .expect("the database holds the seed's cage steel");
+        Self::new(record.sn_curve.points()).expect("the Basquin table is monotone")
+    }
+
+    /// The base curve of a material's fatigue data, with the default [`SnSettings`].
+    pub fn of_material(strength: &FatigueStrength) -> Result<Self, SnError> {
+        Self::new(strength.sn_curve.clone())
     }
 
     /// A user's table from CSV text: rows `N, σ_a` with σ_a in MPa (a header row, blank lines
@@ -203,7 +173,7 @@ impl SnCurve {
         if points.len() < 2 {
             return Err(SnError::TooFewPoints(points.len()));
         }
-        match first_invalid(&points) {
+        match first_invalid_sn_point(&points) {
             Some((index, reason)) => Err(SnError::Line {
                 line: lines[index],
                 reason,

@@ -4,13 +4,15 @@
 //! critical location with the inclusion's local stresses.
 
 use crate::cage::{CageGeometry, FilletPoint};
-use crate::damage::{DamageBreakdown, MeanStressSettings, life_hours, miner_damage};
+use crate::cage_material::{CageMaterial, SnChoice, SnUsed, resolve};
+use crate::damage::{DamageBreakdown, life_hours, miner_damage};
 use crate::frame::{FilletFactors, FrameSettings, fillet_factors};
 use crate::inclusion::{InclusionModel, InclusionSettings};
 use crate::loads::{CageLoadExport, ExportHeader, FORMAT, VERSION};
+use crate::mean_stress::MeanStressCorrection;
 use crate::rainflow::{Cycle, HistoryKind, rainflow};
 use crate::recorder::{CageLoadRecorder, export_output_step};
-use crate::sn::{BelowKnee, SnCurve, SnSettings};
+use crate::sn::{BelowKnee, SnSettings};
 use crate::unit_stresses::{Stress, UnitStresses, signed_von_mises};
 use rolldyn_geometry::CylindricalRollerBearing;
 use serde::Serialize;
@@ -42,8 +44,9 @@ pub struct FatigueSettings {
     /// (`None`: the model's)
     pub fillet_radius_m: Option<f64>,
     pub frame: FrameSettings,
-    pub sn: SnCurve,
-    pub mean_stress: MeanStressSettings,
+    /// the S–N curve's overrides and knock-downs (the curve itself is the cage material's)
+    pub sn: SnChoice,
+    pub mean_stress: MeanStressCorrection,
     /// the inclusion at the critical location, if any
     pub inclusion: Option<InclusionSettings>,
 }
@@ -56,8 +59,8 @@ impl Default for FatigueSettings {
             samples_per_set: 4.0,
             fillet_radius_m: None,
             frame: FrameSettings::default(),
-            sn: SnCurve::aisi_4340(),
-            mean_stress: MeanStressSettings::default(),
+            sn: SnChoice::default(),
+            mean_stress: MeanStressCorrection::default(),
             inclusion: None,
         }
     }
@@ -144,6 +147,9 @@ pub struct FatigueAnswer {
     /// already applied to the S–N curve (the margin on the coated curve alone)
     pub stress_safety_factor: f64,
     pub maxima: Option<RevolutionMaxima>,
+    /// the S–N curve used: the cage material's (or the run's file), its coating factor and
+    /// their sources
+    pub sn: SnUsed,
     pub inclusion_life_revolutions: Option<f64>,
     pub inclusion_max_stress_pa: Option<f64>,
     /// the worst point on the inclusion's surface, in the ellipsoid axes (by default radial,
@@ -179,15 +185,15 @@ fn largest_equivalent_amplitude(damage: &DamageBreakdown) -> f64 {
 }
 
 /// The allowable amplitude at the knee of the S–N curve (coating and safety factors applied), Pa.
-fn endurance_amplitude(settings: &FatigueSettings) -> f64 {
-    let (_, knee) = settings.sn.knee();
-    knee / settings.sn.settings().knock_down()
+fn endurance_amplitude(sn: &SnUsed) -> f64 {
+    let (_, knee) = sn.curve.knee();
+    knee / sn.curve.settings().knock_down()
 }
 
 /// Rainflow and Miner of one periodic history.
-fn damage_of(history: &[f64], settings: &FatigueSettings) -> (Vec<Cycle>, DamageBreakdown) {
+fn damage_of(history: &[f64], sn: &SnUsed) -> (Vec<Cycle>, DamageBreakdown) {
     let cycles = rainflow(history, HistoryKind::Periodic);
-    let damage = miner_damage(&cycles, &settings.sn, &settings.mean_stress);
+    let damage = miner_damage(&cycles, &sn.curve, &sn.mean_stress);
     (cycles, damage)
 }
 
@@ -203,23 +209,28 @@ pub fn evaluate(
     }
     let histories = crate::superpose::stress_histories(unit, export);
     let points = FilletPoint::all(unit.cage.pockets);
-    let extrapolating = FatigueSettings {
-        sn: settings
-            .sn
+    let sn = resolve(
+        export.header.cage_material.as_ref(),
+        &settings.sn,
+        settings.mean_stress,
+    )?;
+    let extrapolating = SnUsed {
+        curve: sn
+            .curve
             .clone()
             .with_settings(SnSettings {
                 below_knee: BelowKnee::Extrapolate,
-                ..*settings.sn.settings()
+                ..*sn.curve.settings()
             })
             .map_err(|e| e.to_string())?,
-        ..settings.clone()
+        ..sn.clone()
     };
     let mut extrapolated_damage: f64 = 0.0;
     let mut fatigue = Vec::with_capacity(points.len());
     let mut worst = (0usize, f64::NEG_INFINITY, f64::NEG_INFINITY);
     for (i, (p, h)) in points.iter().zip(&histories).enumerate() {
         let s = signed(h);
-        let (_, d) = damage_of(&s, settings);
+        let (_, d) = damage_of(&s, &sn);
         let (_, e) = damage_of(&s, &extrapolating);
         extrapolated_damage = extrapolated_damage.max(e.damage_per_repeat);
         let max = s.iter().fold(f64::NEG_INFINITY, |a, &b| a.max(b));
@@ -238,13 +249,13 @@ pub fn evaluate(
     }
     let critical = worst.0;
     let critical_signed = signed(&histories[critical]);
-    let (cycles, breakdown) = damage_of(&critical_signed, settings);
+    let (cycles, breakdown) = damage_of(&critical_signed, &sn);
     let max_stress = fatigue
         .iter()
         .map(|p| p.max_stress_pa.abs().max(p.min_stress_pa.abs()))
         .fold(0.0, f64::max);
     let largest_equivalent = largest_equivalent_amplitude(&breakdown);
-    let endurance = endurance_amplitude(settings);
+    let endurance = endurance_amplitude(&sn);
     let cage_speed_rpm = export.header.cage_speed_rpm;
     let omega = cage_speed_rpm * std::f64::consts::TAU / 60.0;
     let life = breakdown.life_repeats;
@@ -261,9 +272,9 @@ pub fn evaluate(
         critical_point_m: fatigue[critical].point_m,
         max_stress_pa: max_stress,
         endurance_margin: endurance / largest_equivalent,
-        stress_safety_factor: endurance / largest_equivalent
-            * settings.sn.settings().stress_safety_factor,
+        stress_safety_factor: endurance / largest_equivalent * sn.stress_safety_factor,
         maxima,
+        sn,
         inclusion_life_revolutions: None,
         inclusion_max_stress_pa: None,
         inclusion_location: None,
@@ -271,13 +282,7 @@ pub fn evaluate(
         points: fatigue,
     };
     if let Some(inclusion) = &settings.inclusion {
-        inclusion_fatigue(
-            &unit.cage,
-            inclusion,
-            &histories[critical],
-            settings,
-            &mut answer,
-        )?;
+        inclusion_fatigue(&unit.cage, inclusion, &histories[critical], &mut answer)?;
     }
     Ok(FatigueResult {
         answer,
@@ -294,7 +299,6 @@ fn inclusion_fatigue(
     cage: &CageGeometry,
     inclusion: &InclusionSettings,
     remote: &[Stress],
-    settings: &FatigueSettings,
     answer: &mut FatigueAnswer,
 ) -> Result<(), String> {
     let model = InclusionModel::new(inclusion, cage.youngs_modulus, cage.poisson_ratio)?;
@@ -306,7 +310,7 @@ fn inclusion_fatigue(
     let mut largest_equivalent: f64 = 0.0;
     for (point, history) in model.matrix_stress_histories(&remote) {
         let s = signed(&history);
-        let (_, d) = damage_of(&s, settings);
+        let (_, d) = damage_of(&s, &answer.sn);
         largest_equivalent = largest_equivalent.max(largest_equivalent_amplitude(&d));
         let peak = s.iter().fold(0.0_f64, |a, &b| a.max(b.abs()));
         if worst
@@ -323,15 +327,17 @@ fn inclusion_fatigue(
         answer.inclusion_max_stress_pa = Some(peak);
         answer.inclusion_location = Some(location);
         answer.inclusion_endurance_margin =
-            Some(endurance_amplitude(settings) / largest_equivalent);
+            Some(endurance_amplitude(&answer.sn) / largest_equivalent);
     }
     Ok(())
 }
 
-/// The header of an export of `cage` at the mean cage speed `cage_speed_rad_s`.
+/// The header of an export of `cage` of `cage_material` at the mean cage speed
+/// `cage_speed_rad_s`.
 pub fn export_header(
     model: &str,
     cage: &CageGeometry,
+    cage_material: Option<CageMaterial>,
     bar_station_z_m: f64,
     cage_speed_rad_s: f64,
 ) -> ExportHeader {
@@ -341,6 +347,7 @@ pub fn export_header(
         units: "SI: N, m, s, rad; cage_angle_deg in degrees".into(),
         model: model.into(),
         cage: cage.clone(),
+        cage_material,
         bar_station_z_m,
         cage_speed_rpm: cage_speed_rad_s.abs() * 60.0 / std::f64::consts::TAU,
     }
@@ -416,6 +423,7 @@ pub fn record_loads(
         header: export_header(
             &model.source.file,
             &cage,
+            CageMaterial::of(bearing),
             bearing.roller.bar_contact_half_span(),
             cage_speed,
         ),

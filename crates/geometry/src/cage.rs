@@ -4,6 +4,7 @@ use crate::cage_pocket::{CagePocket, PocketContext};
 use crate::error::{GeometryError, require_positive};
 use crate::mass::MassProperties;
 use crate::material::Material;
+use serde::{Deserialize, Serialize};
 
 /// What centres the cage.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -14,6 +15,14 @@ pub enum CageGuidance {
     OuterLand,
     /// Cage centred by the rollers (polyamide cage of the tapered bearing).
     Rollers,
+}
+
+/// A plating of the cage (`cage.plating`); its effect on fatigue is the fatigue crate's.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Plating {
+    /// Silver plating (the seed bearings' cages, seed 000 §3.1.1.8).
+    Silver,
 }
 
 /// A machined window cage.
@@ -29,6 +38,8 @@ pub struct Cage {
     pub outer_diameter: f64,
     pub width: f64,
     pub material: Material,
+    /// `None`: unplated.
+    pub plating: Option<Plating>,
     pub roughness_ra: f64,
     pub mass_properties: MassProperties,
 }

@@ -15,6 +15,7 @@ mod error;
 mod kinematics;
 mod mass;
 mod material;
+pub mod material_database;
 mod model;
 pub mod plausible;
 pub mod profile;
@@ -24,7 +25,7 @@ pub mod tapered;
 mod wear_map;
 
 pub use bearing::{Clearance, CylindricalRollerBearing, Misalignment};
-pub use cage::{Cage, CageGuidance};
+pub use cage::{Cage, CageGuidance, Plating};
 pub use cage_guidance::CageGuidanceCheck;
 pub use cage_pocket::{
     BarSection, CagePocket, PocketContext, PocketFaces, PocketPlay, PocketWalls, RetainingLip,
@@ -34,7 +35,10 @@ pub use envelope::DesignNote;
 pub use error::{GeometryError, require_positive};
 pub use kinematics::{cage_slip, epicyclic_cage_speed, epicyclic_roller_speed};
 pub use mass::MassProperties;
-pub use material::Material;
+pub use material::{
+    FatigueStrength, MEYER_PER_VICKERS, Material, PA_PER_KGF_PER_MM2, first_invalid_sn_point,
+    meyer_from_vickers, vickers_from_meyer,
+};
 pub use model::{BearingModel, RollerRacewayPair};
 pub use profile::{Chamfer, Profile, ProfileShape};
 pub use ring::{GuidingLand, Rib, RibFace, RibSide, Ring};

@@ -11,12 +11,22 @@ pub const DEFAULT_SLICES: usize = 30;
 
 type Result<T> = std::result::Result<T, GeometryError>;
 
+/// The materials a model's parts may name: the built-in ones
+/// ([`rolldyn_geometry::material_database`]) and the file's `[materials]` tables, which take
+/// precedence.
 pub(crate) struct Materials(BTreeMap<String, Material>);
 
 impl Materials {
     pub(crate) fn new(sections: &BTreeMap<String, MaterialSection>) -> Result<Self> {
-        let mut map = BTreeMap::new();
-        map.insert("bearing-steel".to_string(), Material::bearing_steel());
+        let mut map: BTreeMap<String, Material> = material_database::all()
+            .iter()
+            .flat_map(|r| {
+                let material = r.material();
+                std::iter::once(r.name)
+                    .chain(r.aliases.iter().copied())
+                    .map(move |name| (name.to_string(), material.clone()))
+            })
+            .collect();
         for (name, m) in sections {
             let key = |field: &str| format!("materials.{name}.{field}");
             let material = Material {
@@ -25,6 +35,7 @@ impl Materials {
                 poisson_ratio: m.poisson_ratio.si(),
                 density: m.density.si(),
                 meyer_hardness: m.meyer_hardness.map(|h| h.si()),
+                fatigue: fatigue_strength(m, &key)?,
             };
             require_positive(&key("youngs_modulus"), material.youngs_modulus)?;
             require_positive(&key("density"), material.density)?;
@@ -52,6 +63,87 @@ impl Materials {
                 format!("unknown material '{name}' (known: {})", known.join(", ")),
             )
         })
+    }
+}
+
+/// The S–N curve and σ_u of a `[materials]` table: its own `sn_curve` with `ultimate_strength`,
+/// those of the built-in material it names in `fatigue_like`, or none.
+fn fatigue_strength(
+    m: &MaterialSection,
+    key: &dyn Fn(&str) -> String,
+) -> Result<Option<FatigueStrength>> {
+    match (&m.fatigue_like, &m.sn_curve, m.ultimate_strength) {
+        (None, None, None) => Ok(None),
+        (Some(_), Some(_), _) | (Some(_), _, Some(_)) => Err(GeometryError::new(
+            key("fatigue_like"),
+            "give either fatigue_like or sn_curve with ultimate_strength, not both",
+        )),
+        (Some(like), None, None) => {
+            let record = material_database::find(like).ok_or_else(|| {
+                GeometryError::new(
+                    key("fatigue_like"),
+                    format!(
+                        "unknown built-in material '{like}' (known: {})",
+                        material_database::names().join(", ")
+                    ),
+                )
+            })?;
+            Ok(record.material().fatigue)
+        }
+        (None, Some(_), None) => Err(GeometryError::new(
+            key("ultimate_strength"),
+            "needed with sn_curve (the Goodman and Gerber corrections use it)",
+        )),
+        (None, None, Some(_)) => Err(GeometryError::new(
+            key("sn_curve"),
+            "needed with ultimate_strength (σ_u alone gives no fatigue strength)",
+        )),
+        (None, Some(curve), Some(ultimate)) => {
+            let sn_key = key("sn_curve");
+            if curve.cycles.len() != curve.amplitude.len() {
+                return Err(GeometryError::new(
+                    sn_key,
+                    format!(
+                        "{} cycles but {} amplitudes: give one amplitude per cycle count",
+                        curve.cycles.len(),
+                        curve.amplitude.len()
+                    ),
+                ));
+            }
+            let points: Vec<(f64, f64)> = curve
+                .cycles
+                .iter()
+                .zip(&curve.amplitude)
+                .map(|(&n, s)| (n, s.si()))
+                .collect();
+            if points.len() < 2 {
+                return Err(GeometryError::new(
+                    sn_key,
+                    format!(
+                        "an S–N curve needs at least two points, got {}",
+                        points.len()
+                    ),
+                ));
+            }
+            if let Some((index, reason)) = first_invalid_sn_point(&points) {
+                return Err(GeometryError::new(
+                    sn_key,
+                    format!("point {index}: {reason}"),
+                ));
+            }
+            if curve.source.trim().is_empty() {
+                return Err(GeometryError::new(
+                    format!("{sn_key}.source"),
+                    "say where the points come from",
+                ));
+            }
+            require_positive(&key("ultimate_strength"), ultimate.si())?;
+            Ok(Some(FatigueStrength {
+                ultimate_strength: ultimate.si(),
+                sn_curve: points,
+                source: format!("{sn_key}: {}", curve.source.trim()),
+            }))
+        }
     }
 }
 
@@ -319,6 +411,7 @@ fn cage(
         outer_diameter: section.outer_diameter.si(),
         width: section.width.si(),
         material: materials.get(section.material.as_deref(), "cage.material")?,
+        plating: section.plating,
         roughness_ra: section.roughness_ra.map_or(0.0, |r| r.si()),
         mass_properties: MassProperties::default(),
     };

@@ -53,6 +53,23 @@ pub struct MaterialSection {
     pub poisson_ratio: Quantity<Dimensionless>,
     pub density: Quantity<Density>,
     pub meyer_hardness: Option<Quantity<Pressure>>,
+    /// σ_u, given together with `sn_curve`
+    pub ultimate_strength: Option<Quantity<Pressure>>,
+    /// the fully reversed S–N curve of the material (cage fatigue)
+    pub sn_curve: Option<SnCurveSection>,
+    /// the name of a built-in material whose S–N curve and σ_u this material takes
+    pub fatigue_like: Option<String>,
+}
+
+/// `sn_curve = { cycles = [...], amplitude = ["480 MPa", ...], source = "..." }`: the points
+/// (N, σ_a) of a fully reversed S–N curve, N increasing, the last point the knee.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SnCurveSection {
+    pub cycles: Vec<f64>,
+    pub amplitude: Vec<Quantity<Pressure>>,
+    /// where the points come from
+    pub source: String,
 }
 
 /// Mass properties given instead of computed from geometry.
@@ -213,6 +230,8 @@ pub struct CageSection {
     pub outer_diameter: Quantity<Length>,
     pub width: Quantity<Length>,
     pub material: Option<String>,
+    /// "silver"; none: unplated
+    pub plating: Option<rolldyn_geometry::Plating>,
     pub roughness_ra: Option<Quantity<Length>>,
     #[serde(default)]
     pub mass_properties: MassOverride,

@@ -344,6 +344,7 @@ pub fn intershaft_bearing() -> CylindricalRollerBearing {
         outer_diameter: 126.5e-3,
         width: 15e-3,
         material: steel(),
+        plating: None,
         roughness_ra: 0.8e-6,
         mass_properties: MassProperties::default(),
     };

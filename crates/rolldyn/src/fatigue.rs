@@ -8,7 +8,7 @@ use crate::operating::Operating;
 use crate::output::out_dir;
 use crate::run_record::{ModelOrigin, finish_out_folder};
 use crate::table::{Table, Tables};
-use rolldyn_fatigue::damage::MeanStressSettings;
+use rolldyn_fatigue::cage_material::{CageMaterial, SnChoice, resolve};
 use rolldyn_fatigue::inclusion::{InclusionSettings, Interface};
 use rolldyn_fatigue::mean_stress::MeanStressCorrection;
 use rolldyn_fatigue::sn::{BelowKnee, SnCurve};
@@ -96,10 +96,12 @@ pub struct FatigueRequest {
     /// Stress-concentration factors of the frame model's fillets, `[tension, bending]`
     /// (default: from the fillet radius by Roark's charts).
     pub stress_concentration: Option<[f64; 2]>,
-    /// The base S–N curve (fully reversed) as CSV rows `N, sigma_a_MPa` (default: AISI 4340).
+    /// The base S–N curve (fully reversed) as CSV rows `N, sigma_a_MPa`, replacing the cage
+    /// material's (default: the curve of `cage.material`).
     pub sn_curve: Option<PathBuf>,
-    /// Factor on the S–N curve for the silver plating.
-    pub coating_factor: f64,
+    /// Factor on the S–N curve replacing the plating's (default: from `cage.plating`, 1 when
+    /// unplated); an error on an unplated cage.
+    pub coating_factor: Option<f64>,
     /// Safety factor on stress (applied to the S–N curve besides the coating factor).
     pub safety_factor: f64,
     pub below_knee: BelowKneeName,
@@ -125,7 +127,7 @@ impl Default for FatigueRequest {
             fillet_radius: None,
             stress_concentration: None,
             sn_curve: None,
-            coating_factor: 1.5,
+            coating_factor: None,
             safety_factor: 1.0,
             below_knee: BelowKneeName::NoDamage,
             loads: None,
@@ -163,7 +165,19 @@ impl FatigueRequest {
     /// The fatigue settings the request asks for.
     pub fn settings(&self) -> Result<FatigueSettings, Failure> {
         let defaults = FatigueSettings::default();
-        let sn_settings = rolldyn_fatigue::sn::SnSettings {
+        let curve = match &self.sn_curve {
+            Some(path) => {
+                let file = path.display().to_string();
+                let text = rolldyn_model::read_input_file(path)
+                    .map_err(|e| Failure::Input(format!("{file}: {e}")))?;
+                let curve = SnCurve::from_csv_text(&text)
+                    .map_err(|e| Failure::Input(format!("{file}: {e}")))?;
+                Some((curve, format!("--sn-curve {file}")))
+            }
+            None => None,
+        };
+        let sn = SnChoice {
+            curve,
             coating_factor: self.coating_factor,
             stress_safety_factor: self.safety_factor,
             below_knee: match self.below_knee {
@@ -172,18 +186,6 @@ impl FatigueRequest {
                 BelowKneeName::Haibach => BelowKnee::Haibach,
             },
         };
-        let base = match &self.sn_curve {
-            Some(path) => {
-                let file = path.display().to_string();
-                let text = rolldyn_model::read_input_file(path)
-                    .map_err(|e| Failure::Input(format!("{file}: {e}")))?;
-                SnCurve::from_csv_text(&text).map_err(|e| Failure::Input(format!("{file}: {e}")))?
-            }
-            None => defaults.sn.clone(),
-        };
-        let sn = base
-            .with_settings(sn_settings)
-            .map_err(|e| Failure::Input(format!("--coating-factor/--safety-factor: {e}")))?;
         let stress_concentration = self
             .stress_concentration
             .map(check_factor_pair)
@@ -208,14 +210,11 @@ impl FatigueRequest {
                 },
                 ..InclusionSettings::default()
             }),
-            mean_stress: MeanStressSettings {
-                correction: match self.mean_stress {
-                    MeanStressName::None => MeanStressCorrection::None,
-                    MeanStressName::Goodman => MeanStressCorrection::Goodman,
-                    MeanStressName::Gerber => MeanStressCorrection::Gerber,
-                    MeanStressName::Swt => MeanStressCorrection::SmithWatsonTopper,
-                },
-                ..defaults.mean_stress
+            mean_stress: match self.mean_stress {
+                MeanStressName::None => MeanStressCorrection::None,
+                MeanStressName::Goodman => MeanStressCorrection::Goodman,
+                MeanStressName::Gerber => MeanStressCorrection::Gerber,
+                MeanStressName::Swt => MeanStressCorrection::SmithWatsonTopper,
             },
             ..defaults
         })
@@ -297,6 +296,11 @@ impl fmt::Display for FatigueResult {
             a.max_stress_pa * 1e-6,
             a.damage_per_revolution
         )?;
+        writeln!(
+            f,
+            "  S–N curve of cage.material \"{}\": {}; coating factor {} from {}",
+            a.sn.material, a.sn.curve_source, a.sn.coating_factor, a.sn.coating_source
+        )?;
         if a.life_revolutions.is_finite() {
             writeln!(
                 f,
@@ -343,6 +347,14 @@ impl fmt::Display for FatigueResult {
     }
 }
 
+/// The S–N curve of `material` with the run's settings, resolved before the dynamics run so that
+/// a missing curve or a coating factor on an unplated cage is bad input found at once.
+fn check_sn(material: Option<&CageMaterial>, settings: &FatigueSettings) -> Result<(), Failure> {
+    resolve(material, &settings.sn, settings.mean_stress)
+        .map(|_| ())
+        .map_err(Failure::Input)
+}
+
 /// The fatigue stages, for progress.
 const STAGES: f64 = 4.0;
 
@@ -386,11 +398,20 @@ impl Analysis for Fatigue {
             }
             Some(path) => {
                 let export = CageLoadExport::read(path).map_err(Failure::Input)?;
+                check_sn(export.header.cage_material.as_ref(), &settings)?;
                 let maxima = RevolutionMaxima::of_export(&export);
                 (export, maxima)
             }
             None => {
                 let model = context.model.load()?;
+                if let Some(material) = model
+                    .bearing
+                    .require_cylindrical("cage fatigue")
+                    .ok()
+                    .and_then(CageMaterial::of)
+                {
+                    check_sn(Some(&material), &settings)?;
+                }
                 stage(
                     context,
                     0.0,
@@ -450,7 +471,7 @@ impl Analysis for Fatigue {
         let files = match &request.out {
             Some(dir) => {
                 let dir = out_dir(dir)?;
-                rolldyn_fatigue::report::write_report(&dir, &export, &result, &settings)
+                rolldyn_fatigue::report::write_report(&dir, &export, &result)
                     .map_err(Failure::Run)?
             }
             None => Vec::new(),

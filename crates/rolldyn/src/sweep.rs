@@ -304,7 +304,7 @@ fn fatigue(
     let unit =
         crate::fatigue::unit_stresses(&export, settings, cache).map_err(|e| e.to_string())?;
     let result = evaluate(&unit, &export, Some(maxima), settings)?;
-    rolldyn_fatigue::report::write_report(out, &export, &result, settings)?;
+    rolldyn_fatigue::report::write_report(out, &export, &result)?;
     let a = &result.answer;
     Ok(finite(
         [

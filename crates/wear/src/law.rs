@@ -60,13 +60,8 @@ pub enum HardnessScale {
     RockwellC,
 }
 
-/// 1 kgf/mm² in Pa (standard gravity 9.80665 m/s², exact).
-pub const PA_PER_KGF_PER_MM2: f64 = 9.806_65e6;
-
-/// Meyer over Vickers hardness of the same indentation, seed 000 §3.1.1.5 (geometrically
-/// 1/sin 68° = 1.0785: Meyer divides the force by the projected area d²/2 of the 136° pyramid,
-/// Vickers by its surface area).
-pub const MEYER_PER_VICKERS: f64 = 1.0787;
+// the hardness units and the Meyer/Vickers ratio live with the material (one definition)
+pub use rolldyn_geometry::{MEYER_PER_VICKERS, PA_PER_KGF_PER_MM2};
 
 /// ASTM E140-12b Table 1 (non-austenitic steels), as reprinted in ASTM A370-03a: Rockwell C
 /// → Vickers, every whole HRC from 20 to 68.
@@ -162,7 +157,7 @@ pub fn meyer_hardness_pa(value: f64, scale: HardnessScale) -> Result<f64, WearLa
         HardnessScale::Brinell => interpolate_within(&HB_TO_HV, value, "Brinell")?,
         HardnessScale::RockwellC => interpolate_within(&HRC_TO_HV, value, "Rockwell C")?,
     };
-    Ok(MEYER_PER_VICKERS * vickers * PA_PER_KGF_PER_MM2)
+    Ok(rolldyn_geometry::meyer_from_vickers(vickers))
 }
 
 /// The seed's literal usage (flag F-45): the kgf/mm² number read as MPa ("H = 305 MPa").

@@ -43,13 +43,14 @@ pub struct Args {
     /// the fillet radius by Roark's shoulder-fillet charts).
     #[arg(long, value_parser = parse_factor_pair)]
     pub stress_concentration: Option<[f64; 2]>,
-    /// The base S–N curve (fully reversed) as CSV rows `N, sigma_a_MPa` (default: AISI 4340
-    /// through the seed's 480 MPa at 10⁶ cycles, docs/theory.md §10.5).
+    /// The base S–N curve (fully reversed) as CSV rows `N, sigma_a_MPa`, replacing the cage
+    /// material's (default: the S–N curve of `cage.material`, docs/theory.md §10.5).
     #[arg(long)]
     pub sn_curve: Option<PathBuf>,
-    /// Factor on the S–N curve for the silver plating (seed: 1.5).
-    #[arg(long, default_value_t = 1.5)]
-    pub coating_factor: f64,
+    /// Factor on the S–N curve replacing the plating's (default: from `cage.plating`, silver
+    /// 1.5; 1 unplated). Refused on an unplated cage.
+    #[arg(long)]
+    pub coating_factor: Option<f64>,
     /// Safety factor on stress (applied to the S–N curve besides the coating factor).
     #[arg(long, default_value_t = 1.0)]
     pub safety_factor: f64,

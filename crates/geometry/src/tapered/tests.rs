@@ -12,6 +12,7 @@ fn polyamide() -> Material {
         poisson_ratio: 0.35,
         density: 1320.0,
         meyer_hardness: None,
+        fatigue: None,
     }
 }
 

@@ -75,6 +75,7 @@ pub fn write_cage_loads(
         header: rolldyn_fatigue::study::export_header(
             &model.source.file,
             &cage,
+            rolldyn_fatigue::cage_material::CageMaterial::of(bearing),
             bearing.roller.bar_contact_half_span(),
             speed,
         ),
