@@ -84,6 +84,70 @@ def as_model(model: ModelLike) -> Model:
     return model if isinstance(model, Model) else load_model(model)
 
 
+def new_model(
+    designation: Optional[str] = None,
+    *,
+    bore: Optional[Quantity] = None,
+    outside: Optional[Quantity] = None,
+    width: Optional[Quantity] = None,
+    type_: Optional[str] = None,
+    roller_diameter: Optional[Quantity] = None,
+    roller_length: Optional[Quantity] = None,
+    rollers: Optional[int] = None,
+    cage: Optional[str] = None,
+    clearance_group: Optional[str] = None,
+    oil: Optional[str] = None,
+    name: Optional[str] = None,
+    speed: Optional[Quantity] = None,
+    radial_load: Optional[Quantity] = None,
+    oil_temperature: Optional[Quantity] = None,
+    out: Optional[PathLike] = None,
+) -> Result:
+    """A cylindrical roller bearing model from an ISO designation or its boundary dimensions
+    (`rolldyn new`; rules and sources: docs/theory.md §14).
+
+    Parameters
+    ----------
+    designation : str, optional
+        ``"NU2215"``, ``"NJ 310"``, ``"N1012"``, ``"NUP2310"`` (series 10, 2, 22, 3, 23; bores
+        20–200 mm). Give it or `bore`, `outside` and `width`.
+    bore, outside, width : float or str, optional
+        The boundary form: d, D, B (m as numbers, ``"75 mm"``).
+    type_ : {"NU", "NJ", "NUP", "N"}, optional
+        Boundary form: which rings have ribs, default NU.
+    roller_diameter, roller_length : float or str, optional
+        The catalogue's D_w, L_w (else the design rules).
+    rollers : int, optional
+        The catalogue's roller count (else the cage bar rule).
+    cage : {"brass", "steel", "peek", "pa66"}, optional
+        Cage material, default brass (``cuzn40pb2``).
+    clearance_group : {"C2", "CN", "C3", "C4"}, optional
+        ISO 5753-1 group, default CN.
+    oil : str, optional
+        Built-in oil, default ``"iso-vg-68-mineral"``.
+    name : str, optional
+        ``bearing.name`` of the model.
+    speed, radial_load, oil_temperature : float or str, optional
+        Written as ``[operating]`` (speed and load together; oil temperature 70 °C marked
+        ASSUMED, with a `UserWarning`, when not given).
+    out : path, optional
+        Write the model file here.
+
+    Returns
+    -------
+    Result
+        Summary keys: ``name``, ``model`` (the file's text), ``file``, ``bore_m``,
+        ``outside_diameter_m``, ``width_m``, ``roller_diameter_m``, ``roller_length_m``,
+        ``rollers``, ``pitch_diameter_m``, ``radial_clearance_m``, ``cage_material``, ``oil``,
+        ``warnings``. ``rolldyn.load_model(result.file)`` loads a written model.
+    """
+    options = dict(locals())
+    options["type"] = options.pop("type_")
+    if out is not None:
+        options["out"] = os.fspath(out)
+    return call("new", options, Result)
+
+
 def film(
     *,
     load: Quantity,

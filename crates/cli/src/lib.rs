@@ -26,6 +26,9 @@ pub enum Command {
     Demo(commands::demo::Args),
     /// Validate a model file and print its derived quantities.
     Check(commands::check::Args),
+    /// Write a cylindrical roller bearing model from an ISO designation (NU2215) or from its
+    /// boundary dimensions, by cited design rules.
+    New(commands::new::Args),
     /// Roller–raceway contact pressure: Boussinesq solver, slice model or Hertz.
     Contact(commands::contact::Args),
     /// Lubricant library: properties of every built-in oil at a temperature.
@@ -71,6 +74,7 @@ pub fn execute(command: Command) -> Result<(), Failure> {
     match command {
         Command::Demo(args) => commands::demo::run(args),
         Command::Check(args) => commands::check::run(args),
+        Command::New(args) => commands::new::run(args),
         Command::Contact(args) => commands::contact::run(args),
         Command::Study(args) => commands::study::run(args),
         Command::Sweep(args) => commands::sweep::run(args),

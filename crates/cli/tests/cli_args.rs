@@ -47,7 +47,12 @@ fn bare_numbers_on_dimensional_flags_are_refused_with_an_example() {
     let out = rolldyn(&[
         "contact", &model, "--load", "1kN", "--tilt", "0", "--method", "hertz",
     ]);
-    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
 }
 
 #[test]

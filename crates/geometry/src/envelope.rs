@@ -60,9 +60,17 @@ impl CylindricalRollerBearing {
                 _ => (ring.raceway_diameter, "raceway"),
             };
             let (cage_key, cage_diameter, clear) = if inner {
-                ("cage.inner_diameter", cage.inner_diameter, cage.inner_diameter > limit)
+                (
+                    "cage.inner_diameter",
+                    cage.inner_diameter,
+                    cage.inner_diameter > limit,
+                )
             } else {
-                ("cage.outer_diameter", cage.outer_diameter, cage.outer_diameter < limit)
+                (
+                    "cage.outer_diameter",
+                    cage.outer_diameter,
+                    cage.outer_diameter < limit,
+                )
             };
             if !clear {
                 let width = match ring.rib_spacing {

@@ -29,8 +29,14 @@ fn a_cage_bore_below_the_inner_ribs_it_overlaps_is_rejected() {
     // The cage (20 mm) is wider than the inner ring's rib spacing (11.05 mm): its bore must
     // clear the rib rims Ø173 mm.
     let text = edited(&[
-        (r#"inner_diameter = "173.5 mm""#, r#"inner_diameter = "172 mm""#),
-        (r#"floating_clearance = "0.5 mm""#, r#"floating_clearance = "0.1 mm""#),
+        (
+            r#"inner_diameter = "173.5 mm""#,
+            r#"inner_diameter = "172 mm""#,
+        ),
+        (
+            r#"floating_clearance = "0.5 mm""#,
+            r#"floating_clearance = "0.1 mm""#,
+        ),
     ]);
     let message = parse(&text, "bad.toml").unwrap_err().to_string();
     assert!(message.contains("cage.inner_diameter"), "{message}");
@@ -54,7 +60,10 @@ ribs = [{ side = "left", diameter = "192 mm" }, { side = "right", diameter = "19
     )]);
     let message = parse(&text, "bad.toml").unwrap_err().to_string();
     assert!(message.contains("cage.outer_diameter"), "{message}");
-    assert!(message.contains("outer_ring rib rim Ø192.000 mm"), "{message}");
+    assert!(
+        message.contains("outer_ring rib rim Ø192.000 mm"),
+        "{message}"
+    );
 }
 
 #[test]
@@ -83,7 +92,11 @@ fn a_land_away_from_the_ring_rim_is_noted() {
         BearingModel::Cylindrical(b) => b.design_notes(),
         _ => unreachable!(),
     };
-    assert!(found(START_UP).iter().all(|n| n.key != "cage.floating_clearance"));
+    assert!(
+        found(START_UP)
+            .iter()
+            .all(|n| n.key != "cage.floating_clearance")
+    );
     let from = r#"floating_clearance = "0.4 mm""#;
     assert_eq!(START_UP.matches(from).count(), 1);
     let text = START_UP.replace(from, r#"floating_clearance = "0.2 mm""#);

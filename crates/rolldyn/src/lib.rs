@@ -32,6 +32,7 @@ pub mod journal;
 pub mod life;
 pub mod loads;
 pub mod model_source;
+pub mod new_model;
 pub mod observer;
 pub mod oil;
 pub mod oils;
@@ -77,6 +78,7 @@ pub const ANALYSES: &[&str] = &[
     fatigue::Rainflow::NAME,
     study::Study::NAME,
     life::Life::NAME,
+    new_model::NewModel::NAME,
 ];
 
 /// Runs the analysis `name` on a request given as JSON (a field the request does not have is
@@ -103,6 +105,7 @@ pub fn run_json(name: &str, request: &str, context: &Context<'_>) -> Result<Answ
         fatigue::Rainflow::NAME => analysis::answer::<fatigue::Rainflow>(request, context),
         study::Study::NAME => analysis::answer::<study::Study>(request, context),
         life::Life::NAME => analysis::answer::<life::Life>(request, context),
+        new_model::NewModel::NAME => analysis::answer::<new_model::NewModel>(request, context),
         _ => Err(Failure::Input(format!(
             "no analysis named '{name}' (known: {})",
             ANALYSES.join(", ")

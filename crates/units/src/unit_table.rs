@@ -270,7 +270,10 @@ mod tests {
             let a: Quantity<PerPressure> = text.parse().unwrap();
             assert!((a.si() - 7.5e-9).abs() < 1e-21, "{text}");
         }
-        assert!("7.5e-9".parse::<Quantity<PerPressure>>().is_err(), "a text needs its unit");
+        assert!(
+            "7.5e-9".parse::<Quantity<PerPressure>>().is_err(),
+            "a text needs its unit"
+        );
         assert!("7.5e-9/K".parse::<Quantity<PerPressure>>().is_err());
         assert!("7.5e-9 1/K".parse::<Quantity<PerPressure>>().is_err());
     }

@@ -11,6 +11,7 @@ mod jobs_args;
 pub mod journal;
 pub mod life;
 pub mod loads;
+pub mod new;
 mod oil_args;
 pub mod oils;
 mod operating_args;
