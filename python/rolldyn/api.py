@@ -124,7 +124,8 @@ def new_model(
     clearance_group : {"C2", "CN", "C3", "C4"}, optional
         ISO 5753-1 group, default CN.
     oil : str, optional
-        Built-in oil, default ``"iso-vg-68-mineral"``.
+        Built-in oil; without it ``"iso-vg-68-mineral"`` is written marked ASSUMED, with a
+        `UserWarning`.
     name : str, optional
         ``bearing.name`` of the model.
     speed, radial_load, oil_temperature : float or str, optional

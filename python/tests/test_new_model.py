@@ -1,5 +1,5 @@
 """`rolldyn.new_model`: a model from a designation or boundary dimensions that the other
-analyses load (docs/theory.md §13)."""
+analyses load (docs/theory.md §14)."""
 
 import pytest
 
@@ -20,7 +20,8 @@ def test_a_designation_gives_a_model_that_checks(tmp_path):
 def test_the_boundary_form_takes_si_floats_and_catalogue_values():
     result = rolldyn.new_model(bore=0.075, outside="130 mm", width="31 mm", rollers=16,
                                roller_diameter="15 mm", roller_length="22 mm",
-                               speed="5000 rpm", radial_load="15 kN", oil_temperature="70 C")
+                               speed="5000 rpm", radial_load="15 kN", oil_temperature="70 C",
+                               oil="iso-vg-68-mineral")
     assert result.name == "NU75x130x31"
     assert 'inner_speed = "5000 rpm"' in result.model
 

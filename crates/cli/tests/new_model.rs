@@ -91,10 +91,16 @@ fn the_boundary_form_runs_every_analysis() {
     ]);
     succeeds(&["check", &file]);
     succeeds(&["skid", &file]);
+    // The dynamics at the written 15 kN is step-limited by the rollers' spin (375 000 steps for
+    // two cage revolutions, 25 s in the release build, minutes in this debug build); the runs
+    // below override the load to 2 kN (4 300 steps), which is all "runs without hand editing"
+    // needs.
     let loads = dir.join("loads.parquet").display().to_string();
     let sim = json(&rolldyn(&[
         "simulate",
         &file,
+        "--radial-load",
+        "2kN",
         "--duration",
         "1.2rev",
         "--cage-loads",
@@ -112,6 +118,8 @@ fn the_boundary_form_runs_every_analysis() {
     let wear = json(&rolldyn(&[
         "wear",
         &file,
+        "--radial-load",
+        "2kN",
         "--life",
         "500h",
         "--period",
@@ -124,7 +132,8 @@ fn the_boundary_form_runs_every_analysis() {
         &wear_dir,
         "--json",
     ]));
-    assert_eq!(wear["periods"], 1, "{wear}");
+    assert_eq!(wear["periods"].as_array().map(Vec::len), Some(1), "{wear}");
+    assert_eq!(wear["stop"], "life_reached", "{wear}");
     std::fs::remove_dir_all(&dir).unwrap();
 }
 

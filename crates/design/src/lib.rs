@@ -79,6 +79,17 @@ pub struct OperatingPoint {
     pub oil_temperature: Option<f64>,
 }
 
+/// The oil a model gets when none is asked for: an ISO VG 68 mineral oil, the usual circulating
+/// oil of medium-speed industrial bearings; written ASSUMED, the user should name theirs.
+pub const ASSUMED_OIL: &str = "iso-vg-68-mineral";
+
+impl DesignInput {
+    /// The oil written into the model.
+    pub fn oil_name(&self) -> &str {
+        self.oil.as_deref().unwrap_or(ASSUMED_OIL)
+    }
+}
+
 /// Everything the generator takes.
 #[derive(Clone, Debug, PartialEq)]
 pub struct DesignInput {
@@ -91,8 +102,8 @@ pub struct DesignInput {
     pub rollers: Option<usize>,
     pub cage: CageMaterial,
     pub clearance_group: ClearanceGroup,
-    /// A built-in oil name.
-    pub oil: String,
+    /// A built-in oil name; `None`: [`ASSUMED_OIL`], named in the file and in the warnings.
+    pub oil: Option<String>,
     pub operating: Option<OperatingPoint>,
 }
 

@@ -250,12 +250,13 @@ fn clearance(out: &mut String, d: &BearingDesign) {
 
 fn lubricant(out: &mut String, d: &BearingDesign) {
     let _ = writeln!(out, "\n[lubricant]");
-    line(
-        out,
-        "oil",
-        &format!("\"{}\"", d.input.oil),
-        &Basis::Source("built-in oil (`rolldyn oils`, docs/lubricants.md)".into()),
-    );
+    let basis = match &d.input.oil {
+        Some(_) => Basis::Source("built-in oil (`rolldyn oils`, docs/lubricants.md)".into()),
+        None => Basis::Estimated(
+            "ASSUMED: no --oil given; ISO VG 68 mineral (`rolldyn oils`): name your oil".into(),
+        ),
+    };
+    line(out, "oil", &format!("\"{}\"", d.input.oil_name()), &basis);
 }
 
 fn operating(out: &mut String, d: &BearingDesign) {

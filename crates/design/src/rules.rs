@@ -343,6 +343,12 @@ pub fn design(input: &DesignInput) -> Result<BearingDesign, DesignError> {
              {ASSUMED_OIL_TEMPERATURE_C} °C (marked ASSUMED in the file)"
         ));
     }
+    if input.oil.is_none() {
+        warnings.push(format!(
+            "no --oil: the model's lubricant is the assumed {} (marked ASSUMED in the file)",
+            crate::ASSUMED_OIL
+        ));
+    }
     Ok(BearingDesign {
         input: input.clone(),
         chamfer_min,

@@ -98,7 +98,7 @@ fn boundary_form(roller: Option<(f64, f64, usize)>) -> DesignInput {
         rollers: roller.map(|r| r.2),
         cage: CageMaterial::Brass,
         clearance_group: ClearanceGroup::CN,
-        oil: "iso-vg-68-mineral".into(),
+        oil: Some("iso-vg-68-mineral".into()),
         operating: None,
     }
 }

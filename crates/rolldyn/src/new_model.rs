@@ -90,9 +90,9 @@ pub struct NewModelRequest {
     pub cage: CageName,
     #[serde(default)]
     pub clearance_group: ClearanceGroupName,
-    /// Built-in oil name.
-    #[serde(default = "default_oil")]
-    pub oil: String,
+    /// Built-in oil name (default: `rolldyn_design::ASSUMED_OIL`, named as assumed).
+    #[serde(default)]
+    pub oil: Option<String>,
     /// Name of the bearing in the model (the designation, or d×D×B).
     #[serde(default)]
     pub name: Option<String>,
@@ -106,13 +106,6 @@ pub struct NewModelRequest {
     /// Write the model to this file (else it is only returned).
     #[serde(default)]
     pub out: Option<PathBuf>,
-}
-
-/// The oil of a new model unless another is asked for.
-pub const DEFAULT_OIL: &str = "iso-vg-68-mineral";
-
-fn default_oil() -> String {
-    DEFAULT_OIL.to_string()
 }
 
 /// The model written, with its main dimensions (SI).
@@ -213,7 +206,7 @@ impl Analysis for NewModel {
             pitch_diameter_m: design.pitch_diameter.value,
             radial_clearance_m: design.clearance.value,
             cage_material: input.cage.material().to_string(),
-            oil: input.oil.clone(),
+            oil: input.oil_name().to_string(),
             warnings: design.warnings.clone(),
         })
     }

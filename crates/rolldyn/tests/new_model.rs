@@ -55,7 +55,7 @@ fn the_boundary_form_takes_catalogue_values_and_an_operating_point() {
     let result = new_model(
         r#"{"bore": "75 mm", "outside": "130 mm", "width": "31 mm", "roller_diameter": "15 mm",
             "roller_length": "22 mm", "rollers": 16, "cage": "brass", "speed": "5000 rpm",
-            "radial_load": "15 kN", "oil_temperature": "70 C"}"#,
+            "radial_load": "15 kN", "oil_temperature": "70 C", "oil": "iso-vg-68-mineral"}"#,
     )
     .unwrap();
     assert_eq!(result.rollers, 16);
@@ -77,8 +77,10 @@ fn a_missing_oil_temperature_is_assumed_and_warned() {
     let result =
         new_model(r#"{"designation": "NU2215", "speed": "5000 rpm", "radial_load": "15 kN"}"#)
             .unwrap();
-    assert_eq!(result.warnings.len(), 1);
+    assert_eq!(result.warnings.len(), 2, "{:?}", result.warnings);
     assert!(result.model.contains("ASSUMED 70 °C"));
+    assert!(result.warnings[1].contains("no --oil"), "{:?}", result.warnings);
+    assert!(result.model.contains("# ESTIMATED: ASSUMED: no --oil given"));
 }
 
 #[test]

@@ -43,8 +43,8 @@ pub struct Args {
     #[arg(long, value_enum, ignore_case = true, default_value = "CN")]
     pub clearance_group: ClearanceGroupName,
     /// Built-in oil (`rolldyn oils`).
-    #[arg(long, default_value = rolldyn::new_model::DEFAULT_OIL)]
-    pub oil: String,
+    #[arg(long)]
+    pub oil: Option<String>,
     /// Bearing name in the model (default: the designation, or type and d×D×B).
     #[arg(long)]
     pub name: Option<String>,
