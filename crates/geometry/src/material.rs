@@ -68,14 +68,6 @@ pub fn first_invalid_sn_point(points: &[(f64, f64)]) -> Option<(usize, String)> 
 }
 
 impl Material {
-    /// Through-hardened bearing steel (AISI 52100 / ШХ15), the database entry `bearing-steel`
-    /// ([`crate::material_database`]).
-    pub fn bearing_steel() -> Self {
-        crate::material_database::find("bearing-steel")
-            .expect("the database holds bearing-steel")
-            .material()
-    }
-
     /// `(1 − ν²)/E`, the compliance factor of one body.
     pub fn compliance(&self) -> f64 {
         (1.0 - self.poisson_ratio * self.poisson_ratio) / self.youngs_modulus

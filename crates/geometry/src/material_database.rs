@@ -155,6 +155,15 @@ pub struct MaterialRecord {
     pub sources: Vec<(&'static str, String)>,
 }
 
+impl Material {
+    /// Through-hardened bearing steel (AISI 52100 / ШХ15), the database entry `bearing-steel`.
+    pub fn bearing_steel() -> Self {
+        find("bearing-steel")
+            .expect("the database holds bearing-steel")
+            .material()
+    }
+}
+
 impl MaterialRecord {
     /// The record as the material of a part.
     pub fn material(&self) -> Material {

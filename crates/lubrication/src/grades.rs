@@ -18,12 +18,12 @@ use crate::correlations::{
     cragoe_thermal_conductivity, density_from_15c, wooster_pressure_viscosity,
 };
 use crate::error::LubError;
-use crate::library::{
+use crate::lubricant::{CELSIUS_ZERO, Lubricant, TempLaw, ViscosityLaw};
+use crate::provenance::{OilProperty, PropertySource};
+use crate::seed_rheology::{
     NVI65_SHEAR_MODULUS_PA, VNII_EYRING_STRESS_PA, VNII_SHEAR_MODULUS_PA, pao1_eyring_stress,
     pao1_shear_modulus,
 };
-use crate::lubricant::{CELSIUS_ZERO, Lubricant, TempLaw, ViscosityLaw};
-use crate::provenance::{OilProperty, PropertySource};
 use crate::viscosity::walther_from_two_points;
 use crate::viscosity_index::nu100_from_viscosity_index;
 

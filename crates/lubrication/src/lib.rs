@@ -56,6 +56,7 @@ pub mod mixture;
 pub mod provenance;
 pub mod regime;
 pub mod scuffing;
+mod seed_rheology;
 mod special;
 pub mod traction;
 pub mod viscosity;

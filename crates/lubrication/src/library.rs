@@ -24,6 +24,10 @@ use crate::error::LubError;
 use crate::grades::{BaseOil, iso_vg, mil_prf_7808, mil_prf_23699, vg220_gear};
 use crate::lubricant::{CELSIUS_ZERO, Lubricant, MixedLimitsData, TempLaw, ViscosityLaw};
 use crate::provenance::{OilProperty, PropertySource};
+use crate::seed_rheology::{
+    NVI65_SHEAR_MODULUS_PA, VNII_EYRING_STRESS_PA, VNII_SHEAR_MODULUS_PA, pao1_eyring_stress,
+    pao1_shear_modulus,
+};
 use crate::viscosity::walther_from_two_points;
 
 /// Names of the built-in oils (CLI keys): the seeds' oils, the ISO VG grades, the aero-engine
@@ -106,30 +110,10 @@ fn iso_vg_by_name(key: &str) -> Option<Result<Lubricant, LubError>> {
         .then(|| iso_vg(grade, base))
 }
 
-/// Γ of NVI 65 (seed 000 §2.3), Pa.
-pub(crate) const NVI65_SHEAR_MODULUS_PA: f64 = 3e9;
 /// κ of PAO1 (seed 000 §2.2), 1/(K·Pa).
 const PAO1_KAPPA_PER_K_PA: f64 = 1.2e-10;
-/// Γ of VNII NP 50-1-4u (seed 000 §3.1.2), Pa.
-pub(crate) const VNII_SHEAR_MODULUS_PA: f64 = 5e7;
-/// τ0 of VNII NP 50-1-4u (seed 000 §3.1.2), Pa.
-pub(crate) const VNII_EYRING_STRESS_PA: f64 = 3e5;
 /// κ (γ) of VNII NP 50-1-4u (seed 000 §3.1.2), 1/(K·Pa).
 const VNII_KAPPA_PER_K_PA: f64 = 1e-11;
-
-/// Γ(θ) of PAO1 (seed 000 §2.2): 7.444 + 0.0163θ − 0.002083θ² + 0.0000121θ³ GPa, θ in °C.
-pub(crate) fn pao1_shear_modulus() -> TempLaw {
-    TempLaw::PolynomialCelsius {
-        coeffs: vec![7.444e9, 0.0163e9, -0.002083e9, 0.0000121e9],
-    }
-}
-
-/// τ0(θ) of PAO1 (seed 000 §2.2): 8.46 − 0.054θ MPa, θ in °C.
-pub(crate) fn pao1_eyring_stress() -> TempLaw {
-    TempLaw::PolynomialCelsius {
-        coeffs: vec![8.46e6, -0.054e6],
-    }
-}
 
 /// `properties` given by the seed `source`, each as measured.
 fn given_by(source: &str, properties: &[OilProperty]) -> Vec<PropertySource> {

@@ -79,8 +79,16 @@ fn a_missing_oil_temperature_is_assumed_and_warned() {
             .unwrap();
     assert_eq!(result.warnings.len(), 2, "{:?}", result.warnings);
     assert!(result.model.contains("ASSUMED 70 °C"));
-    assert!(result.warnings[1].contains("no --oil"), "{:?}", result.warnings);
-    assert!(result.model.contains("# ESTIMATED: ASSUMED: no --oil given"));
+    assert!(
+        result.warnings[1].contains("no --oil"),
+        "{:?}",
+        result.warnings
+    );
+    assert!(
+        result
+            .model
+            .contains("# ESTIMATED: ASSUMED: no --oil given")
+    );
 }
 
 #[test]
