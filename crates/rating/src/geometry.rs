@@ -20,6 +20,20 @@ pub struct RollerBearingGeometry {
 }
 
 impl RollerBearingGeometry {
+    /// The bearing of issue 38 (NU 2215 style): 16 rollers 15 × 22 mm on D_pw = (75 + 130)/2 mm,
+    /// the worked case of the tests.
+    #[cfg(test)]
+    pub(crate) fn issue_38_bearing() -> Self {
+        Self {
+            roller_diameter_m: 0.015,
+            effective_length_m: 0.022,
+            contact_angle_rad: 0.0,
+            pitch_diameter_m: 0.1025,
+            rollers_per_row: 16,
+            rows: 1,
+        }
+    }
+
     /// γ = D_we cos α / D_pw (ISO 281:2007 Table 7's argument).
     pub fn gamma(&self) -> f64 {
         self.roller_diameter_m * self.contact_angle_rad.cos() / self.pitch_diameter_m

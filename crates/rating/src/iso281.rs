@@ -355,15 +355,7 @@ mod tests {
     use super::*;
 
     fn nu2215_like() -> RollerBearingGeometry {
-        // the bearing of issue 38: 16 rollers 15 × 22 mm on D_pw = (75 + 130)/2 mm
-        RollerBearingGeometry {
-            roller_diameter_m: 0.015,
-            effective_length_m: 0.022,
-            contact_angle_rad: 0.0,
-            pitch_diameter_m: 0.1025,
-            rollers_per_row: 16,
-            rows: 1,
-        }
+        RollerBearingGeometry::issue_38_bearing()
     }
 
     /// Table 7 is the ISO/TR 1281-1 line-contact f_c with λν = 0.83:

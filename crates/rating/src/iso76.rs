@@ -50,14 +50,7 @@ mod tests {
     /// 16 rollers 15 × 22 mm on D_pw 102.5 mm: 44 (1 − 15/102.5) · 16 · 22 · 15 = 198 322 N.
     #[test]
     fn static_rating_by_hand() {
-        let g = RollerBearingGeometry {
-            roller_diameter_m: 0.015,
-            effective_length_m: 0.022,
-            contact_angle_rad: 0.0,
-            pitch_diameter_m: 0.1025,
-            rollers_per_row: 16,
-            rows: 1,
-        };
+        let g = RollerBearingGeometry::issue_38_bearing();
         let c0 = static_radial_rating(&g);
         assert!((c0 - 44.0 * (1.0 - 15.0 / 102.5) * 16.0 * 22.0 * 15.0).abs() < 1e-6);
         assert!((c0 - 198_322.0).abs() < 1.0, "{c0}");

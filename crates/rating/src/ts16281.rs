@@ -118,14 +118,7 @@ mod tests {
     use crate::iso281::{dynamic_radial_rating, geometry_factor};
 
     fn geometry() -> RollerBearingGeometry {
-        RollerBearingGeometry {
-            roller_diameter_m: 0.015,
-            effective_length_m: 0.022,
-            contact_angle_rad: 0.0,
-            pitch_diameter_m: 0.1025,
-            rollers_per_row: 16,
-            rows: 1,
-        }
+        RollerBearingGeometry::issue_38_bearing()
     }
 
     /// The laminae of a uniformly loaded roller make up the whole roller: the life does not
