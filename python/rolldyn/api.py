@@ -137,7 +137,7 @@ def new_model(
     Returns
     -------
     Result
-        Summary keys: ``name``, ``model`` (the file's text), ``file``, ``bore_m``,
+        Summary keys: ``name``, ``toml`` (the model file's text), ``file``, ``bore_m``,
         ``outside_diameter_m``, ``width_m``, ``roller_diameter_m``, ``roller_length_m``,
         ``rollers``, ``pitch_diameter_m``, ``radial_clearance_m``, ``cage_material``, ``oil``,
         ``warnings``. ``rolldyn.load_model(result.file)`` loads a written model.

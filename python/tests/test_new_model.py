@@ -10,7 +10,7 @@ def test_a_designation_gives_a_model_that_checks(tmp_path):
     result = rolldyn.new_model("NU2215", out=tmp_path / "nu2215.toml")
     assert result.rollers == 16
     assert result.roller_diameter_m == pytest.approx(0.015)
-    assert "# ESTIMATED:" in result.model
+    assert "# ESTIMATED:" in result.toml
     model = rolldyn.load_model(result.file)
     assert model.name == "NU2215"
     check = rolldyn.check(model, speed="5000 rpm")
@@ -23,7 +23,7 @@ def test_the_boundary_form_takes_si_floats_and_catalogue_values():
                                speed="5000 rpm", radial_load="15 kN", oil_temperature="70 C",
                                oil="iso-vg-68-mineral")
     assert result.name == "NU75x130x31"
-    assert 'inner_speed = "5000 rpm"' in result.model
+    assert 'inner_speed = "5000 rpm"' in result.toml
 
 
 def test_a_missing_oil_temperature_is_warned():

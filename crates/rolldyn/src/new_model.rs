@@ -113,7 +113,7 @@ pub struct NewModelRequest {
 pub struct NewModelResult {
     pub name: String,
     /// The model file's text.
-    pub model: String,
+    pub toml: String,
     /// The file written, if any.
     pub file: Option<String>,
     pub bore_m: f64,
@@ -136,7 +136,7 @@ impl fmt::Display for NewModelResult {
     /// The model text, or, when a file was written, what it holds.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let Some(file) = &self.file else {
-            return write!(f, "{}", self.model.trim_end());
+            return write!(f, "{}", self.toml.trim_end());
         };
         writeln!(
             f,
@@ -195,7 +195,7 @@ impl Analysis for NewModel {
         let b = &input.boundary;
         Ok(NewModelResult {
             name: input.name.clone(),
-            model: text,
+            toml: text,
             file,
             bore_m: b.bore,
             outside_diameter_m: b.outside,

@@ -30,7 +30,7 @@ fn every_supported_designation_gives_a_valid_model() {
                     Err(Failure::Input(e)) if e.contains("has no row") => continue,
                     Err(e) => panic!("{designation}: {e}"),
                 };
-                let model = rolldyn_model::parse(&result.model, &designation).unwrap();
+                let model = rolldyn_model::parse(&result.toml, &designation).unwrap();
                 let rolldyn_geometry::BearingModel::Cylindrical(bearing) = model.bearing else {
                     panic!("{designation}: not a cylindrical bearing");
                 };
@@ -68,7 +68,7 @@ fn the_boundary_form_takes_catalogue_values_and_an_operating_point() {
         "material = \"cuzn40pb2\"",
         "oil = \"iso-vg-68-mineral\"",
     ] {
-        assert!(result.model.contains(line), "{line}\n{}", result.model);
+        assert!(result.toml.contains(line), "{line}\n{}", result.toml);
     }
 }
 
@@ -78,17 +78,13 @@ fn a_missing_oil_temperature_is_assumed_and_warned() {
         new_model(r#"{"designation": "NU2215", "speed": "5000 rpm", "radial_load": "15 kN"}"#)
             .unwrap();
     assert_eq!(result.warnings.len(), 2, "{:?}", result.warnings);
-    assert!(result.model.contains("ASSUMED 70 °C"));
+    assert!(result.toml.contains("ASSUMED 70 °C"));
     assert!(
         result.warnings[1].contains("no --oil"),
         "{:?}",
         result.warnings
     );
-    assert!(
-        result
-            .model
-            .contains("# ESTIMATED: ASSUMED: no --oil given")
-    );
+    assert!(result.toml.contains("# ESTIMATED: ASSUMED: no --oil given"));
 }
 
 #[test]
