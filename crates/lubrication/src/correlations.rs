@@ -28,7 +28,7 @@ const WATER_DENSITY_15C: f64 = 999.1;
 
 /// Volumetric thermal expansion coefficient of lubricating oils near 15 °C, 1/K — ESTIMATED
 /// class value (≈ 0.57 kg/m³ per K for an 880 kg/m³ oil, the slope the example oil files use);
-/// ASTM D1250 / API MPMS 11.1 give the exact density-dependent value, not implemented here.
+/// one coefficient for every oil, where ASTM D1250 / API MPMS 11.1 tabulate it against density.
 pub const OIL_THERMAL_EXPANSION_PER_K: f64 = 6.5e-4;
 
 /// ρ(θ) = ρ15 [1 − γ (θ − 15)] with γ = [`OIL_THERMAL_EXPANSION_PER_K`], as a
