@@ -10,13 +10,23 @@
 //! last [`TableWriter::flush`]: [`TableWriter::resume`] continues the table from there and
 //! rebuilds the Parquet file. A value that is not finite is written as an empty CSV field and a
 //! Parquet null ([`non_finite`]).
+//!
+//! The rules of every file rolldyn writes live here too: one writer per output folder
+//! ([`FolderLock`]), files replaced only when regular and never half-written
+//! ([`replace_file_atomically`]), and checksums of what is read back ([`checksum`]).
 
+pub mod checksum;
+pub mod folder_lock;
 pub mod mixed_table;
 pub mod non_finite;
+pub mod replace;
 pub mod size;
 
 pub use mixed_table::{Column, Values, write_parquet_table};
 pub use non_finite::{csv_field, csv_integer, default_reason, mark_non_finite};
+pub use checksum::{ChecksumError, checksum_hex, seal_json, verify_sealed_json};
+pub use folder_lock::{FolderLock, FolderLockError, LOCK_FILE};
+pub use replace::{ReplaceError, ensure_replaceable, replace_file_atomically};
 pub use size::{ByteSize, estimated_table_bytes};
 
 use parquet::basic::Compression;
