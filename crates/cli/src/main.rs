@@ -2,36 +2,49 @@
 //! formats their results; it owns no physics.
 
 use clap::Parser;
+use rolldyn_cli::output::{is_closed_pipe, print_error_line, write_failure};
 use rolldyn_cli::{Cli, execute};
 use std::process::ExitCode;
 
+/// Every line goes through [`rolldyn_cli::output`]: a reader that went away (`rolldyn … |
+/// head`, SIGPIPE ignored as Rust does) ends the output quietly with the run's own exit code;
+/// a stdout that cannot be written (a full disk) is a failed run (exit 1, one line on stderr);
+/// a stderr that cannot be written loses its lines, never the exit code.
 fn main() -> ExitCode {
-    // Rust ignores SIGPIPE, so printing into a closed pipe (`rolldyn … | head`) would panic;
-    // restore the default action: the process ends quietly when the reader goes away.
-    #[cfg(unix)]
-    // SAFETY: called once at start-up, before any thread exists; SIG_DFL is a valid handler.
-    unsafe {
-        libc::signal(libc::SIGPIPE, libc::SIG_DFL);
-    }
     if let Some(missing) = missing_cpu_features() {
-        eprintln!(
+        print_error_line(&format!(
             "error: this rolldyn was built for x86-64-v3 but the CPU lacks {missing}; rebuild \
              with RUSTFLAGS=\"-C target-cpu=x86-64\" cargo build --release (see .cargo/config.toml)"
-        );
+        ));
         return ExitCode::FAILURE;
     }
-    let cli = Cli::parse();
-    let result = execute(cli.command);
-    match result {
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(usage) => return print_usage(&usage),
+    };
+    match execute(cli.command) {
         Ok(()) => ExitCode::SUCCESS,
         Err(failure) => {
             // one readable line even when the failure quotes a huge bad value
-            eprintln!(
+            print_error_line(&format!(
                 "rolldyn: {}",
                 rolldyn_model::shorten_long_words(&failure.to_string())
-            );
+            ));
             ExitCode::from(failure.exit_code())
         }
+    }
+}
+
+/// Prints clap's answer (help and version on stdout, a usage error on stderr) and returns its
+/// exit code; help that cannot be written is a failed run.
+fn print_usage(usage: &clap::Error) -> ExitCode {
+    let code = ExitCode::from(u8::try_from(usage.exit_code()).unwrap_or(2));
+    match usage.print() {
+        Err(e) if !usage.use_stderr() && !is_closed_pipe(&e) => {
+            print_error_line(&format!("rolldyn: {}", write_failure(&e)));
+            ExitCode::FAILURE
+        }
+        _ => code,
     }
 }
 

@@ -8,25 +8,43 @@ use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use rolldyn::{Analysis, Context, Invocation, ModelSource, Observer, Progress};
 use serde::Serialize;
 use std::collections::BTreeMap;
+use std::io::Write;
 use std::path::Path;
 
 /// Options that change where, how or how fast the answer is given, not what is computed; the
 /// run manifest does not record them.
 const PRESENTATION_FLAGS: [&str; 5] = ["out", "json", "quiet", "report", "jobs"];
 
-/// Prints `value` as pretty JSON on stdout; a closed pipe (`| head`) is not an error.
+/// Prints `value` as pretty JSON on stdout ([`print_text`]).
 pub fn print_json<T: Serialize>(value: &T) -> Result<(), Failure> {
     let text = serde_json::to_string_pretty(value)?;
     print_text(&text)
 }
 
-/// Prints `text` and a newline on stdout; a closed pipe is not an error.
+/// Prints `text` and a newline on stdout. A reader that went away (`| head`) is not an error:
+/// the output ends quietly. Any other write error (a full disk) is a failed run.
 pub fn print_text(text: &str) -> Result<(), Failure> {
-    use std::io::Write;
-    match writeln!(std::io::stdout().lock(), "{text}") {
-        Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => Err(e.into()),
+    let mut stdout = std::io::stdout().lock();
+    match writeln!(stdout, "{text}").and_then(|()| stdout.flush()) {
+        Err(e) if !is_closed_pipe(&e) => Err(Failure::Run(write_failure(&e))),
         _ => Ok(()),
     }
+}
+
+/// Prints `line` and a newline on stderr; a stderr that cannot be written (closed, full) loses
+/// the line, and nothing else happens (there is nowhere left to say so).
+pub fn print_error_line(line: &str) {
+    let _ = writeln!(std::io::stderr().lock(), "{line}");
+}
+
+/// Whether a write failed because its reader went away (`rolldyn … | head`).
+pub fn is_closed_pipe(e: &std::io::Error) -> bool {
+    e.kind() == std::io::ErrorKind::BrokenPipe
+}
+
+/// The message of a failed write on stdout.
+pub fn write_failure(e: &std::io::Error) -> String {
+    format!("cannot write output: {e}")
 }
 
 /// Runs analysis `A` and prints its result: as JSON with `json`, else as text.
@@ -148,6 +166,6 @@ impl Observer for Bar {
 
     fn warning(&self, message: &str) {
         self.bar
-            .suspend(|| eprintln!("rolldyn: warning: {message}"));
+            .suspend(|| print_error_line(&format!("rolldyn: warning: {message}")));
     }
 }

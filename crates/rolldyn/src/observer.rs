@@ -31,7 +31,9 @@ pub trait Observer: Sync {
     /// A warning the analysis gives without stopping (a temperature outside an oil's range):
     /// the command line prints it on stderr, Python raises a `UserWarning`.
     fn warning(&self, message: &str) {
-        eprintln!("rolldyn: warning: {message}");
+        use std::io::Write;
+        // a closed or full stderr loses the warning, never the run
+        let _ = writeln!(std::io::stderr().lock(), "rolldyn: warning: {message}");
     }
     /// Whether the caller asks the analysis to stop; a long analysis asks between its steps
     /// (or variants, or periods) and ends with a [`crate::Failure::Run`] that says it was

@@ -10,7 +10,7 @@ pub struct ProgressLines {
 impl Observer for ProgressLines {
     fn progress(&self, progress: &Progress) {
         if let (false, Some(message)) = (self.quiet, &progress.message) {
-            eprintln!("{message}");
+            crate::output::print_error_line(message);
         }
     }
 }
