@@ -5,7 +5,7 @@ use crate::analysis::{Analysis, Context};
 use crate::failure::Failure;
 use crate::observer::Progress;
 use crate::operating::Operating;
-use crate::output::out_dir;
+use crate::output::{out_dir, sub_dir};
 use crate::run_record::{ModelOrigin, finish_out_folder};
 use crate::table::{Table, Tables};
 use rolldyn_fatigue::cage_material::{CageMaterial, SnChoice, resolve};
@@ -248,7 +248,7 @@ pub fn unit_stresses(
             cage,
             z,
             &rolldyn_fatigue::calculix::CalculixSettings::default(),
-            Some(&out_dir(cache)?),
+            Some(&sub_dir(cache)?),
         )
         .map_err(|e| Failure::Run(e.to_string())),
     }
@@ -389,6 +389,7 @@ impl Analysis for Fatigue {
                 "--report needs an output folder (--out)".into(),
             ));
         }
+        let out = request.out.as_deref().map(out_dir).transpose()?;
         let (mut export, maxima) = match &request.loads {
             Some(_) if request.operating.any() => {
                 return Err(Failure::Input(
@@ -468,12 +469,9 @@ impl Analysis for Fatigue {
         stage(context, 2.0, "damage: rainflow, S–N, Miner".into())?;
         let result = evaluate(&unit, &export, Some(maxima), &settings).map_err(Failure::Run)?;
         stage(context, 3.0, "report files".into())?;
-        let files = match &request.out {
-            Some(dir) => {
-                let dir = out_dir(dir)?;
-                rolldyn_fatigue::report::write_report(&dir, &export, &result)
-                    .map_err(Failure::Run)?
-            }
+        let files = match &out {
+            Some(dir) => rolldyn_fatigue::report::write_report(dir, &export, &result)
+                .map_err(Failure::Run)?,
             None => Vec::new(),
         };
         let answer = FatigueResult {
@@ -484,7 +482,7 @@ impl Analysis for Fatigue {
             files: files.iter().map(|f| f.display().to_string()).collect(),
             critical_cycles: result.critical_cycles,
         };
-        if let Some(dir) = &request.out {
+        if let Some(dir) = &out {
             let model = match request.loads {
                 Some(_) => ModelOrigin::None,
                 None => ModelOrigin::Source(&context.model),

@@ -1,18 +1,34 @@
-//! Writing results to files: output folders, CSV tables.
+//! Writing results to files: output folders, CSV tables, files replaced in place.
 
 use crate::failure::Failure;
-use rolldyn_output::ColumnKind;
+use rolldyn_output::{ColumnKind, FolderLock, FolderLockError, ReplaceError};
 use std::path::{Path, PathBuf};
 
-/// Creates the output folder (and parents) and returns it.
-pub fn out_dir(dir: &Path) -> Result<PathBuf, Failure> {
-    std::fs::create_dir_all(dir).map_err(|e| {
-        Failure::Run(format!(
-            "cannot create output folder {}: {e}",
-            dir.display()
-        ))
-    })?;
+/// Creates the output folder `--out` (and parents) and locks it for this run until the
+/// returned lock (which derefs to the folder) is dropped; a folder another run writes is
+/// refused as bad input.
+pub fn out_dir(dir: &Path) -> Result<FolderLock, Failure> {
+    FolderLock::acquire(dir).map_err(|e| match e {
+        FolderLockError::Busy { .. } => Failure::Input(format!("--out {e}")),
+        FolderLockError::Io { .. } => Failure::Run(e.to_string()),
+    })
+}
+
+/// Creates a folder inside a locked output folder, or a cache shared between runs, and returns
+/// it.
+pub fn sub_dir(dir: &Path) -> Result<PathBuf, Failure> {
+    std::fs::create_dir_all(dir)
+        .map_err(|e| Failure::Run(format!("cannot create folder {}: {e}", dir.display())))?;
     Ok(dir.to_path_buf())
+}
+
+/// A refusal of [`rolldyn_output::replace_file_atomically`] as a failure: a target that is not
+/// a regular file is bad input of the option `flag` that named it.
+pub fn replace_failure(flag: &str, e: ReplaceError) -> Failure {
+    match e {
+        ReplaceError::NotRegularFile { .. } => Failure::Input(format!("{flag}: {e}")),
+        ReplaceError::Io { .. } => Failure::Run(e.to_string()),
+    }
 }
 
 /// Writes a CSV file with a header row and numeric rows (the whole-number columns,

@@ -41,7 +41,15 @@ impl Analysis for Report {
     type Request = ReportRequest;
     type Result = ReportResult;
 
+    /// Refuses a folder that a run is writing (it holds the folder's lock).
     fn run(request: &ReportRequest, _context: &Context<'_>) -> Result<ReportResult, Failure> {
+        let _lock = match request.dir.is_dir() {
+            true => Some(
+                rolldyn_output::FolderLock::acquire(&request.dir)
+                    .map_err(|e| Failure::Input(e.to_string()))?,
+            ),
+            false => None,
+        };
         Ok(ReportResult {
             written: rolldyn_report::report_folder(&request.dir)?,
         })

@@ -173,10 +173,12 @@ impl Analysis for Startup {
             .file()
             .and_then(|p| p.file_stem())
             .map_or("model".into(), |s| s.to_string_lossy().to_string());
-        let out = request
-            .out
-            .clone()
-            .unwrap_or_else(|| PathBuf::from("out").join(format!("{stem}-startup")));
+        let out = crate::output::out_dir(
+            &request
+                .out
+                .clone()
+                .unwrap_or_else(|| PathBuf::from("out").join(format!("{stem}-startup"))),
+        )?;
         let jobs = crate::operating::jobs_or_cores(request.jobs);
         let settings = Settings {
             revolutions,

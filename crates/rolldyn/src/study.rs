@@ -9,7 +9,7 @@ use crate::contact::plot_pressure_map;
 use crate::failure::Failure;
 use crate::model_source::ModelSource;
 use crate::observer::Progress;
-use crate::output::{out_dir, write_csv};
+use crate::output::{out_dir, sub_dir, write_csv};
 use crate::table::{Table, Tables};
 use rolldyn_geometry::{BearingModel, DoubleRowTaperedBearing, TaperedRibFace};
 use rolldyn_plot::{Field, Labels, MapLabels, Series, line_plot, map_plot};
@@ -903,7 +903,7 @@ fn end_rib_limit(
             )));
         }
     };
-    let dir = out_dir(&dir.join("end-rib-limit"))?;
+    let dir = sub_dir(&dir.join("end-rib-limit"))?;
     let settings = Settings {
         cell_m,
         ..Settings::default()

@@ -5,8 +5,10 @@ use super::request::SimulateRequest;
 use super::sinks::{TablesNote, decode_note};
 use crate::failure::Failure;
 use crate::operating::Duration;
+use crate::output::replace_failure;
 use rolldyn_dynamics::Simulation;
-use std::path::{Path, PathBuf};
+use rolldyn_output::replace_file_atomically;
+use std::path::Path;
 
 /// Restores the checkpoint at `path` into `sim` and returns its note on the output tables;
 /// refuses one that is damaged, foreign, or already at or past the end time `t_end` [s].
@@ -57,12 +59,7 @@ pub fn checkpoint_interval(
 }
 
 /// Writes a checkpoint through a temporary file renamed over `path`, so that a run killed
-/// while writing leaves the previous checkpoint intact.
+/// while writing leaves the previous checkpoint intact; `path` must be a regular file or new.
 pub fn write_checkpoint(path: &Path, bytes: &[u8]) -> Result<(), Failure> {
-    let mut partial = path.as_os_str().to_owned();
-    partial.push(".partial");
-    let partial = PathBuf::from(partial);
-    std::fs::write(&partial, bytes)
-        .and_then(|_| std::fs::rename(&partial, path))
-        .map_err(|e| Failure::Run(format!("{}: {e}", path.display())))
+    replace_file_atomically(path, bytes).map_err(|e| replace_failure("--checkpoint", e))
 }

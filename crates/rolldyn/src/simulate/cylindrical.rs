@@ -18,6 +18,7 @@ use rolldyn_dynamics::output_columns::{
 use rolldyn_fatigue::CageLoadRecorder;
 use rolldyn_report::RunKind;
 use std::ops::ControlFlow;
+use std::path::Path;
 
 /// Runs the cylindrical bearing `model` as `request` asks.
 pub fn run(
@@ -123,7 +124,7 @@ pub fn run(
             step_limited_by: step_limits(&sim.step_limits()),
             drag_and_land: rolldyn_setup::drag_and_land_inputs(model),
         },
-        output_folder: dir.clone(),
+        output_folder: dir.as_deref().map(Path::to_path_buf),
         tables: sinks.memory.map(memory_tables).unwrap_or_default(),
     };
     if let Some(dir) = &dir {

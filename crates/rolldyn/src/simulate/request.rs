@@ -141,6 +141,10 @@ impl SimulateRequest {
                 "--checkpoint-interval needs --checkpoint".into(),
             ));
         }
+        if let Some(path) = &self.checkpoint {
+            rolldyn_output::ensure_replaceable(path)
+                .map_err(|e| crate::output::replace_failure("--checkpoint", e))?;
+        }
         if let Some(offset) = self.row_offset {
             check_row_offset(offset).map_err(|e| Failure::Input(format!("--row-offset {e}")))?;
         }

@@ -85,7 +85,7 @@ pub fn run(
             entries,
             most_limiting: outcome.most_limiting.clone(),
         },
-        output_folder: dir.clone(),
+        output_folder: dir.as_deref().map(Path::to_path_buf),
         tables,
     };
     if let Some(dir) = &dir {
