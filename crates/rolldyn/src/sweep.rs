@@ -474,6 +474,11 @@ impl Analysis for Sweep {
             .out
             .clone()
             .unwrap_or_else(|| PathBuf::from("out").join(stem));
+        // `--collect-only` reads a folder and does not create one
+        let _lock = match request.collect_only && !out_dir.is_dir() {
+            true => None,
+            false => Some(crate::output::out_dir(&out_dir)?),
+        };
         let analysis = sweep.analysis;
         let cache_dir = out_dir.join("calculix-cache");
         let variants_dir = out_dir.join("variants");
@@ -493,6 +498,12 @@ impl Analysis for Sweep {
             ),
         };
         let progress = |o: &VariantOutcome, done: usize, total: usize| {
+            if let Some(damaged) = &o.replaced_damaged {
+                context.observer.warning(&format!(
+                    "variant {}: the stored result was not reused ({damaged}); it was run again",
+                    o.name
+                ));
+            }
             if let Some(e) = &o.error {
                 context
                     .observer

@@ -3,6 +3,7 @@
 use crate::file::{SweepError, SweepFile, Variant};
 use rayon::prelude::*;
 use rolldyn_numerics::hash::fnv1a;
+use rolldyn_output::{replace_file_atomically, seal_json, verify_sealed_json};
 use serde::{Deserialize, Deserializer, Serialize};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -106,6 +107,10 @@ pub struct VariantOutcome {
     /// This run replaced a stored result computed from other inputs (not stored).
     #[serde(skip)]
     pub inputs_changed: bool,
+    /// Why this run replaced a stored result it could not trust: `"… damaged: checksum
+    /// mismatch"`, an unreadable file (not stored).
+    #[serde(skip)]
+    pub replaced_damaged: Option<String>,
 }
 
 /// Fingerprint (16 hex digits) of everything that decides the result of `variant`: the program
@@ -131,24 +136,27 @@ fn variant_file(out: &Path, name: &str) -> PathBuf {
 }
 
 /// The stored outcome of variant `name`: `None` when it has no file, an error when its file
-/// cannot be read.
+/// cannot be read or does not match its checksum (`"…: damaged: checksum mismatch"`).
 pub(crate) fn stored(out: &Path, name: &str) -> Result<Option<VariantOutcome>, String> {
     let path = variant_file(out, name);
     let text = match std::fs::read_to_string(&path) {
         Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(None),
         read => read.map_err(|e| format!("cannot read {}: {e}", path.display()))?,
     };
-    serde_json::from_str(&text)
-        .map(Some)
-        .map_err(|e| format!("cannot read {}: {e}", path.display()))
+    let outcome =
+        serde_json::from_str(&text).map_err(|e| format!("cannot read {}: {e}", path.display()))?;
+    verify_sealed_json(&text).map_err(|e| format!("{}: {e}", path.display()))?;
+    Ok(Some(outcome))
 }
 
-/// A variant to run now, with its fingerprint and whether a stored result had other inputs.
+/// A variant to run now, with its fingerprint, whether a stored result had other inputs and
+/// why a stored result could not be trusted.
 struct Planned<'a> {
     index: usize,
     variant: &'a Variant,
     fingerprint: String,
     inputs_changed: bool,
+    replaced_damaged: Option<String>,
 }
 
 /// The variants of this run: those of the shard, without (with `resume`) the finished ones
@@ -161,7 +169,10 @@ fn plan<'a>(sweep: &'a SweepFile, options: &RunOptions) -> Vec<Planned<'a>> {
         .filter(|(i, _)| options.shard.is_none_or(|s| i % s.count == s.index))
         .filter_map(|(index, variant)| {
             let fingerprint = fingerprint(sweep, variant, &options.settings);
-            let previous = stored(&options.out_dir, &variant.name).ok().flatten();
+            let (previous, replaced_damaged) = match stored(&options.out_dir, &variant.name) {
+                Ok(previous) => (previous, None),
+                Err(damaged) => (None, options.resume.then_some(damaged)),
+            };
             let same_inputs = previous.as_ref().map(|p| p.fingerprint == fingerprint);
             let finished = previous.is_some_and(|p| p.summary.is_some());
             if options.resume && finished && same_inputs == Some(true) {
@@ -172,6 +183,7 @@ fn plan<'a>(sweep: &'a SweepFile, options: &RunOptions) -> Vec<Planned<'a>> {
                 variant,
                 fingerprint,
                 inputs_changed: same_inputs == Some(false),
+                replaced_damaged,
             })
         })
         .collect()
@@ -222,19 +234,14 @@ pub fn run(
                     wall_time_s: start.elapsed().as_secs_f64(),
                     fingerprint: planned.fingerprint.clone(),
                     inputs_changed: planned.inputs_changed,
+                    replaced_damaged: planned.replaced_damaged.clone(),
                 };
                 let path = variant_file(&options.out_dir, &variant.name);
-                let tmp = path.with_extension("json.tmp");
-                let text = serde_json::to_string_pretty(&outcome).unwrap_or_default();
-                std::fs::write(&tmp, text)
-                    .and_then(|_| std::fs::rename(&tmp, &path))
-                    .map_err(|e| {
-                        SweepError::new(
-                            &sweep.path,
-                            variant.name.clone(),
-                            format!("cannot write {}: {e}", path.display()),
-                        )
-                    })?;
+                let fail =
+                    |reason: String| SweepError::new(&sweep.path, variant.name.clone(), reason);
+                let text = seal_json(&outcome)
+                    .map_err(|e| fail(format!("cannot write {}: {e}", path.display())))?;
+                replace_file_atomically(&path, text.as_bytes()).map_err(|e| fail(e.to_string()))?;
                 progress(
                     &outcome,
                     done.fetch_add(1, Ordering::SeqCst) + 1,

@@ -478,3 +478,44 @@ fn a_stop_request_starts_no_further_variant() {
     assert_eq!(resumed.len(), 2, "resume runs the variants not started");
     std::fs::remove_dir_all(dir).ok();
 }
+
+#[test]
+fn n11_an_edited_result_is_not_reused_by_resume_nor_collected() {
+    let dir = scratch("checksum");
+    let out = dir.join("out");
+    let options = one_job(&out, true);
+    let analysis = |_: &Variant, model: rolldyn_model::Model| clearance(model);
+    let sweep = SweepFile::load(&write_sweep(&dir, &clearance_variants(&[0, 5]))).unwrap();
+    run(&sweep, &options, &analysis, &|_, _, _| {}, &|| false).unwrap();
+    let stored = out.join("variants/v1.json");
+    let text = std::fs::read_to_string(&stored).unwrap();
+    let edited = text.replace("\"clearance_m\": 5e-6", "\"clearance_m\": 9e-6");
+    assert_ne!(edited, text, "{text}");
+    std::fs::write(&stored, edited).unwrap();
+
+    assert_eq!(collect(&sweep, &options).unwrap().rows, 2);
+    let csv = std::fs::read_to_string(out.join("summary.csv")).unwrap();
+    let row = csv.lines().nth(2).unwrap();
+    assert!(
+        row.starts_with("v1,5e-6,1,,") && row.contains("damaged: checksum mismatch"),
+        "{csv}"
+    );
+
+    let rerun = run(&sweep, &options, &analysis, &|_, _, _| {}, &|| false).unwrap();
+    assert_eq!(rerun.len(), 1, "resume runs the damaged variant again");
+    assert!(
+        rerun[0]
+            .replaced_damaged
+            .as_deref()
+            .is_some_and(|why| why.contains("damaged: checksum mismatch")),
+        "{:?}",
+        rerun[0].replaced_damaged
+    );
+    collect(&sweep, &options).unwrap();
+    let csv = std::fs::read_to_string(out.join("summary.csv")).unwrap();
+    assert!(
+        csv.lines().nth(2).unwrap().starts_with("v1,5e-6,1,5e-6"),
+        "{csv}"
+    );
+    std::fs::remove_dir_all(dir).ok();
+}
