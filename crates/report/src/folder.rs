@@ -1,6 +1,9 @@
 //! What an output folder holds: its manifest, plots and tables.
 
+use crate::plain_svg::not_plain;
 use crate::{MANIFEST_FILE, ReportError, RunKind, RunManifest};
+use rolldyn_output::checksum_hex;
+use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
 /// Largest CSV file shown as a table; larger ones (time series) are listed by size.
@@ -10,6 +13,14 @@ const MAX_TABLE_BYTES: u64 = 256 * 1024;
 pub struct Plot {
     pub name: String,
     pub svg: String,
+}
+
+/// An SVG file of the folder that is not inlined, and why: only what the run recorded in
+/// `run.json`'s `files`, unchanged, is inlined (an SVG can hold scripts).
+pub struct SkippedPlot {
+    /// Path relative to the folder (`variants/v1-wear/depth.svg`).
+    pub name: String,
+    pub reason: String,
 }
 
 /// A CSV file of the folder: its rows, or only its size when too large to show.
@@ -54,6 +65,8 @@ pub struct OutputFolder {
     pub csv_files: Vec<CsvFile>,
     /// A sweep's `summary.csv` and its variants.
     pub sweep: Option<(Table, Vec<Variant>)>,
+    /// The SVG files not inlined.
+    pub skipped_plots: Vec<SkippedPlot>,
 }
 
 impl OutputFolder {
@@ -69,17 +82,25 @@ impl OutputFolder {
             Some(m) => m.kind,
             None => inferred_kind(dir)?,
         };
+        let mut svg = SvgReader {
+            dir,
+            recorded: manifest.as_ref().and_then(|m| m.files.as_ref()),
+            skipped: Vec::new(),
+        };
         let sweep = match kind {
-            RunKind::Sweep => Some(sweep_variants(dir)?),
+            RunKind::Sweep => Some(sweep_variants(&mut svg)?),
             _ => None,
         };
+        let plots = svg.plots("")?;
+        let skipped_plots = svg.skipped;
         Ok(Self {
             dir: dir.to_path_buf(),
             kind,
             manifest,
-            plots: plots(dir)?,
+            plots,
             csv_files: csv_files(dir)?,
             sweep,
+            skipped_plots,
         })
     }
 
@@ -128,19 +149,94 @@ fn file_name(path: &Path) -> String {
         .map_or(String::new(), |n| n.to_string_lossy().into_owned())
 }
 
-/// The SVG plots of `dir`, without their XML prologue.
-fn plots(dir: &Path) -> Result<Vec<Plot>, ReportError> {
-    let mut plots = Vec::new();
-    for path in files_with(dir, "svg")? {
-        let text = std::fs::read_to_string(&path).map_err(|e| ReportError::io(&path, e))?;
-        if let Some(start) = text.find("<svg") {
-            plots.push(Plot {
-                name: file_name(&path),
-                svg: text[start..].to_string(),
-            });
+/// The folders of `dir` whose plots a report shows, relative to it: the folder itself and the
+/// output folders of a sweep's variants (`variants/<name>-wear`, `-fatigue`).
+fn plot_folders(dir: &Path) -> Vec<String> {
+    let mut folders = vec![String::new()];
+    if let Ok(entries) = std::fs::read_dir(dir.join("variants")) {
+        let mut variants: Vec<String> = entries
+            .filter_map(Result::ok)
+            .filter(|e| e.path().is_dir())
+            .map(|e| format!("variants/{}/", e.file_name().to_string_lossy()))
+            .collect();
+        variants.sort();
+        folders.extend(variants);
+    }
+    folders
+}
+
+/// The checksum ([`checksum_hex`]) of every SVG file a report of `dir` could inline, by path
+/// relative to `dir` (`cage_slip.svg`, `variants/v1-wear/depth.svg`): what a run records in
+/// its manifest's `files`.
+pub fn plot_checksums(dir: &Path) -> Result<BTreeMap<String, String>, ReportError> {
+    let mut sums = BTreeMap::new();
+    for folder in plot_folders(dir) {
+        for path in files_with(&dir.join(&folder), "svg")? {
+            let bytes = std::fs::read(&path).map_err(|e| ReportError::io(&path, e))?;
+            sums.insert(
+                format!("{folder}{}", file_name(&path)),
+                checksum_hex(&bytes),
+            );
         }
     }
-    Ok(plots)
+    Ok(sums)
+}
+
+/// Reads the SVG plots of a folder. With a manifest that lists its files, only those listed,
+/// unchanged, are inlined; without (no `run.json`, or one of an older rolldyn), only plain
+/// drawings ([`not_plain`]).
+struct SvgReader<'a> {
+    dir: &'a Path,
+    /// The manifest's `files`.
+    recorded: Option<&'a BTreeMap<String, String>>,
+    skipped: Vec<SkippedPlot>,
+}
+
+impl SvgReader<'_> {
+    /// Why the SVG file `name` (relative to the folder) with content `bytes` is not inlined.
+    fn distrust(&self, name: &str, bytes: &[u8]) -> Option<String> {
+        let Some(recorded) = self.recorded else {
+            let text = String::from_utf8_lossy(bytes);
+            let svg = text.find("<svg").map_or("", |start| &text[start..]);
+            return not_plain(svg).map(|what| {
+                format!(
+                    "not a plain drawing ({what}) and no run.json lists it as written by rolldyn"
+                )
+            });
+        };
+        match recorded.get(name) {
+            None => Some("not written by the run (run.json's files do not list it)".into()),
+            Some(sum) if *sum != checksum_hex(bytes) => {
+                Some("changed since the run wrote it (checksum mismatch with run.json)".into())
+            }
+            Some(_) => None,
+        }
+    }
+
+    /// The plots of the subfolder `folder` (`""` or `variants/<name>/`), without their XML
+    /// prologue; the files not trusted are noted in `skipped`.
+    fn plots(&mut self, folder: &str) -> Result<Vec<Plot>, ReportError> {
+        let mut plots = Vec::new();
+        for path in files_with(&self.dir.join(folder), "svg")? {
+            let bytes = std::fs::read(&path).map_err(|e| ReportError::io(&path, e))?;
+            let name = file_name(&path);
+            if let Some(reason) = self.distrust(&format!("{folder}{name}"), &bytes) {
+                self.skipped.push(SkippedPlot {
+                    name: format!("{folder}{name}"),
+                    reason,
+                });
+                continue;
+            }
+            let text = String::from_utf8_lossy(&bytes);
+            if let Some(start) = text.find("<svg") {
+                plots.push(Plot {
+                    name,
+                    svg: text[start..].to_string(),
+                });
+            }
+        }
+        Ok(plots)
+    }
 }
 
 fn csv_files(dir: &Path) -> Result<Vec<CsvFile>, ReportError> {
@@ -189,7 +285,8 @@ pub fn read_table(path: &Path) -> Result<Table, ReportError> {
 }
 
 /// A sweep's `summary.csv` and, per row, the plots of `variants/<name>-wear` or `-fatigue`.
-fn sweep_variants(dir: &Path) -> Result<(Table, Vec<Variant>), ReportError> {
+fn sweep_variants(svg: &mut SvgReader<'_>) -> Result<(Table, Vec<Variant>), ReportError> {
+    let dir = svg.dir;
     let summary = dir.join("summary.csv");
     let table = match summary.exists() {
         true => read_table(&summary)?,
@@ -200,9 +297,9 @@ fn sweep_variants(dir: &Path) -> Result<(Table, Vec<Variant>), ReportError> {
         let name = table.field(row, "variant").unwrap_or_default().to_string();
         let mut variant_plots = Vec::new();
         for suffix in ["wear", "fatigue"] {
-            let own = dir.join("variants").join(format!("{name}-{suffix}"));
-            if own.is_dir() {
-                variant_plots.extend(plots(&own)?);
+            let own = format!("variants/{name}-{suffix}/");
+            if dir.join(&own).is_dir() {
+                variant_plots.extend(svg.plots(&own)?);
             }
         }
         variants.push(Variant {

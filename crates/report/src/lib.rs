@@ -5,9 +5,11 @@
 mod folder;
 mod html;
 pub mod manifest;
+mod plain_svg;
 mod quantities;
 mod warnings;
 
+pub use folder::plot_checksums;
 pub use manifest::{MANIFEST_FILE, RunKind, RunManifest};
 pub use warnings::{
     CAGE_LAND_FORCE_THRESHOLD_N, CAGE_LAND_TO_ROLLER_FORCE_RATIO, Level, SCUFFING_CAUTION_MARGIN,
@@ -30,6 +32,9 @@ pub enum ReportError {
     Manifest { path: PathBuf, reason: String },
     #[error("{path}: {reason}")]
     Io { path: PathBuf, reason: String },
+    /// `run.json` or `report.html` cannot be written (or is there and not a regular file).
+    #[error(transparent)]
+    Replace(#[from] rolldyn_output::ReplaceError),
 }
 
 impl ReportError {
@@ -72,7 +77,7 @@ pub fn report_folder(dir: &Path) -> Result<WrittenReport, ReportError> {
     let warnings = warnings::assess(&folder);
     let page = html::page(&folder, &warnings);
     let path = dir.join(REPORT_FILE);
-    std::fs::write(&path, page).map_err(|e| ReportError::io(&path, e))?;
+    rolldyn_output::replace_file_atomically(&path, page.as_bytes())?;
     Ok(WrittenReport {
         report: path,
         kind: folder.kind,

@@ -44,17 +44,22 @@ pub struct RunManifest {
     pub overrides: BTreeMap<String, String>,
     /// The JSON answer of the run (what `--json` prints).
     pub summary: serde_json::Value,
+    /// The files of the folder the run wrote that a report inlines (its SVG plots), by path
+    /// relative to the folder, with their checksum ([`rolldyn_output::checksum_hex`]); `None`
+    /// in manifests of older versions.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub files: Option<BTreeMap<String, String>>,
 }
 
 impl RunManifest {
-    /// Writes `dir/run.json` and returns its path.
+    /// Writes `dir/run.json` (replacing a previous one whole) and returns its path.
     pub fn write(&self, dir: &Path) -> Result<PathBuf, ReportError> {
         let path = dir.join(MANIFEST_FILE);
         let text = serde_json::to_string_pretty(self).map_err(|e| ReportError::Manifest {
             path: path.clone(),
             reason: e.to_string(),
         })?;
-        std::fs::write(&path, text + "\n").map_err(|e| ReportError::io(&path, e))?;
+        rolldyn_output::replace_file_atomically(&path, (text + "\n").as_bytes())?;
         Ok(path)
     }
 

@@ -129,6 +129,13 @@ pub fn assess(folder: &OutputFolder) -> Warnings {
                 .into(),
         );
     }
+    for skipped in &folder.skipped_plots {
+        warnings.push(
+            Level::Warning,
+            "",
+            format!("plot {} not shown: {}", skipped.name, skipped.reason),
+        );
+    }
     if let Some((table, variants)) = &folder.sweep {
         for variant in variants {
             let figures = table

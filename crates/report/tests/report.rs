@@ -42,6 +42,7 @@ fn simulate_folder(name: &str, summary: serde_json::Value) -> Scratch {
         model_text: Some("name = \"<b>&\"".into()),
         overrides: [("--speed".to_string(), "8163rpm".to_string())].into(),
         summary,
+        files: None,
     }
     .write(&dir)
     .unwrap();
@@ -182,6 +183,7 @@ fn the_sweep_table_leads_with_the_varied_parameters() {
         model_text: None,
         overrides: Default::default(),
         summary: serde_json::json!({"variants": 2, "varied": ["roller.count"]}),
+        files: None,
     }
     .write(&dir)
     .unwrap();
@@ -240,4 +242,68 @@ fn a_missing_or_foreign_folder_is_refused() {
         report_folder(&empty),
         Err(ReportError::Folder { .. })
     ));
+}
+
+/// An SVG that can run code in the reader's browser.
+const HOSTILE: &str = "<svg xmlns=\"http://www.w3.org/2000/svg\" onload=\"alert(1)\">\
+                       <script>alert(2)</script><foreignObject><iframe src=\"https://example.org\">\
+                       </iframe></foreignObject></svg>";
+
+/// Nothing of `HOSTILE` reached the page.
+fn assert_no_hostile_markup(html: &str) {
+    for hostile in ["<script>alert", "onload=", "<iframe", "foreignObject"] {
+        assert!(!html.contains(hostile), "{hostile} in the report");
+    }
+}
+
+#[test]
+fn n5_only_the_svg_files_run_json_lists_unchanged_are_inlined() {
+    let dir = simulate_folder("hostile", serde_json::json!({"model": "2002834"}));
+    std::fs::write(dir.join("load_zone.svg"), PLOT).unwrap();
+    let mut manifest = RunManifest::read(&dir).unwrap().unwrap();
+    manifest.files = Some(rolldyn_report::plot_checksums(&dir).unwrap());
+    manifest.write(&dir).unwrap();
+    std::fs::write(dir.join("cage_slip.svg"), HOSTILE).unwrap();
+    std::fs::write(dir.join("added.svg"), HOSTILE).unwrap();
+    let written = report_folder(&dir).unwrap();
+    let html = std::fs::read_to_string(&written.report).unwrap();
+    assert_no_hostile_markup(&html);
+    assert!(
+        html.contains("<svg width=\"10\""),
+        "the listed plot is shown"
+    );
+    let has = |text: &str| written.warnings.iter().any(|w| w.contains(text));
+    assert!(
+        has("plot cage_slip.svg not shown: changed since the run wrote it"),
+        "{:?}",
+        written.warnings
+    );
+    assert!(
+        has("plot added.svg not shown: not written by the run"),
+        "{:?}",
+        written.warnings
+    );
+}
+
+#[test]
+fn n5_without_a_manifest_only_plain_drawings_are_inlined() {
+    let dir = scratch("hostile-old");
+    std::fs::write(dir.join("periods.csv"), "period,time_h\n1,1905\n").unwrap();
+    std::fs::write(dir.join("rates.svg"), PLOT).unwrap();
+    std::fs::write(dir.join("hostile.svg"), HOSTILE).unwrap();
+    let written = report_folder(&dir).unwrap();
+    let html = std::fs::read_to_string(&written.report).unwrap();
+    assert_no_hostile_markup(&html);
+    assert!(
+        html.contains("<svg width=\"10\""),
+        "the plain plot is shown"
+    );
+    assert!(
+        written
+            .warnings
+            .iter()
+            .any(|w| w.contains("plot hostile.svg not shown: not a plain drawing")),
+        "{:?}",
+        written.warnings
+    );
 }

@@ -65,12 +65,16 @@ impl From<std::io::Error> for Failure {
 }
 
 impl From<rolldyn_report::ReportError> for Failure {
-    /// A missing or foreign folder, or a damaged `run.json`, is bad input.
+    /// A missing or foreign folder, a damaged `run.json`, or a `run.json` or `report.html`
+    /// that is not a regular file is bad input.
     fn from(e: rolldyn_report::ReportError) -> Self {
+        use rolldyn_output::ReplaceError;
         use rolldyn_report::ReportError::*;
         match e {
-            Folder { .. } | Manifest { .. } => Self::Input(e.to_string()),
-            Io { .. } => Self::Run(e.to_string()),
+            Folder { .. } | Manifest { .. } | Replace(ReplaceError::NotRegularFile { .. }) => {
+                Self::Input(e.to_string())
+            }
+            Io { .. } | Replace(ReplaceError::Io { .. }) => Self::Run(e.to_string()),
         }
     }
 }

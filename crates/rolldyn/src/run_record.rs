@@ -58,6 +58,7 @@ pub fn finish_out_folder(
         model_file,
         model_text,
         summary,
+        files: Some(rolldyn_report::plot_checksums(dir)?),
     };
     manifest.write(dir)?;
     if report {
