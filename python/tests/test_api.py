@@ -68,8 +68,8 @@ def test_skid_equals_the_command_line():
 
 
 def test_contact_equals_the_command_line_and_gives_the_pressure_map(tmp_path):
-    contact = rolldyn.contact(rolldyn.load_model(MODEL), load="1167N", tilt="4arcmin", cells="150x3")
-    expected = cli_json("contact", MODEL, "--load", "1167N", "--tilt", "4arcmin", "--cells", "150x3",
+    contact = rolldyn.contact(rolldyn.load_model(MODEL), load="1167N", tilt="4arcmin", cells="350x9")
+    expected = cli_json("contact", MODEL, "--load", "1167N", "--tilt", "4arcmin", "--cells", "350x9",
                         "--out", str(tmp_path))
     summary = {k: v for k, v in contact.summary.items() if k != "output_folder"}
     assert without_wall_times(summary) == without_wall_times(

@@ -30,6 +30,11 @@ def test_a_float_is_si_and_a_string_carries_its_unit():
     assert with_units.central_film_m == with_units.summary["central_film_m"] > 0
 
 
+def test_n6_a_grid_that_cannot_resolve_the_contact_is_refused_as_on_the_command_line():
+    with pytest.raises(rolldyn.InputError, match="--cells 1x1: the grid cannot resolve"):
+        rolldyn.contact(MODEL, load="1000N", cells="1x1")
+
+
 def test_a_result_shows_itself():
     result = rolldyn.film(load="1 kN", rolling_speed="10 m/s")
     assert "central film" in str(result)
@@ -43,7 +48,7 @@ def test_a_result_shows_itself():
     "call, table",
     [
         (lambda: rolldyn.simulate(duration="0.5rev", tables=True), "bearing"),
-        (lambda: rolldyn.contact(load="1167N", cells="60x3"), "pressure_map"),
+        (lambda: rolldyn.contact(load="1167N"), "pressure_map"),
         (lambda: rolldyn.skid(MODEL, radial_load="200N..600N:200N"), "skid_sweep"),
         (lambda: rolldyn.oils(), "oils"),
         (lambda: rolldyn.traction(max_pressure="1GPa", rolling_speed="2.5m/s"), "traction"),

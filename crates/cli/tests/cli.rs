@@ -6,7 +6,7 @@ use common::{example, json, rolldyn};
 
 #[test]
 fn contact_json_has_the_documented_fields() {
-    for cells in ["150x3", "350x9"] {
+    for cells in ["350x9", "1000x30"] {
         let out = rolldyn(&[
             "contact",
             &example("contact/32206-crowned-3.2um.toml"),

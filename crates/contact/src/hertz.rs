@@ -104,6 +104,12 @@ pub enum LineApproachModel {
     PalmgrenScaled,
 }
 
+/// The largest maximum Hertz pressure an elastic contact of bearing materials can carry, Pa:
+/// bearing steels yield near 4 GPa and ceramics fail below 10 GPa, so beyond this the elastic
+/// contact does not apply. Every load of a command is refused above it (docs/model-format.md,
+/// "Plausibility bounds").
+pub const MAX_CREDIBLE_PRESSURE_PA: f64 = 10e9;
+
 /// Reference reduced modulus of Palmgren's steel law: `207 GPa / (1 − 0.3²)`.
 pub const PALMGREN_E_REDUCED_REF: f64 = 207.0e9 / (1.0 - 0.09);
 

@@ -229,6 +229,18 @@ impl RollerRacewayContact {
         }
     }
 
+    /// The cell size (along, across) [m] of an `nx × ny` Boussinesq grid: `nx` cells along the
+    /// whole roller length, square cells unless `width` [m] (total transverse extent) is given.
+    pub fn cell_size(&self, nx: usize, ny: usize, width: Option<f64>) -> (f64, f64) {
+        let dx = self.roller_length / nx.max(1) as f64;
+        (dx, width.map_or(dx, |w| w / ny.max(1) as f64))
+    }
+
+    /// The roller length [m], the extent of a Boussinesq grid along the roller.
+    pub fn roller_length(&self) -> f64 {
+        self.roller_length
+    }
+
     /// Boussinesq solution for `load` [N] on `nx × ny` cells: `nx` along the whole roller
     /// length, square cells unless `width` [m] (total transverse extent) is given (SPEC F-12).
     pub fn boussinesq(
@@ -240,8 +252,7 @@ impl RollerRacewayContact {
         options: BoussinesqOptions,
     ) -> Result<ContactReport, RollerContactError> {
         let start = Instant::now();
-        let dx = self.roller_length / nx.max(1) as f64;
-        let dy = width.map_or(dx, |w| w / ny.max(1) as f64);
+        let (dx, dy) = self.cell_size(nx, ny, width);
         let grid = Grid::centered(nx, ny, dx, dy)?;
         let gap = grid.eval(|x, y| self.gap(x, y));
         let mut solver = BoussinesqSolver::new(grid, self.compliance, options)?;

@@ -18,6 +18,15 @@ pub const MAX_ROUGHNESS_PER_ROLLER_DIAMETER: f64 = 0.01;
 pub const DENSITY_RANGE_KG_M3: (f64, f64) = (100.0, 25_000.0);
 /// Young's moduli of engineering solids, Pa (soft polymer … diamond).
 pub const YOUNGS_MODULUS_RANGE_PA: (f64, f64) = (1e7, 1.2e12);
+/// Largest outside diameter, m: the largest rolling bearings (tunnel-boring machines, wind
+/// turbines) are ≈ 8 m across.
+pub const MAX_OUTSIDE_DIAMETER_M: f64 = 10.0;
+/// A ring wall (raceway to bore or outside) may be at most this many roller diameters thick:
+/// catalogue rings are ≈ 0.3–1.5 D_w; a thicker wall is a housing, not a ring.
+pub const MAX_WALL_PER_ROLLER_DIAMETER: f64 = 10.0;
+/// The radial clearance may be at most this fraction of the pitch diameter: the largest
+/// ISO 5753 group (C5) stays below ≈ 0.2 % of the bore.
+pub const MAX_CLEARANCE_PER_PITCH_DIAMETER: f64 = 0.01;
 /// A given mass may differ from the mass computed from the dimensions by at most this factor.
 pub const MAX_MASS_FACTOR: f64 = 10.0;
 
@@ -90,6 +99,37 @@ impl CylindricalRollerBearing {
     /// The plausibility bounds of a bearing that passed its consistency checks.
     pub(crate) fn validate_plausibility(&self) -> Result<(), GeometryError> {
         let outside = self.outer_ring.body_diameter;
+        at_most(
+            "outer_ring.outside_diameter",
+            outside,
+            MAX_OUTSIDE_DIAMETER_M,
+            "10 m (the largest rolling bearings are ≈ 8 m)",
+        )?;
+        let wall = MAX_WALL_PER_ROLLER_DIAMETER * self.roller.diameter;
+        at_most(
+            "outer_ring.outside_diameter",
+            self.outer_ring.wall_thickness(),
+            wall,
+            "a ring wall of 10 roller diameters",
+        )?;
+        at_most(
+            "inner_ring.bore_diameter",
+            self.inner_ring.wall_thickness(),
+            wall,
+            "a ring wall of 10 roller diameters",
+        )?;
+        at_most(
+            "clearance.radial",
+            self.clearance.radial.abs(),
+            MAX_CLEARANCE_PER_PITCH_DIAMETER * self.pitch_diameter(),
+            "1 % of the pitch diameter (ISO 5753's largest group C5 is below 0.2 % of the bore)",
+        )?;
+        at_most(
+            "roller.edge_break",
+            self.roller.edge_break,
+            0.5 * self.roller.diameter,
+            "the roller's radius",
+        )?;
         let ring_width = self.inner_ring.width.max(self.outer_ring.width);
         for (key, ring, inner) in [
             ("inner_ring", &self.inner_ring, true),
@@ -151,6 +191,13 @@ impl CylindricalRollerBearing {
             } else {
                 rib.diameter <= self.inner_ring.raceway_diameter
             };
+            let height = 0.5 * (rib.diameter - ring.raceway_diameter).abs();
+            at_most(
+                &format!("{rib_key}.edge_break"),
+                rib.edge_break,
+                height,
+                "the rib's height above the raceway",
+            )?;
             if crosses {
                 return Err(GeometryError::new(
                     format!("{rib_key}.diameter"),

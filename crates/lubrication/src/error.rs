@@ -20,6 +20,17 @@ pub enum LubError {
     },
     /// An input value outside its physical domain.
     InvalidInput(String),
+    /// A property of an oil outside its physical or plausible range
+    /// ([`crate::plausible`]); `key` as in [`crate::OilProperty::key`] (or `temperature_range`,
+    /// `roelands_z`).
+    Property {
+        /// oil name
+        oil: String,
+        /// the property at fault
+        key: &'static str,
+        /// why
+        reason: String,
+    },
 }
 
 impl fmt::Display for LubError {
@@ -35,6 +46,7 @@ impl fmt::Display for LubError {
                 "lubricant '{oil}' has no {property}: the seeds do not give it; supply it in a user oil file"
             ),
             LubError::InvalidInput(s) => write!(f, "invalid input: {s}"),
+            LubError::Property { oil, key, reason } => write!(f, "oil '{oil}': {key} {reason}"),
         }
     }
 }

@@ -53,6 +53,7 @@ pub mod grades;
 pub mod library;
 pub mod lubricant;
 pub mod mixture;
+pub mod plausible;
 pub mod provenance;
 pub mod regime;
 pub mod scuffing;

@@ -181,59 +181,68 @@ impl Lubricant {
         }
     }
 
-    /// Checks that the data are physical: an ordered temperature range above 0 K, every defined
-    /// property finite and positive at both ends and the middle of the range (κ and β0 may be
-    /// zero), and 0 ≤ Λ_bd < Λ_hd. User oils are checked on load; the built-in library passes.
+    /// Checks that the data are physical and plausible: an ordered temperature range above 0 K,
+    /// every defined property finite and within its [`crate::plausible`] bound at every kelvin
+    /// of the range (κ and β0 may be zero), Z within its bound and 0 ≤ Λ_bd < Λ_hd ≤ 10. The
+    /// error names the property ([`LubError::Property`]). User oils are checked on load; the
+    /// built-in library passes.
     pub fn validate(&self) -> Result<(), LubError> {
-        let bad = |what: String| {
-            Err(LubError::InvalidInput(format!(
-                "oil '{}': {what}",
-                self.name
-            )))
+        use crate::plausible::{self as bound, OilBound};
+        let bad = |key: &'static str, reason: String| {
+            Err(LubError::Property {
+                oil: self.name.clone(),
+                key,
+                reason,
+            })
         };
         let [lo, hi] = self.temperature_range_k;
         if !(lo > 0.0 && hi >= lo && hi.is_finite()) {
-            return bad(format!(
-                "temperature_range_k [{lo}, {hi}] must be ordered kelvin values above 0"
-            ));
+            return bad(
+                "temperature_range",
+                format!("[{lo}, {hi}] K must be ordered kelvin values above 0"),
+            );
         }
-        for t in [lo, 0.5 * (lo + hi), hi] {
+        // β0 derived by a central difference and κ may be zero up to rounding
+        let rounded = |v: f64| if v > -1e-12 { v.max(0.0) } else { v };
+        for t in bound::check_temperatures(lo, hi) {
             let p = self.properties(t);
-            let positive = [
-                ("density", p.density),
-                ("viscosity", p.dynamic_viscosity),
-                ("pressure_viscosity", p.pressure_viscosity),
-                ("shear_modulus", p.shear_modulus),
-                ("eyring_stress", p.eyring_stress),
-                ("thermal_conductivity", p.thermal_conductivity),
+            let at = format!(" at {:.1} °C", t - 273.15);
+            let checked: [(&OilBound, Option<f64>); 8] = [
+                (&bound::DENSITY, p.density),
+                (&bound::VISCOSITY, p.dynamic_viscosity),
+                (&bound::PRESSURE_VISCOSITY, p.pressure_viscosity),
+                (&bound::SHEAR_MODULUS, p.shear_modulus),
+                (&bound::EYRING_STRESS, p.eyring_stress),
+                (&bound::THERMAL_CONDUCTIVITY, p.thermal_conductivity),
+                (&bound::BETA0, p.beta0.map(rounded)),
+                (&bound::KAPPA, p.kappa.map(rounded)),
             ];
-            for (name, value) in positive {
-                if let Some(v) = value
-                    && !(v.is_finite() && v > 0.0)
-                {
-                    return bad(format!(
-                        "{name} is {v} at {:.1} K; it must be finite and positive",
-                        t
-                    ));
-                }
-            }
-            for (name, value) in [("beta0", p.beta0), ("kappa", p.kappa)] {
-                if let Some(v) = value
-                    && (!v.is_finite() || v < -1e-12)
-                {
-                    return bad(format!(
-                        "{name} is {v} at {t:.1} K; it must be finite and not negative"
-                    ));
+            for (limits, value) in checked {
+                if let Some(reason) = value.and_then(|v| limits.violation(v, &at)) {
+                    return bad(limits.key, reason);
                 }
             }
         }
-        if let Some(m) = self.mixed_friction
-            && !(m.lambda_bd >= 0.0 && m.lambda_hd > m.lambda_bd)
+        if let Some(reason) = self
+            .roelands_z
+            .and_then(|z| bound::ROELANDS_Z.violation(z, ""))
         {
-            return bad(format!(
-                "mixed_friction needs 0 ≤ lambda_bd < lambda_hd, got {} and {}",
-                m.lambda_bd, m.lambda_hd
-            ));
+            return bad(bound::ROELANDS_Z.key, reason);
+        }
+        if let Some(m) = self.mixed_friction {
+            let limits = &bound::LAMBDA;
+            if !(m.lambda_bd >= 0.0 && m.lambda_hd > m.lambda_bd) {
+                return bad(
+                    limits.key,
+                    format!(
+                        "needs 0 ≤ lambda_bd < lambda_hd, got {} and {}",
+                        m.lambda_bd, m.lambda_hd
+                    ),
+                );
+            }
+            if let Some(reason) = limits.violation(m.lambda_hd, " (lambda_hd)") {
+                return bad(limits.key, reason);
+            }
         }
         Ok(())
     }

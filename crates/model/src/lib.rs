@@ -287,7 +287,8 @@ fn complete(
     })
 }
 
-/// The speeds of `[operating]` and its speed schedule within [`bounds::check_speed`].
+/// The speeds of `[operating]` and its speed schedule within [`bounds::check_speed`], its
+/// radial loads within [`bounds::check_radial_load`].
 fn check_speeds(
     bearing: &BearingModel,
     operating: &Operating,
@@ -305,6 +306,19 @@ fn check_speeds(
     for (key, speed) in given.into_iter().chain(scheduled) {
         if let Some(w) = speed {
             bounds::check_speed(bearing, key, w)?;
+        }
+    }
+    if let Some(load) = operating.radial_load {
+        bounds::check_radial_load(bearing, "operating.radial_load", load)?;
+    }
+    for (i, load) in schedules.loads.iter().enumerate() {
+        bounds::check_radial_load(
+            bearing,
+            &format!("operating.loads[{i}].magnitude"),
+            load.magnitude,
+        )?;
+        if let Some((after, _)) = load.step {
+            bounds::check_radial_load(bearing, &format!("operating.loads[{i}].after"), after)?;
         }
     }
     Ok(())

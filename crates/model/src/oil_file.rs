@@ -9,7 +9,9 @@ use crate::schema::ViscosityPoints;
 use crate::{Document, read};
 use rolldyn_lubrication::lubricant::MixedLimitsData;
 use rolldyn_lubrication::viscosity::walther_from_two_points;
-use rolldyn_lubrication::{Lubricant, OilProperty, PropertySource, TempLaw, ViscosityLaw};
+use rolldyn_lubrication::{
+    LubError, Lubricant, OilProperty, PropertySource, TempLaw, ViscosityLaw,
+};
 use rolldyn_units::{
     Density, Dim, DynamicViscosity, KinematicViscosity, PerPressure, PerTemperature, Pressure,
     Quantity, Temperature, ThermalConductivity,
@@ -268,9 +270,29 @@ pub fn parse_oil_file(text: &str, file: &str) -> Result<Lubricant, ModelError> {
         missing: f.missing.clone(),
         provenance: provenance(f).map_err(|(key, reason)| document.error(&key, reason))?,
     };
-    oil.validate()
-        .map_err(|e| document.error("", e.to_string()))?;
+    for t in &oil.temperature_range_k {
+        crate::bounds::check_temperature("temperature_range", *t)
+            .map_err(|e| document.error(&e.key, e.reason))?;
+    }
+    oil.validate().map_err(|e| match e {
+        LubError::Property { key, reason, .. } => {
+            document.error(file_key(f, key), format!("{key} {reason}"))
+        }
+        other => document.error("", other.to_string()),
+    })?;
     Ok(oil)
+}
+
+/// The oil-file key that gives property `key` of [`Lubricant::validate`]'s errors.
+fn file_key(f: &OilFile, key: &'static str) -> &'static str {
+    match key {
+        "viscosity" if f.dynamic_viscosity.is_some() => "dynamic_viscosity",
+        "viscosity" => "kinematic_viscosity",
+        // β0 is derived from the viscosity law when not given
+        "beta0" if f.beta0.is_none() => file_key(f, "viscosity"),
+        "kappa" => "kappa_per_k_pa",
+        key => key,
+    }
 }
 
 /// ASTM D341 through the two points of `kinematic_viscosity`.
@@ -376,6 +398,46 @@ mod tests {
         assert!(e.contains("estimated.viscosity_index"), "{e}");
         let text = format!("{OIL}\nviscosity_index = 95");
         assert!(parse_oil_file(&text, "my-oil.toml").is_err());
+    }
+
+    #[test]
+    fn n12_implausible_values_name_their_line_and_key() {
+        let cases = [
+            (
+                "shear_modulus = \"1 GPa\"",
+                "shear_modulus = \"1e12 GPa\"",
+                "shear_modulus",
+            ),
+            (
+                "thermal_conductivity = 0.13",
+                "thermal_conductivity = 1e9",
+                "thermal_conductivity",
+            ),
+            ("coeffs = [870.0, -0.6]", "coeffs = [9e11, -0.6]", "density"),
+            (
+                "kappa_per_k_pa = 1.0e-10",
+                "kappa_per_k_pa = 1.0",
+                "kappa_per_k_pa",
+            ),
+            ("\"20 1/GPa\"", "\"2e6 1/GPa\"", "pressure_viscosity"),
+            (
+                "[\"20 C\", \"120 C\"]",
+                "[\"20 C\", \"1e6 C\"]",
+                "temperature_range",
+            ),
+        ];
+        for (from, to, key) in cases {
+            let text = OIL.replace(from, to);
+            assert_ne!(text, OIL, "{from}");
+            let line = 1 + text.lines().position(|l| l.contains(to)).unwrap();
+            let e = parse_oil_file(&text, "my-oil.toml")
+                .unwrap_err()
+                .to_string();
+            assert!(
+                e.starts_with(&format!("my-oil.toml:{line}:")) && e.contains(key),
+                "{to}: {e}"
+            );
+        }
     }
 
     #[test]

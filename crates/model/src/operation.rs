@@ -371,6 +371,35 @@ pub(crate) fn startup(section: Option<&StartupSection>) -> Result<Option<Startup
     }))
 }
 
+/// The `[lubricant]` key that overrides property `key` of [`Lubricant::validate`]'s errors, or
+/// the key naming the oil when the table does not override it.
+fn section_key(s: &LubricantSection, key: &str) -> &'static str {
+    let (given, section_key) = match key {
+        "density" => (s.density.is_some(), "lubricant.density"),
+        "viscosity" | "beta0" => (
+            s.kinematic_viscosity.is_some(),
+            "lubricant.kinematic_viscosity",
+        ),
+        "pressure_viscosity" => (
+            s.pressure_viscosity.is_some(),
+            "lubricant.pressure_viscosity",
+        ),
+        "shear_modulus" => (s.shear_modulus.is_some(), "lubricant.shear_modulus"),
+        "eyring_stress" => (s.eyring_stress.is_some(), "lubricant.eyring_stress"),
+        "thermal_conductivity" => (
+            s.thermal_conductivity.is_some(),
+            "lubricant.thermal_conductivity",
+        ),
+        "mixed_friction" => (s.lambda_boundary.is_some(), "lubricant.lambda_boundary"),
+        _ => (false, ""),
+    };
+    match (given, s.file.is_some()) {
+        (true, _) => section_key,
+        (false, true) => "lubricant.file",
+        (false, false) => "lubricant.oil",
+    }
+}
+
 pub(crate) fn lubrication(
     section: Option<&LubricantSection>,
     model_file: &str,
@@ -440,8 +469,12 @@ pub(crate) fn lubrication(
             ));
         }
     }
-    oil.validate()
-        .map_err(|e| GeometryError::new("lubricant", e.to_string()))?;
+    oil.validate().map_err(|e| match e {
+        LubError::Property { key, reason, .. } => {
+            GeometryError::new(section_key(s, key), format!("{key} {reason}"))
+        }
+        other => GeometryError::new("lubricant", other.to_string()),
+    })?;
     let rheology = match s.rheology.unwrap_or(RheologyName::ViscoElastic) {
         RheologyName::ViscoElastic => Rheology::ViscoElastic,
         RheologyName::Isothermal => Rheology::Isothermal,

@@ -15,6 +15,12 @@ pub const RACEWAY_WEAR_HEADER: &str = "axial_mm,angle_deg,depth_um";
 /// How far a row's angle may lie from its bin centre, degrees (hand-written files round).
 const ANGLE_TOLERANCE_DEG: f64 = 1e-3;
 
+/// A wear depth may be at most this fraction of the roller diameter: a raceway worn deeper than
+/// 5 % of D_w (hundreds of µm on any bearing, where service wear limits are tens of µm and the
+/// radial clearance is ≈ 0.1–0.5 % of D_w) no longer guides its rollers — not the wear map of a
+/// working bearing.
+pub const MAX_WEAR_DEPTH_PER_ROLLER_DIAMETER: f64 = 0.05;
+
 const M_PER_MM: f64 = 1e-3;
 const M_PER_UM: f64 = 1e-6;
 
@@ -32,8 +38,9 @@ pub fn write_raceway_wear_csv(map: &RacewayWearMap, mut w: impl Write) -> io::Re
     Ok(())
 }
 
-/// Reads a raceway wear CSV text; the error names the 1-based line and the reason.
-pub fn read_raceway_wear_csv(text: &str) -> Result<RacewayWearMap, String> {
+/// Reads a raceway wear CSV text whose depths are at most `max_depth_m` (see
+/// [`MAX_WEAR_DEPTH_PER_ROLLER_DIAMETER`]); the error names the 1-based line and the reason.
+pub fn read_raceway_wear_csv(text: &str, max_depth_m: f64) -> Result<RacewayWearMap, String> {
     let mut lines = text
         .lines()
         .enumerate()
@@ -92,6 +99,13 @@ pub fn read_raceway_wear_csv(text: &str) -> Result<RacewayWearMap, String> {
                 "line {n}: depth_um {depth_um} must not be negative"
             ));
         }
+        if depth_um * M_PER_UM > max_depth_m {
+            return Err(format!(
+                "line {n}: depth_um {depth_um:.4e} is implausible: deeper than {:.1} µm, 5 % of \
+                 the roller diameter (not the wear of a working bearing)",
+                max_depth_m / M_PER_UM
+            ));
+        }
         depth.push(depth_um * M_PER_UM);
     }
     RacewayWearMap::new(axial, bins, depth).map_err(|e| e.reason)
@@ -117,6 +131,9 @@ pub(crate) fn attach(
     file: &ModelFile,
     model_file: &str,
 ) -> Result<(), GeometryError> {
+    let max_depth_m = bearing
+        .roller()
+        .map_or(0.0, |r| MAX_WEAR_DEPTH_PER_ROLLER_DIAMETER * r.diameter);
     let mut rings: Vec<(&mut Ring, Option<&RingSection>, &str)> = match bearing {
         BearingModel::Cylindrical(b) => vec![
             (&mut b.inner_ring, file.inner_ring.as_ref(), "inner_ring"),
@@ -134,15 +151,20 @@ pub(crate) fn attach(
     };
     for (ring, section, key) in &mut rings {
         if let Some(wear) = section.and_then(|s| s.raceway_wear.as_ref()) {
-            ring.raceway_wear = Some(load(&wear.file, model_file, key)?);
+            ring.raceway_wear = Some(load(&wear.file, model_file, key, max_depth_m)?);
         }
     }
     Ok(())
 }
 
-/// The map in `csv_file` (relative to the directory of `model_file`); errors at
-/// `<key>.raceway_wear.file` name the CSV file.
-fn load(csv_file: &str, model_file: &str, key: &str) -> Result<RacewayWearMap, GeometryError> {
+/// The map in `csv_file` (relative to the directory of `model_file`), depths at most
+/// `max_depth_m`; errors at `<key>.raceway_wear.file` name the CSV file.
+fn load(
+    csv_file: &str,
+    model_file: &str,
+    key: &str,
+    max_depth_m: f64,
+) -> Result<RacewayWearMap, GeometryError> {
     let path = Path::new(model_file)
         .parent()
         .unwrap_or(Path::new("."))
@@ -154,7 +176,7 @@ fn load(csv_file: &str, model_file: &str, key: &str) -> Result<RacewayWearMap, G
         )
     };
     let text = crate::read_input_file(&path).map_err(fail)?;
-    read_raceway_wear_csv(&text).map_err(fail)
+    read_raceway_wear_csv(&text, max_depth_m).map_err(fail)
 }
 
 #[cfg(test)]
@@ -175,7 +197,7 @@ mod tests {
         let map = two_by_three();
         let mut csv = Vec::new();
         write_raceway_wear_csv(&map, &mut csv).unwrap();
-        let back = read_raceway_wear_csv(std::str::from_utf8(&csv).unwrap()).unwrap();
+        let back = read_raceway_wear_csv(std::str::from_utf8(&csv).unwrap(), 1e-3).unwrap();
         assert_eq!(back.axial_m(), map.axial_m());
         assert_eq!(back.angle_bins(), 3);
         for (a, b) in back.depth_m().iter().zip(map.depth_m()) {
@@ -198,9 +220,13 @@ mod tests {
                 "line 3: axial_mm must",
             ),
             (&*format!("{head}\n"), "no data rows"),
+            (
+                &*format!("{head}\n0,180,1e308\n"),
+                "line 2: depth_um 1.0000e308 is implausible",
+            ),
         ];
         for (text, expected) in cases {
-            let e = read_raceway_wear_csv(text).unwrap_err();
+            let e = read_raceway_wear_csv(text, 1e-3).unwrap_err();
             assert!(e.starts_with(expected), "{e} ≠ {expected}…");
         }
     }

@@ -9,8 +9,9 @@ use rolldyn_contact::boussinesq::BoussinesqOptions;
 use rolldyn_contact::roller_raceway::{
     ContactMethod, ContactReport, PressureMap, RollerRacewayContact, SliceLawChoice,
 };
+use rolldyn_model::bounds::pressure_beyond_materials;
 use rolldyn_plot::{Field, Labels, MapLabels, Series, line_plot, map_plot};
-use rolldyn_units::{Angle, Force, Length, Quantity};
+use rolldyn_units::{Angle, Force, Length, Quantity, format_number};
 use serde::de::{self, Deserializer};
 use serde::{Deserialize, Serialize};
 use std::fmt;
@@ -56,10 +57,12 @@ pub struct ContactRequest {
     /// Roller tilt relative to the raceway, added to the model's misalignment.
     #[serde(default = "no_tilt")]
     pub tilt: Quantity<Angle>,
-    /// Boussinesq grid: cells along the roller × across (`"350x9"` or `[350, 9]`).
-    #[serde(default = "default_cells", deserialize_with = "deserialize_cells")]
-    pub cells: (usize, usize),
-    /// Total transverse extent of the Boussinesq grid (default: square cells, flag F-12).
+    /// Boussinesq grid: cells along the roller × across (`"350x9"` or `[350, 9]`); default
+    /// the grid [`grid`] derives from the Hertz contact width.
+    #[serde(default, deserialize_with = "deserialize_cells")]
+    pub cells: Option<(usize, usize)>,
+    /// Total transverse extent of the Boussinesq grid (default: square cells with `cells`,
+    /// flag F-12, else 1.5 × the Hertz contact width).
     #[serde(default)]
     pub width: Option<Quantity<Length>>,
     #[serde(default)]
@@ -78,10 +81,6 @@ fn no_tilt() -> Quantity<Angle> {
     Quantity::from_si(0.0)
 }
 
-fn default_cells() -> (usize, usize) {
-    (150, 3)
-}
-
 /// A grid size `NXxNY` (`350x9`), each count from 1 to 8192.
 pub fn parse_cells(text: &str) -> Result<(usize, usize), String> {
     let (nx, ny) = text
@@ -98,7 +97,7 @@ pub fn parse_cells(text: &str) -> Result<(usize, usize), String> {
 }
 
 /// A grid size as text (`"350x9"`) or a pair (`[350, 9]`).
-fn deserialize_cells<'de, D: Deserializer<'de>>(d: D) -> Result<(usize, usize), D::Error> {
+fn deserialize_cells<'de, D: Deserializer<'de>>(d: D) -> Result<Option<(usize, usize)>, D::Error> {
     #[derive(Deserialize)]
     #[serde(untagged)]
     enum Given {
@@ -109,7 +108,7 @@ fn deserialize_cells<'de, D: Deserializer<'de>>(d: D) -> Result<(usize, usize), 
         Given::Pair(nx, ny) => format!("{nx}x{ny}"),
         Given::Text(text) => text,
     };
-    parse_cells(&text).map_err(de::Error::custom)
+    parse_cells(&text).map(Some).map_err(de::Error::custom)
 }
 
 /// The contact's answer (SI units), the `--json` answer of `rolldyn contact`.
@@ -141,14 +140,14 @@ pub struct ContactResult {
 }
 
 impl ContactResult {
-    /// The answer for `report` on the model named `model`, solved on `cells` (Boussinesq).
-    pub fn new(model: &str, report: ContactReport, cells: Option<(usize, usize)>) -> Self {
+    /// The answer for `report` on the model named `model` (with its Boussinesq grid).
+    pub fn new(model: &str, report: ContactReport) -> Self {
         Self {
             model: model.to_string(),
             method: report.method.name(),
             load_n: report.load_n,
             tilt_rad: report.tilt_rad,
-            cells: cells.map(|(a, b)| [a, b]),
+            cells: report.map.as_ref().map(|m| [m.nx, m.ny]),
             approach_m: report.approach_m,
             max_pressure_pa: report.max_pressure_pa,
             mid_pressure_pa: report.mid_pressure_pa,
@@ -178,12 +177,8 @@ impl ContactResult {
 }
 
 /// The answer for `report` (a copy), as [`ContactResult::new`].
-pub fn to_json(
-    model: &str,
-    report: &ContactReport,
-    cells: Option<(usize, usize)>,
-) -> ContactResult {
-    ContactResult::new(model, report.clone(), cells)
+pub fn to_json(model: &str, report: &ContactReport) -> ContactResult {
+    ContactResult::new(model, report.clone())
 }
 
 /// The cells of a pressure map, x fastest: (x [m], y [m], p [Pa]) at the cell centres.
@@ -287,32 +282,102 @@ impl fmt::Display for ContactResult {
     }
 }
 
-/// A maximum Hertz pressure above this is beyond the strength of any bearing material (bearing
-/// steels yield near 4 GPa, ceramics fail below 10 GPa): the elastic contact does not apply, Pa.
-pub const MAX_CREDIBLE_PRESSURE_PA: f64 = 10e9;
+/// The fewest Boussinesq cells across the Hertz contact width 2b of a given grid. The
+/// convergence study of docs/theory.md §2.6 (2002834 at 200, 1000 and 5000 N): with 4 cells
+/// across and a grid 1.25 × 2b wide p_max and the mid pressure are within 1 % of a 16-cell
+/// grid; with 2 cells they are off by up to 17 %, with one cell of the 1x1 grid by 99 %.
+pub const MIN_CELLS_ACROSS_CONTACT: f64 = 4.0;
+/// The narrowest given grid, in Hertz contact widths 2b: narrower grids squeeze the contact
+/// (0.8 × 2b: +59 % on p_max); 1.1 keeps the seed 004 grid 350x9 of examples/contact.
+pub const MIN_GRID_WIDTH_PER_CONTACT_WIDTH: f64 = 1.1;
+/// The grid used when none is given: this many cells across 2b over
+/// [`DEFAULT_GRID_WIDTH_PER_CONTACT_WIDTH`] × 2b, and [`DEFAULT_CELLS_ALONG`] cells along the
+/// roller (within 1 % of the 16-cell grid in the study).
+pub const DEFAULT_CELLS_ACROSS_CONTACT: f64 = 6.0;
+/// The width of the default grid, in Hertz contact widths 2b.
+pub const DEFAULT_GRID_WIDTH_PER_CONTACT_WIDTH: f64 = 1.5;
+/// The cells along the roller of the default grid.
+pub const DEFAULT_CELLS_ALONG: usize = 150;
 
-/// Solves one roller–raceway contact by `method`; a load whose Hertz pressure exceeds
-/// [`MAX_CREDIBLE_PRESSURE_PA`] is refused as bad input.
+/// The Boussinesq grid (cells, total transverse width [m]) for `load` [N]: a given grid
+/// checked to resolve the contact, else the default grid derived from the Hertz contact width
+/// 2b. A given grid with fewer than [`MIN_CELLS_ACROSS_CONTACT`] cells across 2b or narrower
+/// than [`MIN_GRID_WIDTH_PER_CONTACT_WIDTH`] × 2b is refused: the message names `--cells`
+/// (and `--width`) with the smallest grid that would do.
+pub fn grid(
+    contact: &RollerRacewayContact,
+    load: f64,
+    cells: Option<(usize, usize)>,
+    width: Option<f64>,
+) -> Result<((usize, usize), Option<f64>), Failure> {
+    let contact_width = 2.0 * contact.hertz(load).max_half_width_m;
+    let Some(cells) = cells else {
+        let width = width.unwrap_or(DEFAULT_GRID_WIDTH_PER_CONTACT_WIDTH * contact_width);
+        let across = (DEFAULT_CELLS_ACROSS_CONTACT * width / contact_width).ceil();
+        return Ok((
+            (DEFAULT_CELLS_ALONG, across.min(8192.0) as usize),
+            Some(width),
+        ));
+    };
+    let (_, dy) = contact.cell_size(cells.0, cells.1, width);
+    let across = contact_width / dy;
+    let grid_width = dy * cells.1 as f64;
+    let narrowest = MIN_GRID_WIDTH_PER_CONTACT_WIDTH * contact_width;
+    if across >= MIN_CELLS_ACROSS_CONTACT && grid_width >= narrowest {
+        return Ok((cells, width));
+    }
+    let minimum = match width {
+        None => {
+            let along = (MIN_CELLS_ACROSS_CONTACT * contact.roller_length() / contact_width).ceil();
+            let dy = contact.roller_length() / along;
+            format!("--cells {along}x{}", (narrowest / dy).ceil())
+        }
+        Some(w) => {
+            let w = w.max(narrowest);
+            format!(
+                "--width {:.4}mm --cells {}x{}",
+                w * 1e3,
+                cells.0,
+                (MIN_CELLS_ACROSS_CONTACT * w / contact_width).ceil()
+            )
+        }
+    };
+    Err(Failure::Input(format!(
+        "--cells {}x{}: the grid cannot resolve the contact of {} N: {:.2} cells across the \
+         Hertz contact width 2b = {:.4} mm on a grid {:.4} mm wide; it needs at least \
+         {MIN_CELLS_ACROSS_CONTACT} cells across 2b and a grid {MIN_GRID_WIDTH_PER_CONTACT_WIDTH} \
+         × 2b wide ({minimum}), or leave --cells out for a grid derived from 2b",
+        cells.0,
+        cells.1,
+        format_number(load),
+        across,
+        contact_width * 1e3,
+        grid_width * 1e3
+    )))
+}
+
+/// Solves one roller–raceway contact by `method` (Boussinesq on `cells` over `width`, see
+/// [`grid`]); a load whose Hertz pressure exceeds
+/// [`rolldyn_contact::hertz::MAX_CREDIBLE_PRESSURE_PA`] and a given grid that cannot resolve
+/// the contact are refused as bad input.
 pub fn solve(
     contact: &RollerRacewayContact,
     method: Method,
     load: f64,
-    cells: (usize, usize),
+    cells: Option<(usize, usize)>,
     width: Option<f64>,
     law: LawName,
 ) -> Result<ContactReport, Failure> {
     if !(load > 0.0) {
         return Err(Failure::Input(format!(
-            "--load must be positive, got {load} N"
+            "--load must be positive, got {} N",
+            format_number(load)
         )));
     }
-    let hertz_pressure = contact.hertz(load).max_pressure_pa;
-    if !(hertz_pressure <= MAX_CREDIBLE_PRESSURE_PA) {
+    if let Some(reason) = pressure_beyond_materials(contact.hertz(load).max_pressure_pa) {
         return Err(Failure::Input(format!(
-            "--load {load:e} N gives a Hertz pressure of {:.3e} GPa, beyond any bearing \
-             material ({} GPa): the elastic contact model does not apply",
-            hertz_pressure * 1e-9,
-            MAX_CREDIBLE_PRESSURE_PA * 1e-9
+            "--load {} N gives {reason}",
+            format_number(load)
         )));
     }
     let law = match law {
@@ -321,6 +386,7 @@ pub fn solve(
     };
     let report = match method {
         Method::Boussinesq => {
+            let (cells, width) = grid(contact, load, cells, width)?;
             contact.boussinesq(load, cells.0, cells.1, width, BoussinesqOptions::default())
         }
         Method::Slices => contact.slices(load, law),
@@ -353,8 +419,7 @@ impl Analysis for Contact {
             request.width.map(|w| w.si()),
             request.slice_law,
         )?;
-        let cells = (report.method == ContactMethod::Boussinesq).then_some(request.cells);
-        let result = ContactResult::new(model.name(), report, cells);
+        let result = ContactResult::new(model.name(), report);
         if let Some(dir) = &request.out {
             write_outputs(&out_dir(dir)?, &result)?;
         }

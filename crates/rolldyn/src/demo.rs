@@ -22,7 +22,6 @@ use serde::{Deserialize, Serialize};
 use std::fmt;
 
 const TILTS_ARCMIN: [f64; 3] = [0.0, 4.0, 8.0];
-const CELLS: (usize, usize) = (150, 9);
 
 /// How long the demo's dynamics run.
 #[derive(Clone, Debug, Deserialize)]
@@ -126,8 +125,7 @@ impl Analysis for Demo {
 
         let roller_load = skid.max_roller_load_n.max(1.0);
         text.push(format!(
-            "\nInner-raceway contact of the most loaded roller ({roller_load:.0} N), Boussinesq grid {}×{} over the roller length × 0.4 mm:",
-            CELLS.0, CELLS.1
+            "\nInner-raceway contact of the most loaded roller ({roller_load:.0} N), Boussinesq grid of the Hertz contact width:"
         ));
         text.push(format!(
             "  {:>6} {:>10} {:>12} {:>10} {:>10} {:>8} {:>8}",
@@ -138,14 +136,7 @@ impl Analysis for Demo {
             let contact = RollerRacewayContact::from_model(&model.bearing, true, tilt * ARCMIN)
                 .map_err(|e| Failure::Run(e.to_string()))?;
             for method in [Method::Hertz, Method::Slices, Method::Boussinesq] {
-                let r = solve(
-                    &contact,
-                    method,
-                    roller_load,
-                    CELLS,
-                    Some(0.4e-3),
-                    LawName::Seed,
-                )?;
+                let r = solve(&contact, method, roller_load, None, None, LawName::Seed)?;
                 text.push(format!(
                     "  {:>6.0} {:>10} {:>12.3} {:>10.0} {:>10.0} {:>8.3} {:>8.2}",
                     tilt,
@@ -156,7 +147,7 @@ impl Analysis for Demo {
                     r.concentration_factor,
                     r.solve_time_s * 1e3
                 ));
-                contacts.push(to_json(model.bearing.name(), &r, Some(CELLS)));
+                contacts.push(to_json(model.bearing.name(), &r));
             }
         }
         Ok(DemoResult {

@@ -408,6 +408,8 @@ impl Analysis for EhlLine {
             return Err(Failure::Input("--viscosity must be > 0".into()));
         }
         let um = request.rolling_speed.si();
+        rolldyn_model::bounds::check_rolling_speed("--rolling-speed", um)
+            .map_err(|e| Failure::Input(e.to_string()))?;
         let vy = request.squeeze_velocity.si();
         if um == 0.0 && vy == 0.0 {
             return Err(Failure::Input(

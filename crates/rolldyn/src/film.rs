@@ -124,6 +124,9 @@ impl Analysis for Film {
         let t = request.temperature.si();
         request.oil.check_temperature(&oil, t, context)?;
         let (geometry, r, e) = request.rig.geometry()?;
+        rolldyn_model::bounds::check_rolling_speed("--rolling-speed", request.rolling_speed.si())
+            .map_err(|e| Failure::Input(e.to_string()))?;
+        request.rig.check_load("--load", request.load.si())?;
         let roughness = match request.roughness.as_slice() {
             [] => [0.0, 0.0],
             [a] => [a.si(), 0.0],

@@ -4,12 +4,12 @@
 
 use crate::analysis::Context;
 use crate::failure::Failure;
-use rolldyn_contact::hertz::reduced_modulus;
+use rolldyn_contact::hertz::{MAX_CREDIBLE_PRESSURE_PA, reduced_modulus};
 use rolldyn_lubrication::contact_state::{
     circular_load_for_max_pressure, line_load_for_max_pressure,
 };
 use rolldyn_lubrication::{ContactGeometry, Lubricant, lubricant_by_name};
-use rolldyn_units::{Dimensionless, Length, Pressure, Quantity};
+use rolldyn_units::{Dimensionless, Length, Pressure, Quantity, format_number};
 use serde::Deserialize;
 use std::path::PathBuf;
 
@@ -127,6 +127,22 @@ impl Rig {
             ContactKind::Line => ContactGeometry::Line { length_m: l },
         };
         Ok((geometry, r, reduced_modulus(e, nu, e, nu)))
+    }
+
+    /// Refuses a normal load (given at `flag`) whose Hertz pressure on this contact is beyond
+    /// any bearing material ([`MAX_CREDIBLE_PRESSURE_PA`]).
+    pub fn check_load(&self, flag: &str, load: f64) -> Result<(), Failure> {
+        let limit = self.load_for_max_pressure(MAX_CREDIBLE_PRESSURE_PA)?;
+        if load <= limit {
+            return Ok(());
+        }
+        Err(Failure::Input(format!(
+            "{flag} {} N is implausible: above {} N, the load of a Hertz pressure of {} GPa on \
+             this contact, beyond any bearing material (the elastic contact does not apply)",
+            format_number(load),
+            format_number(limit),
+            MAX_CREDIBLE_PRESSURE_PA * 1e-9
+        )))
     }
 
     /// Normal load giving the maximum Hertz pressure `p_max` on this contact.

@@ -268,6 +268,8 @@ impl Analysis for Traction {
                 "--rolling-speed must not be negative".into(),
             ));
         }
+        rolldyn_model::bounds::check_rolling_speed("--rolling-speed", request.rolling_speed.si())
+            .map_err(|e| Failure::Input(e.to_string()))?;
         if request.temperature.is_empty() || request.max_pressure.is_empty() {
             return Err(Failure::Input(
                 "--temperature and --max-pressure need at least one value each".into(),
@@ -288,6 +290,9 @@ impl Analysis for Traction {
             for p in &request.max_pressure {
                 if !(p.si() > 0.0) {
                     return Err(Failure::Input("--max-pressure must be positive".into()));
+                }
+                if let Some(reason) = rolldyn_model::bounds::pressure_beyond_materials(p.si()) {
+                    return Err(Failure::Input(format!("--max-pressure: {reason}")));
                 }
                 cases.push(evaluate(request, &model, t.si(), p.si())?);
             }

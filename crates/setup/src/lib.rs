@@ -36,7 +36,8 @@ impl From<rolldyn_geometry::GeometryError> for SetupError {
 }
 
 /// Command-line values checked against the plausibility bounds of [`rolldyn_model::bounds`]
-/// (a radial load must not be negative), SI; an error names the flag.
+/// (a radial load must not be negative nor press beyond any material), SI; an error names the
+/// flag.
 #[derive(Debug, Clone, Copy, Default)]
 pub struct FlagValues {
     pub speed: Option<f64>,
@@ -47,14 +48,14 @@ pub struct FlagValues {
 
 impl FlagValues {
     pub fn check(&self, model: &rolldyn_model::Model) -> Result<(), SetupError> {
-        use rolldyn_model::bounds::{check_speed, check_temperature};
+        use rolldyn_model::bounds::{check_radial_load, check_speed, check_temperature};
         for (flag, speed) in [("--speed", self.speed), ("--outer-speed", self.outer_speed)] {
             if let Some(w) = speed {
                 check_speed(&model.bearing, flag, w)?;
             }
         }
-        if self.radial_load.is_some_and(|l| l.is_nan() || l < 0.0) {
-            return Err(SetupError("--radial-load: must be ≥ 0".into()));
+        if let Some(load) = self.radial_load {
+            check_radial_load(&model.bearing, "--radial-load", load)?;
         }
         if let Some(t) = self.oil_temperature {
             check_temperature("--oil-temperature", t)?;

@@ -17,10 +17,13 @@ pub struct Args {
     /// Roller tilt relative to the raceway, e.g. `4arcmin` (added to the model's misalignment).
     #[arg(long, allow_hyphen_values = true, default_value = "0")]
     pub tilt: Quantity<Angle>,
-    /// Boussinesq grid: cells along the roller × cells across, e.g. `350x9` (seed 004 Table 2).
-    #[arg(long, default_value = "150x3", value_parser = parse_cells)]
-    pub cells: (usize, usize),
-    /// Total transverse extent of the Boussinesq grid (default: square cells, flag F-12 of docs/theory.md).
+    /// Boussinesq grid: cells along the roller × cells across, e.g. `350x9` (seed 004 Table 2);
+    /// at least 4 cells across the Hertz contact width 2b on a grid 1.1 × 2b wide. Default:
+    /// 150 cells along, 6 across 2b on a grid 1.5 × 2b wide.
+    #[arg(long, value_parser = parse_cells)]
+    pub cells: Option<(usize, usize)>,
+    /// Total transverse extent of the Boussinesq grid (default: square cells with `--cells`,
+    /// flag F-12 of docs/theory.md).
     #[arg(long, allow_hyphen_values = true)]
     pub width: Option<Quantity<Length>>,
     #[arg(long, value_enum, default_value = "boussinesq")]
