@@ -39,6 +39,15 @@ def test_an_unknown_override_key_is_input_error():
     assert "roller.colour" in str(raised.value)
 
 
+def test_n3_an_override_error_names_the_override_key_not_a_base_file_line():
+    with pytest.raises(rolldyn.InputError) as raised:
+        rolldyn.load_model().with_overrides({"cage.width": "1e308 mm"})
+    error = raised.value
+    assert error.key == "cage.width", str(error)
+    assert error.line is None, str(error)
+    assert "implausible" in error.reason
+
+
 def test_a_bad_unit_is_input_error():
     with pytest.raises(rolldyn.InputError, match="speed — 'fast' does not start with a number"):
         rolldyn.simulate(speed="fast")

@@ -230,6 +230,14 @@ pub fn evaluate(
     let mut worst = (0usize, f64::NEG_INFINITY, f64::NEG_INFINITY);
     for (i, (p, h)) in points.iter().zip(&histories).enumerate() {
         let s = signed(h);
+        if let Some(set) = s.iter().position(|x| !x.is_finite()) {
+            return Err(format!(
+                "the stress at {} is not finite in load set {set} (cage angle {}°): the loads \
+                 or the unit stresses overflow; no life is computed from it",
+                p.label(),
+                export.sets.get(set).map_or(f64::NAN, |s| s.cage_angle_deg)
+            ));
+        }
         let (_, d) = damage_of(&s, &sn);
         let (_, e) = damage_of(&s, &extrapolating);
         extrapolated_damage = extrapolated_damage.max(e.damage_per_repeat);

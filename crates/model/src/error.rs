@@ -59,9 +59,47 @@ pub fn shorten_long_words(text: &str) -> String {
 
 impl std::error::Error for ModelError {}
 
-/// One step of a key path.
+/// A TOML input file parsed with its spans, to name the line and column of a key in errors:
+/// the locator of the model, sweep, journal and oil files.
+pub struct LocatedToml<'a> {
+    text: &'a str,
+    file: &'a str,
+    pub(crate) tree: Spanned<DeTable<'a>>,
+}
+
+impl<'a> LocatedToml<'a> {
+    /// Parses `text` (named `file` in errors); a syntax error names its line and column.
+    pub fn parse(text: &'a str, file: &'a str) -> Result<Self, ModelError> {
+        let tree = DeTable::parse(text).map_err(|e| ModelError {
+            file: file.to_string(),
+            position: e.span().map(|s| line_column(text, s.start)),
+            key: String::new(),
+            reason: format!("TOML syntax error: {}", e.message().trim()),
+        })?;
+        Ok(Self { text, file, tree })
+    }
+
+    /// The error `reason` at dotted `key` (at its line when the key is in the file).
+    pub fn error(&self, key: &str, reason: impl Into<String>) -> ModelError {
+        self.error_at(&split_key(key), key, reason)
+    }
+
+    /// The error `reason` at `path`, named `key` (at the line of the deepest item of `path`
+    /// in the file).
+    pub fn error_at(&self, path: &[Segment], key: &str, reason: impl Into<String>) -> ModelError {
+        ModelError {
+            file: self.file.to_string(),
+            position: span_of_path(&self.tree, path).map(|s| line_column(self.text, s.start)),
+            key: key.to_string(),
+            reason: reason.into(),
+        }
+    }
+}
+
+/// One step of a key path: a table key (which may itself contain dots, like a sweep file's
+/// quoted override keys) or an array index.
 #[derive(Debug, Clone, PartialEq)]
-pub(crate) enum Segment {
+pub enum Segment {
     Key(String),
     Index(usize),
 }
@@ -89,10 +127,15 @@ pub(crate) fn split_key(key: &str) -> Vec<Segment> {
 
 /// Byte span of the deepest existing item along `key` in the parsed document.
 pub(crate) fn span_of(root: &Spanned<DeTable<'_>>, key: &str) -> Option<Range<usize>> {
+    span_of_path(root, &split_key(key))
+}
+
+/// Byte span of the deepest existing item along `path` in the parsed document.
+fn span_of_path(root: &Spanned<DeTable<'_>>, path: &[Segment]) -> Option<Range<usize>> {
     let mut span = None;
     let mut table = Some(root.get_ref());
     let mut array: Option<&[Spanned<DeValue<'_>>]> = None;
-    for segment in split_key(key) {
+    for segment in path.iter().cloned() {
         let value = match (segment, table, array) {
             (Segment::Key(k), Some(t), _) => {
                 match t.iter().find(|(name, _)| name.get_ref() == &k) {

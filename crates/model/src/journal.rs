@@ -18,6 +18,45 @@ use std::path::Path;
 
 /// Fourier harmonics of the thermal model when the file gives none (seed 002 §4.5: n = 10).
 const DEFAULT_HARMONICS: usize = 10;
+/// Most Fourier harmonics of the thermal model (the seed's 10 resolve the temperature field).
+const MAX_HARMONICS: usize = 200;
+
+// Plausibility bounds of a journal file (docs/reynolds.md, "Plausibility bounds"): values a
+// journal bearing does not have are refused at their key, not left to fail in the solver.
+
+/// Journal radius R, m.
+const RADIUS_M: (f64, f64) = (1e-4, 2.5);
+const RADIUS_WHY: &str =
+    "fluid-dynamic spindle bearings are ≈ 2 mm in bore, the largest turbine bearings ≈ 4 m";
+/// Length over diameter L/(2R).
+const LENGTH_PER_DIAMETER: (f64, f64) = (0.01, 10.0);
+const LENGTH_WHY: &str = "0.01…10 journal diameters (usual L/D is 0.2…2)";
+/// Radial clearance over radius c/R.
+const CLEARANCE_PER_RADIUS: (f64, f64) = (1e-5, 0.1);
+const CLEARANCE_WHY: &str = "1e-5…0.1 of the radius (usual c/R ≈ 1e-3)";
+/// Largest journal surface speed ωR, m/s.
+const MAX_SURFACE_SPEED_M_S: f64 = 300.0;
+const SPEED_WHY: &str = "nonzero (a journal bearing carries its load by rotation) and a \
+                         surface speed of at most 300 m/s (turbine bearings run at ≈ 150 m/s)";
+/// Largest specific load W/(2RL), Pa.
+const MAX_SPECIFIC_LOAD_PA: f64 = 100e6;
+const LOAD_WHY: &str =
+    "a specific load W/(2RL) of at most 100 MPa (white metal carries ≈ 20 MPa, bronze ≈ 50 MPa)";
+/// Dynamic viscosity μ₀, Pa s.
+const VISCOSITY_PA_S: (f64, f64) = (1e-6, 1e3);
+const VISCOSITY_WHY: &str = "gases ≈ 2e-5 Pa s … cold gear oils ≈ 10 Pa s";
+/// Largest pressure–viscosity coefficient α, 1/Pa.
+const MAX_PRESSURE_VISCOSITY_PER_PA: f64 = 1e-7;
+/// Largest viscosity–temperature slope Ω₀, 1/K.
+const MAX_VISCOSITY_TEMPERATURE_PER_K: f64 = 1.0;
+/// Young's modulus of a liner or housing, Pa.
+const MODULUS_PA: (f64, f64) = (1e5, 1.2e12);
+const MODULUS_WHY: &str = "soft elastomer liners … diamond";
+/// Largest outer radius of a housing or of the thermal model, m.
+const MAX_OUTER_RADIUS_M: f64 = 5.0;
+/// Thermal conductivity, W/(m K).
+const CONDUCTIVITY_W_M_K: (f64, f64) = (1e-2, 500.0);
+const CONDUCTIVITY_WHY: &str = "insulating polymers ≈ 0.1 … copper ≈ 400 W/(m K)";
 
 /// What the journal solve is given.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -124,23 +163,65 @@ pub fn parse_journal(
 ) -> Result<JournalModel, ModelError> {
     let document = Document::<JournalFile>::parse(text, file)?;
     let m = &document.schema;
-    let positive = |key: &str, v: f64| {
-        if v.is_finite() && v > 0.0 {
+    let within = |key: &str, v: f64, (lo, hi): (f64, f64), unit: &str, why: &str| {
+        if (lo..=hi).contains(&v) {
             Ok(v)
         } else {
-            Err(document.error(key, format!("must be > 0 (got {v})")))
+            Err(document.error(
+                key,
+                format!("{v:e} {unit} is implausible (expected {lo:e}…{hi:e} {unit}: {why})"),
+            ))
         }
     };
+    let temperature = |key: &str, kelvin: f64| {
+        crate::bounds::check_temperature(key, kelvin)
+            .map(|()| kelvin)
+            .map_err(|e| document.error(key, e.reason))
+    };
     let g = &m.geometry;
-    let (r, c) = (
-        positive("geometry.radius", g.radius.si())?,
-        positive("geometry.clearance", g.clearance.si())?,
-    );
-    let mut bearing = JournalBearing::new(r, positive("geometry.length", g.length.si())?, c);
-    let t_op = positive(
-        "operating.temperature",
-        m.operating.temperature.map_or(temperature_k, Quantity::si),
+    let r = within("geometry.radius", g.radius.si(), RADIUS_M, "m", RADIUS_WHY)?;
+    let length = within(
+        "geometry.length",
+        g.length.si(),
+        (
+            LENGTH_PER_DIAMETER.0 * 2.0 * r,
+            LENGTH_PER_DIAMETER.1 * 2.0 * r,
+        ),
+        "m",
+        LENGTH_WHY,
     )?;
+    let c = within(
+        "geometry.clearance",
+        g.clearance.si(),
+        (CLEARANCE_PER_RADIUS.0 * r, CLEARANCE_PER_RADIUS.1 * r),
+        "m",
+        CLEARANCE_WHY,
+    )?;
+    let mut bearing = JournalBearing::new(r, length, c);
+    let speed = m.operating.speed.si();
+    within(
+        "operating.speed",
+        speed.abs(),
+        (f64::MIN_POSITIVE, MAX_SURFACE_SPEED_M_S / r),
+        "rad/s",
+        SPEED_WHY,
+    )?;
+    if let Some(load) = m.operating.load.map(Quantity::si) {
+        within(
+            "operating.load",
+            load,
+            (f64::MIN_POSITIVE, MAX_SPECIFIC_LOAD_PA * 2.0 * r * length),
+            "N",
+            LOAD_WHY,
+        )?;
+    }
+    let t_op = match m.operating.temperature {
+        Some(t) => temperature("operating.temperature", t.si())?,
+        None => temperature_k,
+    };
+    if let Some(t) = m.viscosity.t_ref {
+        temperature("viscosity.t_ref", t.si())?;
+    }
     let (viscosity, viscosity_law) = m
         .viscosity
         .law(t_op)
@@ -153,14 +234,37 @@ pub fn parse_journal(
         );
     }
     if let Some(th) = &m.thermal {
+        let outer_radius = th.outer_radius.si();
+        if !(outer_radius > r + c && outer_radius <= MAX_OUTER_RADIUS_M) {
+            return Err(document.error(
+                "thermal.outer_radius",
+                format!(
+                    "{outer_radius:e} m: must exceed the bore radius {:e} m and be at most {MAX_OUTER_RADIUS_M} m",
+                    r + c
+                ),
+            ));
+        }
+        let harmonics = th.harmonics.unwrap_or(DEFAULT_HARMONICS);
+        if !(1..=MAX_HARMONICS).contains(&harmonics) {
+            return Err(document.error(
+                "thermal.harmonics",
+                format!("{harmonics}: must be 1…{MAX_HARMONICS} (seed 002 §4.5 uses 10)"),
+            ));
+        }
         bearing.thermal = Some(ThermalModel {
-            conductivity: positive("thermal.conductivity", th.conductivity.si())?,
-            ambient_temperature: positive(
+            conductivity: within(
+                "thermal.conductivity",
+                th.conductivity.si(),
+                CONDUCTIVITY_W_M_K,
+                "W/(m K)",
+                CONDUCTIVITY_WHY,
+            )?,
+            ambient_temperature: temperature(
                 "thermal.ambient_temperature",
                 th.ambient_temperature.si(),
             )?,
-            outer_radius: positive("thermal.outer_radius", th.outer_radius.si())?,
-            harmonics: th.harmonics.unwrap_or(DEFAULT_HARMONICS),
+            outer_radius,
+            harmonics,
         });
     }
     let target = journal_target(
@@ -250,12 +354,23 @@ impl ViscosityFile {
     /// The viscosity law and its name; μ₀ at `t_op` unless `t_ref` is given.
     fn law(&self, t_op: f64) -> Result<(Box<dyn Viscosity>, &'static str), KeyError> {
         let mu0 = self.mu0.si();
-        if !(mu0.is_finite() && mu0 > 0.0) {
-            return Err(("mu0", format!("must be > 0 (got {mu0})")));
+        let (lo, hi) = VISCOSITY_PA_S;
+        if !(lo..=hi).contains(&mu0) {
+            return Err((
+                "mu0",
+                format!(
+                    "{mu0:e} Pa s is implausible (expected {lo:e}…{hi:e} Pa s: {VISCOSITY_WHY})"
+                ),
+            ));
         }
         let alpha = self.alpha.map_or(0.0, Quantity::si);
-        if !(alpha.is_finite() && alpha >= 0.0) {
-            return Err(("alpha", format!("must be ≥ 0 (got {alpha})")));
+        if !(0.0..=MAX_PRESSURE_VISCOSITY_PER_PA).contains(&alpha) {
+            return Err((
+                "alpha",
+                format!(
+                    "{alpha:e} 1/Pa: must be 0…{MAX_PRESSURE_VISCOSITY_PER_PA:e} 1/Pa (mineral oils ≈ 2e-8 1/Pa)"
+                ),
+            ));
         }
         Ok(match self.law {
             LawName::Isoviscous => (Box::new(Isoviscous { mu: mu0 }), "isoviscous"),
@@ -264,8 +379,13 @@ impl ViscosityFile {
                 let omega0 = self
                     .omega0_per_k
                     .ok_or(("omega0_per_k", "required by the Petrusevich law".into()))?;
-                if !(omega0.is_finite() && omega0 >= 0.0) {
-                    return Err(("omega0_per_k", format!("must be ≥ 0 (got {omega0})")));
+                if !(0.0..=MAX_VISCOSITY_TEMPERATURE_PER_K).contains(&omega0) {
+                    return Err((
+                        "omega0_per_k",
+                        format!(
+                            "{omega0:e} 1/K: must be 0…{MAX_VISCOSITY_TEMPERATURE_PER_K} 1/K (oils ≈ 0.02–0.05 1/K)"
+                        ),
+                    ));
                 }
                 let law = Petrusevich {
                     mu0,
@@ -310,8 +430,12 @@ fn material(
     poisson: f64,
     keys: (&'static str, &'static str),
 ) -> Result<Material, KeyError> {
-    if !(modulus.is_finite() && modulus > 0.0) {
-        return Err((keys.0, format!("must be > 0 (got {modulus})")));
+    let (lo, hi) = MODULUS_PA;
+    if !(lo..=hi).contains(&modulus) {
+        return Err((
+            keys.0,
+            format!("{modulus:e} Pa is implausible (expected {lo:e}…{hi:e} Pa: {MODULUS_WHY})"),
+        ));
     }
     if !(poisson > -1.0 && poisson < 0.5) {
         return Err((keys.1, "must lie in (−1, 0.5)".into()));
@@ -327,17 +451,23 @@ impl LinerFile {
     /// (4.33)) or, without a housing, a Winkler layer on a rigid one.
     fn kernel(&self, r1: f64) -> Result<LinerKernel, KeyError> {
         let t = self.thickness.si();
-        if !(t.is_finite() && t > 0.0) {
-            return Err(("thickness", format!("must be > 0 (got {t})")));
+        if !(t > 0.0 && t <= r1) {
+            return Err((
+                "thickness",
+                format!("{t:e} m: must be > 0 and at most the bore radius {r1:e} m"),
+            ));
         }
         let liner = material(self.modulus.si(), self.poisson, ("modulus", "poisson"))?;
         let k0 = match &self.housing {
             Some(h) => {
                 let r3 = h.outer_radius.si();
-                if !(r3.is_finite() && r3 > r1 + t) {
+                if !(r3 > r1 + t && r3 <= MAX_OUTER_RADIUS_M) {
                     return Err((
                         "housing.outer_radius",
-                        format!("must exceed the liner outer radius {:.6} m", r1 + t),
+                        format!(
+                            "{r3:e} m: must exceed the liner outer radius {:.6} m and be at most {MAX_OUTER_RADIUS_M} m",
+                            r1 + t
+                        ),
                     ));
                 }
                 let housing = material(

@@ -21,7 +21,9 @@ pub use convert::DEFAULT_SLICES;
 pub use dynamics::{
     CageLandLaw, DynamicsInputs, EndFrictionLaw, EndPairInputs, PairInputs, RollerCageLaw,
 };
-pub use error::{MAX_QUOTED_CHARS, ModelError, shorten_long_words};
+pub use error::{
+    LocatedToml, MAX_QUOTED_CHARS, ModelError, Segment as KeySegment, shorten_long_words,
+};
 pub use oil_file::{load_oil_file, parse_oil_file};
 pub use operation::{
     DEFAULT_STARTUP_REVOLUTIONS, FixedLoad, FrozenPoint, Lubrication, Operating, Schedules,
@@ -57,6 +59,14 @@ pub struct Source {
 }
 
 impl Source {
+    /// The model file `file` whose text is `text`.
+    pub fn new(file: impl Into<String>, text: impl Into<String>) -> Self {
+        Self {
+            file: file.into(),
+            text: text.into(),
+        }
+    }
+
     /// The text of the model file.
     pub fn text(&self) -> &str {
         &self.text
@@ -150,7 +160,7 @@ impl<'a, T: serde::de::DeserializeOwned> Document<'a, T> {
         let error = |key: &str, span: Option<std::ops::Range<usize>>, reason| {
             located(text, file, key, span, reason)
         };
-        let tree = DeTable::parse(text).map_err(|e| error("", e.span(), syntax_message(&e)))?;
+        let tree = LocatedToml::parse(text, file)?.tree;
         let deserializer = toml::de::Deserializer::from(tree.clone());
         let schema = serde_path_to_error::deserialize(deserializer).map_err(|e| {
             let key = path_key(e.path());
@@ -322,10 +332,6 @@ fn check_speeds(
         }
     }
     Ok(())
-}
-
-fn syntax_message(e: &toml::de::Error) -> String {
-    format!("TOML syntax error: {}", e.message().trim())
 }
 
 /// The message of a deserialisation error without toml's multi-line snippet.

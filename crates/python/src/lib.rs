@@ -72,10 +72,14 @@ impl Model {
             .into_iter()
             .map(|(key, value)| Ok((key.clone(), toml_value(&key, value)?)))
             .collect::<PyResult<Vec<_>>>()?;
-        let text = rolldyn_sweep::apply_overrides(text, &keys)
-            .map_err(|reason| InputError::new_err(format!("{source}: {reason}")))?;
-        let model =
-            rolldyn_model::parse(&text, source).map_err(|e| InputError::new_err(e.to_string()))?;
+        let (text, model) =
+            rolldyn_sweep::model_with_overrides(text, source, &keys).map_err(|e| match e {
+                // the override is the user's line: no line of the base file
+                rolldyn_sweep::OverrideError::Override { key, reason } => {
+                    InputError::new_err(format!("overrides: {key} — {reason}"))
+                }
+                rolldyn_sweep::OverrideError::Base(e) => InputError::new_err(e.to_string()),
+            })?;
         Ok(Model {
             source: ModelSource::Given {
                 source: source.to_string(),

@@ -50,3 +50,24 @@ pub fn write_csv(
     writer.flush()?;
     Ok(())
 }
+
+/// Writes a result's table as CSV (numbers as [`write_csv`] writes them, text as it is).
+pub fn write_table_csv(path: &Path, table: &crate::table::Table) -> Result<(), Failure> {
+    use crate::table::ColumnValues;
+    let fail = |e: csv::Error| Failure::Run(format!("cannot write {}: {e}", path.display()));
+    let mut writer = csv::Writer::from_path(path).map_err(fail)?;
+    writer
+        .write_record(table.columns.iter().map(|c| c.name.as_str()))
+        .map_err(fail)?;
+    for row in 0..table.rows() {
+        writer
+            .write_record(table.columns.iter().map(|c| match &c.values {
+                ColumnValues::Real(v) => ColumnKind::Real.csv_field(v[row]),
+                ColumnValues::Integer(v) => v[row].to_string(),
+                ColumnValues::Text(v) => v[row].clone(),
+            }))
+            .map_err(fail)?;
+    }
+    writer.flush()?;
+    Ok(())
+}

@@ -4,7 +4,7 @@
 use crate::analysis::{Analysis, Context};
 use crate::failure::Failure;
 use crate::observer::Progress;
-use crate::output::{out_dir, write_csv};
+use crate::output::{out_dir, write_csv, write_table_csv};
 use crate::table::{Table, Tables};
 use rolldyn_model::{Model, Temperatures};
 use rolldyn_plot::{Labels, Series, line_plot};
@@ -204,7 +204,8 @@ pub struct SkidRequest {
     pub friction: FrictionName,
     /// Cage–guiding-land model.
     pub cage_land: LandName,
-    /// Folder for the sweep table (CSV) and plot (SVG).
+    /// Folder for the table: a point's `rollers.csv`, a sweep's `skid_sweep.csv` and plot
+    /// (SVG).
     pub out: Option<PathBuf>,
 }
 
@@ -673,6 +674,9 @@ impl Analysis for Skid {
             let result =
                 rolldyn_quasistatic::solve_with_land_model(bearing, &base, &options, land.as_ref())
                     .map_err(|e| solve_failure(&model, e))?;
+            if let Some(dir) = &request.out {
+                write_table_csv(&out_dir(dir)?.join("rollers.csv"), &rollers_table(&result))?;
+            }
             return Ok(SkidResult::Point(Box::new(SkidPoint {
                 result,
                 model: name,

@@ -8,6 +8,7 @@ use crate::observer::Progress;
 use crate::operating::{Duration, jobs_or_cores};
 use crate::run_record::{ModelOrigin, finish_out_folder};
 use crate::table::{Table, Tables};
+use crate::wear::{DEFAULT_MAX_PERIODS, LifeOrPeriod, check_life_and_period};
 use rolldyn_dynamics::SummaryValue;
 use rolldyn_dynamics::output::NullSink;
 use rolldyn_dynamics::tapered::{TaperedRunSettings, run as run_tapered, summary_entries};
@@ -16,8 +17,8 @@ use rolldyn_quasistatic::QuasiStaticOptions;
 use rolldyn_report::RunKind;
 use rolldyn_setup::{Overrides, prepare};
 use rolldyn_sweep::{
-    Analysis as VariantKind, Figure, RunOptions, Shard, Summary, SummaryValues, SweepFile, Variant,
-    VariantOutcome, collect, run as run_sweep, varied_columns,
+    Analysis as VariantKind, Figure, RunOptions, Shard, Summary, SummaryValues, SweepError,
+    SweepFile, Variant, VariantOutcome, collect, run as run_sweep, varied_columns,
 };
 use rolldyn_wear::WearSettings;
 use serde::{Deserialize, Serialize};
@@ -335,7 +336,7 @@ fn fatigue(
 }
 
 /// The fatigue settings of a `fatigue` sweep: its `method` names the stress model.
-fn fatigue_settings(sweep: &SweepFile) -> Result<FatigueSettings, String> {
+fn fatigue_settings(sweep: &SweepFile) -> Result<FatigueSettings, SweepError> {
     let stress_model = match (sweep.analysis, sweep.method.as_deref()) {
         (VariantKind::Fatigue, Some("calculix")) => StressModelKind::Calculix,
         (VariantKind::Fatigue, None | Some("frame")) | (_, _) => StressModelKind::Frame,
@@ -346,7 +347,7 @@ fn fatigue_settings(sweep: &SweepFile) -> Result<FatigueSettings, String> {
             .as_deref()
             .filter(|m| !["frame", "calculix"].contains(m))
     {
-        return Err(format!("method — '{other}' is not frame or calculix"));
+        return Err(sweep.error("method", format!("'{other}' is not frame or calculix")));
     }
     Ok(FatigueSettings {
         stress_model,
@@ -354,15 +355,17 @@ fn fatigue_settings(sweep: &SweepFile) -> Result<FatigueSettings, String> {
     })
 }
 
-/// The wear settings of a `wear` sweep: its `duration` is the life, its `period` the period.
-fn wear_settings(sweep: &SweepFile) -> Result<WearSettings, String> {
+/// The wear settings of a `wear` sweep: its `duration` is the life, its `period` the period,
+/// checked as the `wear` command checks `--life` and `--period` (at most
+/// [`DEFAULT_MAX_PERIODS`] periods).
+fn wear_settings(sweep: &SweepFile) -> Result<WearSettings, SweepError> {
     let defaults = WearSettings::default();
     if sweep.analysis != VariantKind::Wear {
         return Ok(defaults);
     }
     let life_s = match sweep.duration.as_deref() {
         Some(text) => rolldyn_units::Quantity::<rolldyn_units::Time>::parse(text)
-            .map_err(|e| format!("duration (the life) — {e}"))?
+            .map_err(|e| sweep.error("duration", format!("(the life) {e}")))?
             .si(),
         None => defaults.life_s,
     };
@@ -370,18 +373,24 @@ fn wear_settings(sweep: &SweepFile) -> Result<WearSettings, String> {
         .period
         .as_deref()
         .map(str::parse::<crate::wear::Period>)
-        .transpose()?
+        .transpose()
+        .map_err(|e| sweep.error("period", e))?
     {
         None => defaults.period,
-        Some(crate::wear::Period::Fixed(p)) => rolldyn_wear::PeriodControl::Fixed(p),
-        Some(crate::wear::Period::Auto) => {
-            rolldyn_wear::PeriodControl::auto(defaults.period.initial_s())
-        }
+        Some(p) => p.control(),
     };
+    check_life_and_period(life_s, &period, DEFAULT_MAX_PERIODS).map_err(
+        |(at, reason)| match at {
+            LifeOrPeriod::Life => sweep.error("duration", format!("(the life) {reason}")),
+            LifeOrPeriod::Period => sweep.error("period", reason),
+        },
+    )?;
     let method = match sweep.method.as_deref() {
         None | Some("direct") => rolldyn_wear::WearMethod::Direct,
         Some("averaged") => rolldyn_wear::WearMethod::Averaged,
-        Some(other) => return Err(format!("method — '{other}' is not direct or averaged")),
+        Some(other) => {
+            return Err(sweep.error("method", format!("'{other}' is not direct or averaged")));
+        }
     };
     Ok(WearSettings {
         life_s,
@@ -445,27 +454,29 @@ impl Analysis for Sweep {
             ));
         }
         let file = &request.sweep;
-        let sweep = SweepFile::load(file).map_err(|e| Failure::Input(e.to_string()))?;
-        let bad = |e: String| Failure::Input(format!("{}: {e}", file.display()));
-        let wear_settings = wear_settings(&sweep).map_err(bad)?;
-        let fatigue_settings = fatigue_settings(&sweep).map_err(bad)?;
+        let input = |e: SweepError| Failure::Input(e.to_string());
+        let sweep = SweepFile::load(file).map_err(input)?;
+        let bad = |key: &str, reason: String| input(sweep.error(key, reason));
+        let wear_settings = wear_settings(&sweep).map_err(input)?;
+        let fatigue_settings = fatigue_settings(&sweep).map_err(input)?;
         let duration: Duration = match sweep.analysis {
             VariantKind::Wear | VariantKind::Fatigue => "1rev".parse(),
             _ => sweep.duration.as_deref().unwrap_or("5rev").parse(),
         }
-        .map_err(|e: String| bad(format!("duration — {e}")))?;
+        .map_err(|e: String| bad("duration", e))?;
         let discard = sweep
             .discard
             .as_deref()
             .map(discarded_revolutions)
             .transpose()
-            .map_err(|e| bad(format!("discard — {e}")))?;
+            .map_err(|e| bad("discard", e))?;
         if let (Some(n), Duration::CageRevolutions(total)) = (discard, duration)
             && f64::from(n) >= total
         {
-            return Err(bad(format!(
-                "discard — {n} revolutions leave nothing of the {total} simulated"
-            )));
+            return Err(bad(
+                "discard",
+                format!("{n} revolutions leave nothing of the {total} simulated"),
+            ));
         }
         let stem = file
             .file_stem()
@@ -474,11 +485,18 @@ impl Analysis for Sweep {
             .out
             .clone()
             .unwrap_or_else(|| PathBuf::from("out").join(stem));
-        // `--collect-only` reads a folder and does not create one
-        let _lock = match request.collect_only && !out_dir.is_dir() {
-            true => None,
-            false => Some(crate::output::out_dir(&out_dir)?),
-        };
+        if request.collect_only && !out_dir.is_dir() {
+            let flag = if request.out.is_some() {
+                "--out"
+            } else {
+                "--collect-only"
+            };
+            return Err(Failure::Input(format!(
+                "{flag}: {} is not a folder: nothing to collect (run the sweep into it first)",
+                out_dir.display()
+            )));
+        }
+        let _lock = crate::output::out_dir(&out_dir)?;
         let analysis = sweep.analysis;
         let cache_dir = out_dir.join("calculix-cache");
         let variants_dir = out_dir.join("variants");

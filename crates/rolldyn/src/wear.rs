@@ -78,6 +78,74 @@ impl Period {
     }
 }
 
+/// Default of `--max-periods`, the ceiling of the recalculation periods a wear run plans:
+/// every period runs 20 cage revolutions of dynamics (seconds to minutes each), so 10 000
+/// periods are days of computing, while seed 000's life takes 13 periods of 1905 h.
+pub const DEFAULT_MAX_PERIODS: u64 = 10_000;
+
+/// The value of a wear run at fault: its life (`--life`, a sweep's `duration`) or its period
+/// (`--period`, a sweep's `period`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LifeOrPeriod {
+    Life,
+    Period,
+}
+
+/// The one check of a wear run's life and period, for the `wear` command and wear sweeps: the
+/// life `life_s` positive and finite, and at most `max_periods` recalculation periods (with
+/// an automatic period, the count if it stayed at its smallest period). The error names the
+/// value at fault and why (without the flag or key, which the caller names).
+pub fn check_life_and_period(
+    life_s: f64,
+    period: &PeriodControl,
+    max_periods: u64,
+) -> Result<(), (LifeOrPeriod, String)> {
+    if !(life_s > 0.0 && life_s.is_finite()) {
+        return Err((
+            LifeOrPeriod::Life,
+            format!(
+                "{:e} h: the life must be positive and finite",
+                life_s / HOUR
+            ),
+        ));
+    }
+    let (shortest_s, how) = match period {
+        PeriodControl::Fixed(p) => (*p, ""),
+        PeriodControl::Schedule(periods) => (
+            periods.iter().copied().fold(f64::INFINITY, f64::min),
+            " at its shortest",
+        ),
+        PeriodControl::Auto { minimum_s, .. } => (*minimum_s, " at the smallest automatic period"),
+    };
+    if !(shortest_s > 0.0 && shortest_s.is_finite()) {
+        return Err((
+            LifeOrPeriod::Period,
+            format!("{shortest_s:e} s: the period must be positive (e.g. 1905h) or auto"),
+        ));
+    }
+    let count = (life_s / shortest_s).ceil();
+    if count > max_periods as f64 {
+        // in decades: the count of a tiny period overflows f64 (1e-308 h: 2.5e312 periods)
+        let decades = life_s.log10() - shortest_s.log10();
+        let count = if count < 1e15 {
+            format!("{count:.0}")
+        } else {
+            let exponent = decades.floor();
+            format!("{:.3}e{exponent}", 10f64.powf(decades - exponent))
+        };
+        return Err((
+            LifeOrPeriod::Period,
+            format!(
+                "{count} periods ({:.4e} h of life / {:.4e} h{how}) are more than {max_periods} \
+                 (--max-periods): choose a longer period or a shorter life, or raise --max-periods",
+                life_s / HOUR,
+                shortest_s / HOUR
+            ),
+        ));
+    }
+    Ok(())
+}
+
 impl<'de> Deserialize<'de> for Period {
     /// `"auto"`, a time with units (`"1905h"`) or a number of seconds.
     fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
@@ -171,6 +239,8 @@ pub struct WearRequest {
     pub out: Option<PathBuf>,
     /// Write the HTML report of the output folder at the end of the run.
     pub report: bool,
+    /// The most recalculation periods the life may take (default [`DEFAULT_MAX_PERIODS`]).
+    pub max_periods: u64,
 }
 
 impl Default for WearRequest {
@@ -191,6 +261,7 @@ impl Default for WearRequest {
             window: None,
             out: None,
             report: false,
+            max_periods: DEFAULT_MAX_PERIODS,
         }
     }
 }
@@ -199,16 +270,15 @@ impl WearRequest {
     /// The settings of the cylindrical life run.
     pub fn settings(&self) -> Result<WearSettings, Failure> {
         let life_s = self.life.map_or(25_000.0 * HOUR, |l| l.si());
-        if !(life_s > 0.0 && life_s.is_finite()) {
-            return Err(Failure::Input("--life must be positive".into()));
-        }
+        let period = self.period.control();
+        check_life_and_period(life_s, &period, self.max_periods).map_err(flag_failure)?;
         if self.revolutions == 0 {
             return Err(Failure::Input("--revolutions must be at least 1".into()));
         }
         let settings = WearSettings {
             method: self.method.unwrap_or(MethodName::Direct).method(),
             life_s,
-            period: self.period.control(),
+            period,
             revolutions: self.revolutions,
             settle_revolutions: self.settle,
             exposure_width: self.exposure_width.width(),
@@ -246,9 +316,12 @@ impl WearRequest {
             Some(v) => Ok(v),
             None => Ok(default),
         };
+        let life_s = self.life.map_or(defaults.life_s, |l| l.si());
+        check_life_and_period(life_s, &PeriodControl::Fixed(period_s), self.max_periods)
+            .map_err(flag_failure)?;
         Ok(TaperedWearSettings {
             method: self.method.unwrap_or(MethodName::Averaged).method(),
-            life_s: positive(self.life.map(|l| l.si()), "--life", defaults.life_s)?,
+            life_s,
             period_s,
             settle_s: positive(
                 self.window_settle.map(|t| t.si()),
@@ -261,6 +334,15 @@ impl WearRequest {
             ..defaults
         })
     }
+}
+
+/// A refused life or period as the input failure naming its flag.
+fn flag_failure((at, reason): (LifeOrPeriod, String)) -> Failure {
+    let flag = match at {
+        LifeOrPeriod::Life => "--life",
+        LifeOrPeriod::Period => "--period",
+    };
+    Failure::Input(format!("{flag}: {reason}"))
 }
 
 /// A wear failure as an analysis failure.

@@ -41,7 +41,9 @@ pub mod frozen;
 mod run;
 mod summary;
 
-pub use file::{Analysis, SweepError, SweepFile, Variant, apply_overrides};
+pub use file::{
+    Analysis, OverrideError, SweepError, SweepFile, Variant, apply_overrides, model_with_overrides,
+};
 pub use run::{
     Figure, RunOptions, Shard, VariantAnalysis, VariantOutcome, VariantProgress, fingerprint, run,
 };

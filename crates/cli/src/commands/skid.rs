@@ -33,7 +33,8 @@ pub struct Args {
     pub cage_land: LandName,
     #[arg(long)]
     pub json: bool,
-    /// Folder for the sweep table (CSV) and plot (SVG).
+    /// Folder for the table: a point's rollers (`rollers.csv`), a sweep's `skid_sweep.csv` and
+    /// its plot (SVG).
     #[arg(long)]
     pub out: Option<PathBuf>,
 }

@@ -61,6 +61,10 @@ pub struct Args {
     /// Output folder: tables, plots and the worn model (default `out/<model name>-wear`).
     #[arg(long)]
     pub out: Option<PathBuf>,
+    /// The most recalculation periods the life may take (life / period; with `--period auto`
+    /// life / its smallest period, 1905 h / 64): a larger count is refused before the run.
+    #[arg(long, default_value_t = rolldyn::wear::DEFAULT_MAX_PERIODS)]
+    pub max_periods: u64,
     /// Write the HTML report of the output folder (`report.html`) at the end of the run.
     #[arg(long)]
     pub report: bool,
@@ -89,6 +93,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
         window: args.window,
         out: args.out,
         report: args.report,
+        max_periods: args.max_periods,
     };
     let bar = Bar::new(args.quiet || args.json, "wear");
     let result = Wear::run(&request, &context(args.model.as_deref(), &bar));
