@@ -43,8 +43,12 @@ impl ContactDiagnostics {
 
 impl serde::Serialize for ContactDiagnostics {
     /// The fields by name; a value that is not finite follows docs/outputs.md (`null` and a
-    /// reason under `"non_finite"`).
+    /// reason under `"non_finite"`). A binary format (a stored run state) gets the
+    /// [`ContactDiagnostics::values`] as they are.
     fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        if !serializer.is_human_readable() {
+            return self.values().serialize(serializer);
+        }
         let values = [
             ("equivalent_force_n", self.equivalent_force_n),
             ("mean_sliding_speed_m_s", self.mean_sliding_speed_m_s),
@@ -68,13 +72,33 @@ impl serde::Serialize for ContactDiagnostics {
     }
 }
 
+impl<'de> serde::Deserialize<'de> for ContactDiagnostics {
+    /// The binary form of [`serde::Serialize`]: the [`ContactDiagnostics::values`].
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        let [
+            equivalent_force_n,
+            mean_sliding_speed_m_s,
+            contact_fraction,
+            mean_lambda,
+            boundary_fraction,
+        ] = <[f64; 5]>::deserialize(deserializer)?;
+        Ok(Self {
+            equivalent_force_n,
+            mean_sliding_speed_m_s,
+            contact_fraction,
+            mean_lambda,
+            boundary_fraction,
+        })
+    }
+}
+
 /// The contact kinds of [`ContactDiagnostics`], in order.
 pub const CONTACT_KINDS: [&str; 4] = ["inner_raceway", "outer_raceway", "cage_bar", "rib"];
 
 /// Wear on the wear lines: the roller and bar lines are the roller's slice centres; the
 /// raceway maps are lines × angular bins (line-major); the roller end and the rib carry one
 /// line each.
-#[derive(Debug, Clone, PartialEq, Default)]
+#[derive(Debug, Clone, PartialEq, Default, serde::Serialize, serde::Deserialize)]
 pub struct SurfaceWear {
     pub lines: usize,
     pub bins: usize,

@@ -64,6 +64,10 @@ pub struct Args {
     /// Write the HTML report of the output folder (`report.html`) at the end of the run.
     #[arg(long)]
     pub report: bool,
+    /// Continue the run killed or interrupted in the output folder (its `wear.state`, stored
+    /// after every period), with the same model and options: the periods done are kept.
+    #[arg(long)]
+    pub resume: bool,
     /// Print the result as JSON.
     #[arg(long)]
     pub json: bool,
@@ -89,6 +93,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
         window: args.window,
         out: args.out,
         report: args.report,
+        resume: args.resume,
     };
     let bar = Bar::new(args.quiet || args.json, "wear");
     let result = Wear::run(&request, &context(args.model.as_deref(), &bar));
