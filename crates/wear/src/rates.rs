@@ -215,3 +215,37 @@ impl SurfaceWear {
             + 4.0 * self.max(Surface::Roller)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rolldyn_output::run_state::{StateFile, fingerprint};
+
+    /// A stored run state keeps every value: the diagnostics whose JSON drops what is not
+    /// finite, and the per-surface maps.
+    #[test]
+    fn a_stored_wear_state_reads_back_bit_for_bit() {
+        let mut wear = SurfaceWear::zero(2, 3, 4);
+        wear.roller[1] = 0.1 + 0.2;
+        wear.diagnostics[2] = ContactDiagnostics {
+            equivalent_force_n: 12.5,
+            mean_sliding_speed_m_s: f64::INFINITY,
+            contact_fraction: -0.0,
+            mean_lambda: f64::NAN,
+            boundary_fraction: 5e-324,
+        };
+        let depths = PerSurface::from_fn(|s| s as usize as f64 * 1e-7);
+        let dir = std::env::temp_dir().join(format!("rolldyn-wear-state-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let file = StateFile::new(dir.join("wear.state"), fingerprint("test"));
+        file.store(&(&wear, depths)).unwrap();
+        let (back, back_depths): (SurfaceWear, PerSurface<f64>) = file.load().unwrap().unwrap();
+        let bits = |d: &ContactDiagnostics| d.values().map(f64::to_bits);
+        for (a, b) in wear.diagnostics.iter().zip(&back.diagnostics) {
+            assert_eq!(bits(a), bits(b));
+        }
+        assert_eq!(back.roller, wear.roller);
+        assert_eq!(back_depths, depths);
+        std::fs::remove_dir_all(dir).unwrap();
+    }
+}
