@@ -5,15 +5,15 @@
 
 use crate::error::DynError;
 
-/// Tag that opens every checkpoint, followed by the two-digit format version.
-const TAG: &[u8; 6] = b"RDYNCK";
-/// Format version (07: the sliding-split maxima of the summary windows; 06: checksum, output
-/// step, the caller's note).
-const VERSION: &[u8; 2] = b"07";
-/// Bytes of the checksum that closes a checkpoint.
-const CHECKSUM_BYTES: usize = 8;
+/// The frame of every checkpoint: the tag `RDYNCK` and the format version (07: the
+/// sliding-split maxima of the summary windows; 06: checksum, output step, the caller's note).
+const KIND: Kind = Kind {
+    tag: b"RDYNCK",
+    version: b"07",
+};
 
 pub(crate) use rolldyn_numerics::hash::fnv1a;
+use rolldyn_numerics::sealed::{Kind, Unsealed};
 
 /// Appends values to a byte buffer that starts with the tag and version.
 #[derive(Debug)]
@@ -24,14 +24,12 @@ pub(crate) struct Writer {
 impl Writer {
     pub fn new() -> Self {
         Self {
-            buf: [TAG.as_slice(), VERSION].concat(),
+            buf: KIND.header(),
         }
     }
     /// The checkpoint: the buffer closed by its checksum.
-    pub fn seal(mut self) -> Vec<u8> {
-        let sum = fnv1a(&self.buf);
-        self.u64(sum);
-        self.buf
+    pub fn seal(self) -> Vec<u8> {
+        KIND.seal(self.buf)
     }
     pub fn f64(&mut self, x: f64) {
         self.buf.extend_from_slice(&x.to_bits().to_le_bytes());
@@ -63,35 +61,19 @@ impl<'a> Reader<'a> {
     /// Reads a checkpoint written by [`Writer::seal`]: refuses another file, another format
     /// version and a checkpoint whose checksum does not match (a changed or cut byte).
     pub fn open(bytes: &'a [u8]) -> Result<Self, DynError> {
-        let refuse = |reason: String| Err(DynError::Checkpoint(reason));
-        let header = TAG.len() + VERSION.len();
-        if bytes.len() < header || &bytes[..TAG.len()] != TAG {
-            return refuse("not a rolldyn dynamics checkpoint".into());
-        }
-        let version = &bytes[TAG.len()..header];
-        if version != VERSION {
-            return refuse(format!(
-                "format version {}, this rolldyn reads version {} (written by another rolldyn: run again from the start)",
-                String::from_utf8_lossy(version),
-                String::from_utf8_lossy(VERSION)
-            ));
-        }
-        let damaged =
-            "damaged: its checksum does not match (a byte was changed or the file cut short)";
-        let Some(body_len) = bytes
-            .len()
-            .checked_sub(CHECKSUM_BYTES)
-            .filter(|&n| n >= header)
-        else {
-            return refuse(damaged.into());
-        };
-        let (body, sum) = bytes.split_at(body_len);
-        if sum != fnv1a(body).to_le_bytes() {
-            return refuse(damaged.into());
-        }
+        let body = KIND.open(bytes).map_err(|e| {
+            DynError::Checkpoint(match e {
+                Unsealed::Foreign => "not a rolldyn dynamics checkpoint".into(),
+                Unsealed::Version(found) => format!(
+                    "format version {found}, this rolldyn reads version {} (written by another rolldyn: run again from the start)",
+                    String::from_utf8_lossy(KIND.version)
+                ),
+                Unsealed::Damaged => e.to_string(),
+            })
+        })?;
         Ok(Self {
             buf: body,
-            pos: header,
+            pos: KIND.header().len(),
         })
     }
     /// Whether every value has been read.

@@ -574,7 +574,7 @@ const NUMBER_COLUMNS: [&str; 9] = [
 
 /// The largest contact forces of the recorded revolution (seed 000 Table 3.2 columns the
 /// correlations of V-27 use), N.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct RevolutionMaxima {
     pub max_cage_land_force_n: f64,
     pub max_roller_cage_force_n: f64,

@@ -361,14 +361,24 @@ pub fn export_header(
     }
 }
 
-/// A model's dynamics run to its load export: `settle_revolutions` discarded, then recorded until
-/// the cage has turned a full revolution (at most three epicyclic periods). `watch(t, t_settled)`
-/// is called after every accepted step with the simulated time and the end of the settling;
-/// `Break` stops the run ([`FatigueError::Interrupted`]).
+/// The dynamics checkpoints of a resumable fatigue run's settling: the one to start from (of
+/// an interrupted run with the same inputs) and where each new one goes (after every settling
+/// revolution; an error stops the run).
+pub struct SettleCheckpoints<'a> {
+    pub start: Option<Vec<u8>>,
+    pub store: &'a mut dyn FnMut(&[u8]) -> Result<(), String>,
+}
+
+/// A model's dynamics run to its load export: `settle_revolutions` discarded (checkpointed
+/// after each one with `checkpoints`), then recorded until the cage has turned a full revolution
+/// (at most three epicyclic periods). `watch(t, t_settled)` is called after every accepted step
+/// with the simulated time and the end of the settling; `Break` stops the run
+/// ([`FatigueError::Interrupted`]).
 pub fn record_loads(
     model: &rolldyn_model::Model,
     overrides: &rolldyn_setup::Overrides,
     settings: &FatigueSettings,
+    checkpoints: Option<SettleCheckpoints>,
     watch: &mut dyn FnMut(f64, f64) -> ControlFlow<()>,
 ) -> Result<(CageLoadExport, RevolutionMaxima, CageGeometry), FatigueError> {
     let bearing = model
@@ -407,12 +417,24 @@ pub fn record_loads(
     };
     let settle = settings.settle_revolutions as f64 * period;
     let mut watched = |t: f64| watch(t, settle);
-    sim.run_until_interruptible(
-        settle,
-        &mut rolldyn_dynamics::output::NullSink,
-        &mut watched,
-    )
-    .map_err(numerical)?;
+    let mut checkpoints = checkpoints;
+    if let Some(bytes) = checkpoints.as_mut().and_then(|c| c.start.take()) {
+        sim.restore(&bytes)
+            .map_err(|e| FatigueError::Input(format!("the stored dynamics: {e}")))?;
+    }
+    // revolution by revolution: a run split into pieces is the same run bit for bit
+    while sim.time() < settle {
+        let target = (sim.time() + period).min(settle);
+        sim.run_until_interruptible(
+            target,
+            &mut rolldyn_dynamics::output::NullSink,
+            &mut watched,
+        )
+        .map_err(numerical)?;
+        if let Some(c) = checkpoints.as_mut() {
+            (c.store)(&sim.checkpoint()).map_err(FatigueError::Numerical)?;
+        }
+    }
     let mut recorder = CageLoadRecorder::default();
     let mut end = settle;
     let sets = loop {

@@ -13,6 +13,7 @@
 //!   of one variable.
 //! * [`step`]: the ADAMS cubic STEP ramp (SPEC §3.4), with the degenerate span defined.
 //! * [`hash`]: FNV-1a, the stable hash of fingerprints and checksums.
+//! * [`sealed`]: the tag, version and checksum frame of the state files rolldyn reads back.
 //! * [`fastmath`]: branch-free, vectorisable `exp`, `ln`, `sin_cos` for hot loops.
 //! * [`avx512_twin!`]: a hot loop and its AVX-512F copy from one parameter list; [`vector_copies::LoopCopy`] for callers that dispatch themselves.
 
@@ -24,6 +25,7 @@ pub mod hash;
 pub mod maximize1d;
 pub mod newton2d;
 pub mod root1d;
+pub mod sealed;
 pub mod skyline;
 pub mod statistics;
 pub mod step;

@@ -20,6 +20,7 @@ pub mod folder_lock;
 pub mod mixed_table;
 pub mod non_finite;
 pub mod replace;
+pub mod run_state;
 pub mod size;
 
 pub use mixed_table::{Column, Values, write_parquet_table};
@@ -27,6 +28,7 @@ pub use non_finite::{csv_field, csv_integer, default_reason, mark_non_finite};
 pub use checksum::{ChecksumError, checksum_hex, seal_json, verify_sealed_json};
 pub use folder_lock::{FolderLock, FolderLockError, LOCK_FILE};
 pub use replace::{ReplaceError, ensure_replaceable, replace_file_atomically};
+pub use run_state::{StateError, StateFile};
 pub use size::{ByteSize, estimated_table_bytes};
 
 use parquet::basic::Compression;
@@ -197,7 +199,7 @@ impl RowDigest {
 
 /// The rows of an interrupted table that a resume keeps: how many, and the
 /// digest of the table after them ([`TableWriter::kept`]).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub struct KeptRows {
     pub rows: usize,
     pub digest: u64,

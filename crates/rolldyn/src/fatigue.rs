@@ -14,8 +14,9 @@ use rolldyn_fatigue::mean_stress::MeanStressCorrection;
 use rolldyn_fatigue::sn::{BelowKnee, SnCurve};
 use rolldyn_fatigue::study::{
     FatigueAnswer, FatigueError, FatigueSettings, REQUIRED_STRESS_SAFETY_FACTOR, RevolutionMaxima,
-    StressModelKind, evaluate, record_loads,
+    SettleCheckpoints, StressModelKind, evaluate, record_loads,
 };
+use rolldyn_output::run_state::{StateFile, fingerprint};
 use rolldyn_fatigue::{
     CageLoadExport, Cycle, HistoryKind, UnitStresses, rainflow, read_history_csv,
 };
@@ -114,6 +115,27 @@ pub struct FatigueRequest {
     pub report: bool,
     /// Folder of the cached CalculiX unit cases (default `out/calculix-cache`).
     pub cache: Option<PathBuf>,
+    /// Continue the run killed or interrupted in `out` from what it stored in
+    /// `fatigue.state`: the dynamics after its last settling revolution, or the recorded load
+    /// export (the CalculiX unit cases are cached apart).
+    pub resume: bool,
+}
+
+/// The file of the output folder that holds the stored state of its fatigue run
+/// ([`rolldyn_output::run_state`]), replaced after every settling revolution of the dynamics
+/// and once the loads are recorded.
+pub const STATE_FILE: &str = "fatigue.state";
+
+/// What a fatigue run with an output folder stores as it goes.
+#[derive(Serialize, Deserialize)]
+enum StoredFatigue {
+    /// The dynamics checkpoint after a settling revolution.
+    Settling(Vec<u8>),
+    /// The loads of the recorded revolution.
+    Recorded {
+        export: CageLoadExport,
+        maxima: RevolutionMaxima,
+    },
 }
 
 impl Default for FatigueRequest {
@@ -134,6 +156,7 @@ impl Default for FatigueRequest {
             out: None,
             report: false,
             cache: None,
+            resume: false,
         }
     }
 }
@@ -384,6 +407,11 @@ impl Analysis for Fatigue {
     fn run(request: &FatigueRequest, context: &Context<'_>) -> Result<FatigueResult, Failure> {
         let wall = Instant::now();
         let settings = request.settings()?;
+        if request.resume && request.loads.is_some() {
+            return Err(Failure::Input(
+                "--resume continues the dynamics of a run; with --loads there is none".into(),
+            ));
+        }
         if request.report && request.out.is_none() {
             return Err(Failure::Input(
                 "--report needs an output folder (--out)".into(),
@@ -434,14 +462,62 @@ impl Analysis for Fatigue {
                         ControlFlow::Continue(())
                     }
                 };
-                let (export, maxima, _) = record_loads(
-                    &model,
-                    &request.operating.overrides(),
-                    &settings,
-                    &mut watch,
-                )
-                .map_err(failure)?;
-                (export, maxima)
+                let store = match &request.out {
+                    Some(dir) => Some(StateFile::new(
+                        out_dir(dir)?.join(STATE_FILE),
+                        fingerprint(&format!(
+                            "fatigue\n{model:?}\n{:?}\n{settings:?}",
+                            request.operating
+                        )),
+                    )),
+                    None if request.resume => {
+                        return Err(Failure::Input(
+                            "--resume continues the run of an output folder: give --out".into(),
+                        ));
+                    }
+                    None => None,
+                };
+                let stored = match (&store, request.resume) {
+                    (Some(store), true) => {
+                        store.load().map_err(|e| Failure::Input(e.to_string()))?
+                    }
+                    _ => None,
+                };
+                match stored {
+                    Some(StoredFatigue::Recorded { export, maxima }) => (export, maxima),
+                    settling => {
+                        let start = match settling {
+                            Some(StoredFatigue::Settling(bytes)) => Some(bytes),
+                            _ => None,
+                        };
+                        let mut store_dynamics = |bytes: &[u8]| match &store {
+                            Some(s) => s
+                                .store(&StoredFatigue::Settling(bytes.to_vec()))
+                                .map_err(|e| e.to_string()),
+                            None => Ok(()),
+                        };
+                        let checkpoints = store.is_some().then_some(SettleCheckpoints {
+                            start,
+                            store: &mut store_dynamics,
+                        });
+                        let (export, maxima, _) = record_loads(
+                            &model,
+                            &request.operating.overrides(),
+                            &settings,
+                            checkpoints,
+                            &mut watch,
+                        )
+                        .map_err(failure)?;
+                        if let Some(s) = &store {
+                            let recorded = StoredFatigue::Recorded {
+                                export: export.clone(),
+                                maxima,
+                            };
+                            s.store(&recorded).map_err(|e| Failure::Run(e.to_string()))?;
+                        }
+                        (export, maxima)
+                    }
+                }
             }
         };
         // an export read back keeps its model's fillet unless the request overrides it

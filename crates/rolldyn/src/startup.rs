@@ -8,6 +8,8 @@ use crate::analysis::{Analysis, Context};
 use crate::failure::Failure;
 use crate::model_source::ModelSource;
 use crate::observer::{Observer, Progress};
+use crate::output::out_dir;
+use rolldyn_output::run_state::{StateFile, fingerprint};
 use crate::table::{Table, Tables};
 use rolldyn_dynamics::output::{OutputSink, RevolutionSummary, Snapshot};
 use rolldyn_model::FrozenPoint;
@@ -19,6 +21,7 @@ use serde::{Deserialize, Serialize};
 use std::fmt;
 use std::ops::ControlFlow;
 use std::path::PathBuf;
+use std::sync::Mutex;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// Below this inner-ring speed a frozen point has no cage motion to simulate (the start at
@@ -44,7 +47,14 @@ pub struct StartupRequest {
     /// Output folder for startup.csv, startup.parquet and the SVG plots (default
     /// `out/<model file name>-startup`).
     pub out: Option<PathBuf>,
+    /// Continue the run killed or interrupted in `out`: the points it finished (stored in
+    /// `startup.state` as each one ends) are kept, the others run.
+    pub resume: bool,
 }
+
+/// The file of the output folder that holds the finished points of its run
+/// ([`rolldyn_output::run_state`]).
+pub const STATE_FILE: &str = "startup.state";
 
 /// The frozen points' figures.
 #[derive(Clone, Debug, Serialize)]
@@ -184,6 +194,19 @@ impl Analysis for Startup {
             revolutions,
             average,
         };
+        let store = StateFile::new(
+            out_dir(&out)?.join(STATE_FILE),
+            fingerprint(&format!("startup\n{model:?}\n{revolutions:?}\n{average:?}")),
+        );
+        let finished: Vec<FrozenPointRow> = match request.resume {
+            true => store
+                .load()
+                .map_err(|e| Failure::Input(e.to_string()))?
+                .unwrap_or_default(),
+            false => Vec::new(),
+        };
+        let finished = Mutex::new(finished);
+        let store_error = Mutex::new(None);
         let observer = context.observer;
         let done = AtomicUsize::new(0);
         let progress = |r: &FrozenPointRow| {
@@ -205,17 +228,38 @@ impl Analysis for Startup {
                 )),
             });
         };
-        let rows = run_points(
-            &points,
-            jobs,
-            &|p: &FrozenPoint| analyse(&model, p, settings, observer),
-            &progress,
-        )
-        .map_err(|e| Failure::Run(e.to_string()))?;
+        let stored_or_analysed = |p: &FrozenPoint| {
+            let held = "no panic while the lock is held";
+            let stored = finished
+                .lock()
+                .expect(held)
+                .iter()
+                .find(|r| r.label == p.label && r.time_s == p.time)
+                .cloned();
+            if let Some(row) = stored {
+                return row;
+            }
+            let row = analyse(&model, p, settings, observer);
+            // a point cut short by the stop request is not finished
+            if !observer.stop_requested() {
+                let mut done = finished.lock().expect(held);
+                done.push(row.clone());
+                if let Err(e) = store.store(&*done) {
+                    store_error.lock().expect(held).get_or_insert(e);
+                }
+            }
+            row
+        };
+        let rows = run_points(&points, jobs, &stored_or_analysed, &progress)
+            .map_err(|e| Failure::Run(e.to_string()))?;
+        if let Some(e) = store_error.into_inner().expect("no panic while the lock is held") {
+            return Err(Failure::Run(e.to_string()));
+        }
         if observer.stop_requested() {
-            return Err(Failure::Run(
-                "startup: interrupted; no tables written".into(),
-            ));
+            return Err(Failure::Run(format!(
+                "startup: interrupted; no tables written (--resume continues from the points finished, stored in {})",
+                store.path().display()
+            )));
         }
         write_outputs(&out, model.bearing.name(), &rows)
             .map_err(|e| Failure::Run(e.to_string()))?;

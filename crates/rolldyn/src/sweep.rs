@@ -256,6 +256,7 @@ fn wear(
         &Overrides::default(),
         settings,
         Some(out),
+        false,
         &mut |_| ControlFlow::Continue(()),
     )
     .map_err(|e| e.to_string())?;
@@ -298,7 +299,7 @@ fn fatigue(
     cache: &Path,
 ) -> Result<BTreeMap<String, Figure>, String> {
     std::fs::create_dir_all(out).map_err(|e| format!("cannot create {}: {e}", out.display()))?;
-    let (export, maxima, _) = record_loads(&model, &Overrides::default(), settings, &mut |_, _| {
+    let (export, maxima, _) = record_loads(&model, &Overrides::default(), settings, None, &mut |_, _| {
         std::ops::ControlFlow::Continue(())
     })
     .map_err(|e| e.to_string())?;

@@ -12,9 +12,10 @@ use crate::run_record::{ModelOrigin, finish_out_folder};
 use crate::table::{Table, Tables};
 use rolldyn_report::RunKind;
 use rolldyn_units::{Length, Quantity, Time};
-use rolldyn_wear::study::{WearAnswer, run_wear};
+use rolldyn_output::run_state::{StateFile, fingerprint};
+use rolldyn_wear::study::{STATE_FILE, WearAnswer, run_wear};
 use rolldyn_wear::tapered::{
-    TaperedPeriod, TaperedWearSettings, run_tapered_life, write_tapered_report,
+    TaperedPeriod, TaperedWearSettings, run_tapered_life_from, write_tapered_report,
 };
 use rolldyn_wear::{
     ExposureWidth, OperabilityLimits, PeriodControl, PressureModel, StopReason, Surface, WearError,
@@ -241,6 +242,10 @@ pub struct WearRequest {
     pub report: bool,
     /// The most recalculation periods the life may take (default [`DEFAULT_MAX_PERIODS`]).
     pub max_periods: u64,
+    /// Continue the run whose state the output folder holds (`wear.state`, stored after every
+    /// period) with the same inputs: the periods done are kept, the tables cut back to them;
+    /// a folder without a stored state starts from the beginning.
+    pub resume: bool,
 }
 
 impl Default for WearRequest {
@@ -262,6 +267,7 @@ impl Default for WearRequest {
             out: None,
             report: false,
             max_periods: DEFAULT_MAX_PERIODS,
+            resume: false,
         }
     }
 }
@@ -673,6 +679,7 @@ fn run_cylindrical(
         &request.operating.overrides(),
         &settings,
         Some(&dir),
+        request.resume,
         &mut |p| {
             let message = format!(
                 "period {} ({:.0} h): roller {:.2} µm, inner raceway {:.2} µm, bar {:.2} µm",
@@ -717,10 +724,26 @@ fn run_tapered(
     let dir = out_dir(&output_folder(request, context, true))?;
     let wall = std::time::Instant::now();
     let life_h = settings.life_s / HOUR;
-    let life = run_tapered_life(&base, &settings, &mut |p| {
-        period_done(context, p.time_h, life_h, period_message(p))
+    let store = StateFile::new(
+        dir.join(STATE_FILE),
+        fingerprint(&format!("tapered wear\n{base:?}\n{settings:?}")),
+    );
+    let start = match request.resume {
+        true => store.load().map_err(|e| Failure::Input(e.to_string()))?,
+        false => None,
+    };
+    let mut stored = Ok(());
+    let life = run_tapered_life_from(&base, &settings, start, &mut |state| {
+        stored = store.store(state);
+        let p = state.periods.last().expect("a period ended");
+        match stored {
+            // what is not stored cannot be resumed: stop here
+            Err(_) => ControlFlow::Break(()),
+            Ok(()) => period_done(context, p.time_h, life_h, period_message(p)),
+        }
     })
     .map_err(failure)?;
+    stored.map_err(|e| Failure::Run(e.to_string()))?;
     let plots = write_tapered_report(&dir, &life, settings.method)
         .map_err(|e| Failure::Run(e.to_string()))?;
     if life.life_h < life_h * (1.0 - 1e-9) && context.observer.stop_requested() {

@@ -19,7 +19,7 @@ use std::path::Path;
 pub struct StartupError(pub String);
 
 /// The figures of one frozen point (SI units; NaN where a value is not available).
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, serde::Deserialize)]
 pub struct FrozenPointRow {
     /// Label of the point (e.g. the seed's point number).
     pub label: String,

@@ -51,8 +51,8 @@ fn main() -> Result<(), String> {
     let run = |control: PeriodControl| -> Result<(LifeRun, f64), String> {
         let wall = std::time::Instant::now();
         let label = format!("{control:?}");
-        let life = run_life(&inputs, &settings(control), &mut |p, _| {
-            eprintln!("{label}: {:.0} h", p.time_h);
+        let life = run_life(&inputs, &settings(control), None, &mut |state| {
+            eprintln!("{label}: {:.0} h", state.time_s / HOUR);
             std::ops::ControlFlow::Continue(())
         })
         .map_err(|e| e.to_string())?;

@@ -28,7 +28,9 @@ pub mod wear_line;
 pub mod worn;
 pub mod worn_model;
 
-pub use life::{LifeInputs, LifeRun, PeriodRecord, StopReason, halved_period_check, run_life};
+pub use life::{
+    LifeInputs, LifeRun, LifeState, PeriodRecord, StopReason, halved_period_check, run_life,
+};
 pub use rates::SurfaceWear;
 pub use settings::{
     ExposureWidth, OperabilityLimits, PeriodControl, PressureModel, WearMethod, WearSettings,

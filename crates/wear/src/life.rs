@@ -18,7 +18,7 @@ use std::ops::ControlFlow;
 use std::time::Instant;
 
 /// One period of the life loop.
-#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct PeriodRecord {
     /// 1, 2, …
     pub index: usize,
@@ -76,7 +76,7 @@ pub struct LifeInputs<'a> {
 }
 
 /// The wear rates of one geometry and what they cost.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, serde::Serialize, serde::Deserialize)]
 pub struct RatesRun {
     pub rates: SurfaceWear,
     /// mean cage speed over the recorded revolutions, rad/s
@@ -212,41 +212,82 @@ fn limit_reached(settings: &WearSettings, depth: &SurfaceWear) -> Option<StopRea
     deepest.map(StopReason::DepthLimit)
 }
 
-/// Runs the life loop; `on_period` sees every accepted period with the depth at its end (for
-/// streaming outputs and progress) and may end the run there ([`StopReason::Interrupted`]).
+/// Where a life run stands after an accepted period: everything the loop needs to go on (a
+/// resumable run stores it after every period and gives it back to [`run_life`]).
+#[derive(Debug, Clone, serde::Serialize, serde::Deserialize)]
+pub struct LifeState {
+    /// the accepted periods so far
+    pub periods: Vec<PeriodRecord>,
+    /// accumulated depth, m
+    pub depth: SurfaceWear,
+    /// the rates of the geometry worn by `depth`
+    pub current: RatesRun,
+    /// operating time, s
+    pub time_s: f64,
+    /// the next period (before a schedule or the automatic control changes it), s
+    pub period_s: f64,
+    /// the rate changes of the last accepted period (automatic control)
+    pub previous_change: Option<PerSurface<f64>>,
+    /// surfaces whose rate change did not shrink when a period was halved: not caused by the
+    /// period's length (jumps between coexisting dynamic regimes, scatter); they no longer
+    /// decide the period for the rest of the run
+    pub insensitive: PerSurface<bool>,
+}
+
+/// Runs the life loop from the unworn bearing, or from `start` (a state [`run_life`] gave to
+/// `on_period` of a run with the same inputs and settings); `on_period` sees the state after
+/// every accepted period (for streaming outputs, stored state and progress) and may end the
+/// run there ([`StopReason::Interrupted`]).
 pub fn run_life(
     inputs: &LifeInputs,
     settings: &WearSettings,
-    on_period: &mut dyn FnMut(&PeriodRecord, &SurfaceWear) -> ControlFlow<()>,
+    start: Option<LifeState>,
+    on_period: &mut dyn FnMut(&LifeState) -> ControlFlow<()>,
 ) -> Result<LifeRun, WearError> {
     settings.validate().map_err(WearError::Input)?;
     let hour = 3600.0;
     let positions = inputs.bearing.roller.slices().position;
     let lines = positions.len();
-    let mut depth = SurfaceWear::zero(lines, settings.angle_bins, inputs.bearing.roller_count);
+    let resumed = start.is_some();
+    let mut state = match start {
+        Some(state) => state,
+        None => {
+            let depth =
+                SurfaceWear::zero(lines, settings.angle_bins, inputs.bearing.roller_count);
+            LifeState {
+                periods: Vec::new(),
+                current: rates_of(inputs, &positions, &depth, settings)?,
+                depth,
+                time_s: 0.0,
+                period_s: settings.period.initial_s(),
+                previous_change: None,
+                insensitive: PerSurface::from_fn(|_| false),
+            }
+        }
+    };
     // the first period books the run at the unworn geometry too
-    let mut current = rates_of(inputs, &positions, &depth, settings)?;
-    let (mut dynamics_s, mut wear_s) = (current.dynamics_s, current.wear_s);
-    let mut period = settings.period.initial_s();
+    let (mut dynamics_s, mut wear_s) = match resumed {
+        true => (0.0, 0.0),
+        false => (state.current.dynamics_s, state.current.wear_s),
+    };
     let minimum = match &settings.period {
         PeriodControl::Auto { minimum_s, .. } => *minimum_s,
         _ => f64::INFINITY,
     };
-    let mut previous_change: Option<PerSurface<f64>> = None;
-    // surfaces whose rate change did not shrink when a period was halved: not caused by the
-    // period's length (jumps between coexisting dynamic regimes, scatter); they no longer
-    // decide the period for the rest of the run
-    let mut insensitive = PerSurface::from_fn(|_| false);
-    let (mut time, mut periods, mut stop) = (0.0, Vec::new(), StopReason::LifeReached);
-    while time < settings.life_s * (1.0 - 1e-12) {
+    // a resumed run may have stopped at a limit
+    let mut stop = limit_reached(settings, &state.depth).filter(|_| resumed);
+    while stop.is_none() && state.time_s < settings.life_s * (1.0 - 1e-12) {
+        let time = state.time_s;
         if let PeriodControl::Schedule(list) = &settings.period {
-            period = list[periods.len().min(list.len() - 1)];
+            state.period_s = list[state.periods.len().min(list.len() - 1)];
         }
+        let mut period = state.period_s;
+        let current = &state.current;
         let mut halvings = 0;
         let mut trial_change: Option<PerSurface<f64>> = None;
         let (next_depth, next, step) = loop {
             let step = period.min(settings.life_s - time);
-            let mut trial = depth.clone();
+            let mut trial = state.depth.clone();
             trial.add_scaled(&current.rates, step);
             let next = rates_of(inputs, &positions, &trial, settings)?;
             dynamics_s += next.dynamics_s;
@@ -258,14 +299,20 @@ pub fn run_life(
             if let Some(before) = &trial_change {
                 for (s, c) in raw.iter() {
                     if c.abs() > PERIOD_SENSITIVITY * before.get(s).abs() {
-                        insensitive.set(s, true);
+                        state.insensitive.set(s, true);
                     }
                 }
             }
             trial_change = Some(raw);
-            let change = PerSurface::from_fn(|s| if insensitive.get(s) { 0.0 } else { raw.get(s) });
+            let change = PerSurface::from_fn(|s| {
+                if state.insensitive.get(s) {
+                    0.0
+                } else {
+                    raw.get(s)
+                }
+            });
             if period / 2.0 >= minimum
-                && period_too_long(&settings.period, &change, previous_change.as_ref())
+                && period_too_long(&settings.period, &change, state.previous_change.as_ref())
             {
                 period /= 2.0;
                 halvings += 1;
@@ -274,12 +321,12 @@ pub fn run_life(
             if halvings == 0 && steady(&settings.period, &change) {
                 period = (2.0 * period).min(settings.period.initial_s());
             }
-            previous_change = Some(change);
+            state.previous_change = Some(change);
             break (trial, next, step);
         };
-        time += step;
+        let time = time + step;
         let record = PeriodRecord {
-            index: periods.len() + 1,
+            index: state.periods.len() + 1,
             time_h: time / hour,
             period_h: step / hour,
             max_rate_m_s: current.rates.max_per_surface(),
@@ -292,26 +339,22 @@ pub fn run_life(
             dynamics_wall_s: dynamics_s,
             wear_wall_s: wear_s,
         };
-        let flow = on_period(&record, &next_depth);
-        periods.push(record);
-        (depth, current, dynamics_s, wear_s) = (next_depth, next, 0.0, 0.0);
-        if let Some(reason) = limit_reached(settings, &depth) {
-            stop = reason;
-            break;
-        }
-        if flow.is_break() {
-            stop = StopReason::Interrupted;
-            break;
-        }
+        state.periods.push(record);
+        (state.depth, state.current, state.time_s, state.period_s) =
+            (next_depth, next, time, period);
+        (dynamics_s, wear_s) = (0.0, 0.0);
+        let flow = on_period(&state);
+        stop = limit_reached(settings, &state.depth)
+            .or(flow.is_break().then_some(StopReason::Interrupted));
     }
-    let worn = worn_bearing(inputs.bearing, &positions, &depth)?;
+    let worn = worn_bearing(inputs.bearing, &positions, &state.depth)?;
     Ok(LifeRun {
-        periods,
-        depth,
+        periods: state.periods,
+        depth: state.depth,
         line_positions_m: positions,
         worn,
-        life_h: time / hour,
-        stop,
+        life_h: state.time_s / hour,
+        stop: stop.unwrap_or(StopReason::LifeReached),
     })
 }
 
@@ -334,7 +377,7 @@ pub fn halved_period_check(
         limits: Default::default(),
         ..settings.clone()
     };
-    let check = run_life(inputs, &halved, &mut |_, _| ControlFlow::Continue(()))?;
+    let check = run_life(inputs, &halved, None, &mut |_| ControlFlow::Continue(()))?;
     let difference = PerSurface::from_fn(|s| {
         let (a, b) = (run.depth.max(s), check.depth.max(s));
         if b > 0.0 { a / b - 1.0 } else { 0.0 }

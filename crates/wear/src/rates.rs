@@ -43,8 +43,12 @@ impl ContactDiagnostics {
 
 impl serde::Serialize for ContactDiagnostics {
     /// The fields by name; a value that is not finite follows docs/outputs.md (`null` and a
-    /// reason under `"non_finite"`).
+    /// reason under `"non_finite"`). A binary format (a stored run state) gets the
+    /// [`ContactDiagnostics::values`] as they are.
     fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        if !serializer.is_human_readable() {
+            return self.values().serialize(serializer);
+        }
         let values = [
             ("equivalent_force_n", self.equivalent_force_n),
             ("mean_sliding_speed_m_s", self.mean_sliding_speed_m_s),
@@ -68,13 +72,33 @@ impl serde::Serialize for ContactDiagnostics {
     }
 }
 
+impl<'de> serde::Deserialize<'de> for ContactDiagnostics {
+    /// The binary form of [`serde::Serialize`]: the [`ContactDiagnostics::values`].
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        let [
+            equivalent_force_n,
+            mean_sliding_speed_m_s,
+            contact_fraction,
+            mean_lambda,
+            boundary_fraction,
+        ] = <[f64; 5]>::deserialize(deserializer)?;
+        Ok(Self {
+            equivalent_force_n,
+            mean_sliding_speed_m_s,
+            contact_fraction,
+            mean_lambda,
+            boundary_fraction,
+        })
+    }
+}
+
 /// The contact kinds of [`ContactDiagnostics`], in order.
 pub const CONTACT_KINDS: [&str; 4] = ["inner_raceway", "outer_raceway", "cage_bar", "rib"];
 
 /// Wear on the wear lines: the roller and bar lines are the roller's slice centres; the
 /// raceway maps are lines × angular bins (line-major); the roller end and the rib carry one
 /// line each.
-#[derive(Debug, Clone, PartialEq, Default)]
+#[derive(Debug, Clone, PartialEq, Default, serde::Serialize, serde::Deserialize)]
 pub struct SurfaceWear {
     pub lines: usize,
     pub bins: usize,
@@ -189,5 +213,39 @@ impl SurfaceWear {
         2.0 * self.max(Surface::InnerRaceway)
             + 2.0 * self.max(Surface::OuterRaceway)
             + 4.0 * self.max(Surface::Roller)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rolldyn_output::run_state::{StateFile, fingerprint};
+
+    /// A stored run state keeps every value: the diagnostics whose JSON drops what is not
+    /// finite, and the per-surface maps.
+    #[test]
+    fn a_stored_wear_state_reads_back_bit_for_bit() {
+        let mut wear = SurfaceWear::zero(2, 3, 4);
+        wear.roller[1] = 0.1 + 0.2;
+        wear.diagnostics[2] = ContactDiagnostics {
+            equivalent_force_n: 12.5,
+            mean_sliding_speed_m_s: f64::INFINITY,
+            contact_fraction: -0.0,
+            mean_lambda: f64::NAN,
+            boundary_fraction: 5e-324,
+        };
+        let depths = PerSurface::from_fn(|s| s as usize as f64 * 1e-7);
+        let dir = std::env::temp_dir().join(format!("rolldyn-wear-state-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let file = StateFile::new(dir.join("wear.state"), fingerprint("test"));
+        file.store(&(&wear, depths)).unwrap();
+        let (back, back_depths): (SurfaceWear, PerSurface<f64>) = file.load().unwrap().unwrap();
+        let bits = |d: &ContactDiagnostics| d.values().map(f64::to_bits);
+        for (a, b) in wear.diagnostics.iter().zip(&back.diagnostics) {
+            assert_eq!(bits(a), bits(b));
+        }
+        assert_eq!(back.roller, wear.roller);
+        assert_eq!(back_depths, depths);
+        std::fs::remove_dir_all(dir).unwrap();
     }
 }

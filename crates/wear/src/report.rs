@@ -5,7 +5,7 @@ use crate::life::PeriodRecord;
 use crate::rates::{ContactDiagnostics, SurfaceWear};
 use crate::surface::Surface;
 use rolldyn_geometry::angle_bin_centre_rad;
-use rolldyn_output::{Formats, OutputError, TableWriter};
+use rolldyn_output::{Formats, KeptRows, OutputError, TableWriter};
 use rolldyn_plot::{Field, Labels, MapLabels, PlotError, Series, line_plot, map_plot};
 use std::path::{Path, PathBuf};
 
@@ -68,10 +68,20 @@ fn names(n: &[&str]) -> Vec<String> {
 }
 
 /// The roller and bar depth profiles at the end of one period.
+#[derive(Debug, Clone, serde::Serialize, serde::Deserialize)]
 struct ProfileHistory {
     time_h: f64,
     roller: Vec<f64>,
     bar: Vec<f64>,
+}
+
+/// What the stored state of a life run notes of its tables: the rows of each table
+/// (periods, roller and bar profiles, inner and outer raceway maps) and the profile histories
+/// of the plots, after the last stored period.
+#[derive(Debug, Clone, serde::Serialize, serde::Deserialize)]
+pub struct WearTablesNote {
+    kept: [KeptRows; 5],
+    history: Vec<ProfileHistory>,
 }
 
 /// The tables of a life run, written as the periods come.
@@ -89,9 +99,34 @@ pub struct WearTables {
 
 impl WearTables {
     pub fn create(dir: &Path, positions_m: &[f64]) -> Result<Self, OutputError> {
-        let f = Formats::default();
+        Self::open(dir, positions_m, None, &[])
+    }
+
+    /// Continues the tables of an interrupted run in `dir` after its `records` (the periods
+    /// of its stored state) and the rows its `note` kept; later rows are dropped and the
+    /// Parquet files rebuilt ([`TableWriter::resume`]).
+    pub fn resume(
+        dir: &Path,
+        positions_m: &[f64],
+        note: &WearTablesNote,
+        records: &[PeriodRecord],
+    ) -> Result<Self, OutputError> {
+        Self::open(dir, positions_m, Some(note), records)
+    }
+
+    fn open(
+        dir: &Path,
+        positions_m: &[f64],
+        note: Option<&WearTablesNote>,
+        records: &[PeriodRecord],
+    ) -> Result<Self, OutputError> {
+        let fresh = KeptRows { rows: 0, digest: 0 };
+        let [periods, roller, bar, inner, outer] = note.map_or([fresh; 5], |n| n.kept);
+        let table = |stem: &str, names: &[String], kept: KeptRows| {
+            TableWriter::resume(dir, stem, names, Formats::default(), kept, |_| {})
+        };
         let profile = names(&["period", "time_h", "x_mm", "depth_um", "depth_from_bar_um"]);
-        let bar = names(&[
+        let bar_columns = names(&[
             "period",
             "time_h",
             "x_mm",
@@ -101,20 +136,30 @@ impl WearTables {
         let map = names(&["period", "time_h", "axial_mm", "angle_deg", "depth_um"]);
         Ok(Self {
             dir: dir.to_path_buf(),
-            periods: TableWriter::create(dir, "periods", &period_columns(), f)?,
-            roller: TableWriter::create(dir, "roller-profile", &profile, f)?,
-            bar: TableWriter::create(dir, "bar-profile", &bar, f)?,
+            periods: table("periods", &period_columns(), periods)?,
+            roller: table("roller-profile", &profile, roller)?,
+            bar: table("bar-profile", &bar_columns, bar)?,
             maps: [
-                TableWriter::create(dir, "inner-raceway-map", &map, f)?,
-                TableWriter::create(dir, "outer-raceway-map", &map, f)?,
+                table("inner-raceway-map", &map, inner)?,
+                table("outer-raceway-map", &map, outer)?,
             ],
-            history: Vec::new(),
-            records: Vec::new(),
+            history: note.map_or_else(Vec::new, |n| n.history.clone()),
+            records: records.to_vec(),
             positions_mm: positions_m.iter().map(|x| x * 1e3).collect(),
         })
     }
 
-    /// Writes one period's rows.
+    /// The rows written so far and the plots' histories, for the stored state.
+    pub fn note(&self) -> WearTablesNote {
+        let [inner, outer] = &self.maps;
+        WearTablesNote {
+            kept: [&self.periods, &self.roller, &self.bar, inner, outer].map(TableWriter::kept),
+            history: self.history.clone(),
+        }
+    }
+
+    /// Writes one period's rows and hands them to the system (a stored state never runs
+    /// ahead of the tables).
     pub fn period(&mut self, p: &PeriodRecord, depth: &SurfaceWear) -> Result<(), OutputError> {
         self.periods.write_row(&period_row(p))?;
         let (i, t) = (p.index as f64, p.time_h);
@@ -140,7 +185,8 @@ impl WearTables {
                 }
             }
         }
-        for t in [&mut self.periods, &mut self.roller, &mut self.bar] {
+        let [inner, outer] = &mut self.maps;
+        for t in [&mut self.periods, &mut self.roller, &mut self.bar, inner, outer] {
             t.flush()?;
         }
         self.history.push(ProfileHistory {

@@ -3,19 +3,30 @@
 
 use crate::WearError;
 use crate::bearing_data::ribs_on_inner_ring;
-use crate::life::{LifeInputs, PeriodRecord, StopReason, halved_period_check, run_life};
+use crate::life::{
+    LifeInputs, LifeState, PeriodRecord, StopReason, halved_period_check, run_life,
+};
 use crate::rates::{CONTACT_KINDS, ContactDiagnostics};
-use crate::report::WearTables;
+use crate::report::{WearTables, WearTablesNote};
 use crate::settings::{PeriodControl, WearMethod, WearSettings};
 use crate::surface::PerSurface;
 use crate::worn_model::write_worn_model;
 use rolldyn_model::Model;
+use rolldyn_output::run_state::{StateFile, fingerprint};
 use rolldyn_setup::Overrides;
 use serde::Serialize;
 use std::collections::BTreeMap;
 use std::ops::ControlFlow;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
+
+/// The stored state of a life run with an output folder: where the life loop stands and the
+/// rows of its tables.
+#[derive(serde::Serialize, serde::Deserialize)]
+struct StoredLife {
+    life: LifeState,
+    tables: WearTablesNote,
+}
 
 /// One period in the answer.
 #[derive(Debug, Clone, Serialize)]
@@ -78,14 +89,21 @@ pub struct WearAnswer {
     pub files: Vec<String>,
 }
 
-/// Runs the life of `model` and writes its outputs into `out` (when given); `progress` sees
-/// each accepted period and may end the run there (the answer's `stop` is then
-/// [`StopReason::Interrupted`], the outputs are those of the periods run).
+/// The file of an output folder that holds the stored state of its life run
+/// ([`rolldyn_output::run_state`]), replaced after every period.
+pub const STATE_FILE: &str = "wear.state";
+
+/// Runs the life of `model` and writes its outputs into `out` (when given), storing the run's
+/// state there after every period; with `resume`, continues the run whose state `out` holds
+/// (from the start when it holds none). `progress` sees each accepted period and may end the
+/// run there (the answer's `stop` is then [`StopReason::Interrupted`], the outputs are those
+/// of the periods run).
 pub fn run_wear(
     model: &Model,
     overrides: &Overrides,
     settings: &WearSettings,
     out: Option<&Path>,
+    resume: bool,
     progress: &mut dyn FnMut(&PeriodRecord) -> ControlFlow<()>,
 ) -> Result<WearAnswer, WearError> {
     let wall = Instant::now();
@@ -104,10 +122,32 @@ pub fn run_wear(
     };
     let output_error = |e: String| WearError::Numerical(e);
     let positions = bearing.roller.slices().position;
+    let inputs_text = format!(
+        "wear\n{bearing:?}\n{lubrication:?}\n{:?}\n{conditions:?}\n{settings:?}",
+        model.dynamics
+    );
+    let store = out.map(|dir| StateFile::new(dir.join(STATE_FILE), fingerprint(&inputs_text)));
+    let stored: Option<StoredLife> = match (&store, resume) {
+        (Some(store), true) => store.load().map_err(|e| WearError::Input(e.to_string()))?,
+        (None, true) => {
+            return Err(WearError::Input(
+                "--resume continues the run of an output folder: give --out".into(),
+            ));
+        }
+        (_, false) => None,
+    };
     let mut tables = out
-        .map(|dir| WearTables::create(dir, &positions))
-        .transpose()
-        .map_err(|e| output_error(e.to_string()))?;
+        .map(|dir| match &stored {
+            Some(s) => WearTables::resume(dir, &positions, &s.tables, &s.life.periods).map_err(
+                |e| {
+                    WearError::Input(format!(
+                        "{e} (--resume continues the output folder of the run that stored {STATE_FILE})"
+                    ))
+                },
+            ),
+            None => WearTables::create(dir, &positions).map_err(|e| output_error(e.to_string())),
+        })
+        .transpose()?;
     let mut table_error = None;
     let locate = |e: WearError| match e {
         WearError::Key { key, reason } => {
@@ -115,11 +155,21 @@ pub fn run_wear(
         }
         e => e,
     };
-    let run = run_life(&inputs, settings, &mut |record, depth| {
-        if let Some(t) = tables.as_mut()
-            && let Err(e) = t.period(record, depth)
-        {
-            table_error.get_or_insert(e.to_string());
+    let run = run_life(&inputs, settings, stored.map(|s| s.life), &mut |state| {
+        let record = state.periods.last().expect("a period was accepted");
+        if let (Some(t), None) = (tables.as_mut(), &table_error) {
+            let stored = t.period(record, &state.depth).map_err(|e| e.to_string()).and_then(|_| {
+                let life = StoredLife {
+                    life: state.clone(),
+                    tables: t.note(),
+                };
+                store.as_ref().map_or(Ok(()), |s| s.store(&life).map_err(|e| e.to_string()))
+            });
+            if let Err(e) = stored {
+                table_error = Some(e);
+                // what is not stored cannot be resumed: stop here
+                return ControlFlow::Break(());
+            }
         }
         progress(record)
     })

@@ -3,7 +3,7 @@
 use serde::Serialize;
 
 /// A surface whose wear rolldyn tracks (seed 000 §3.1.1.5–3.1.1.7).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, serde::Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Surface {
     /// the roller's rolling surface (worn by both raceways and the cage bar)
@@ -75,5 +75,21 @@ impl<T: Copy + Serialize> Serialize for PerSurface<T> {
             map.serialize_entry(s.name(), &v)?;
         }
         map.end()
+    }
+}
+
+impl<'de, T: Copy + serde::Deserialize<'de>> serde::Deserialize<'de> for PerSurface<T> {
+    /// The map [`Serialize`] writes: one value under each surface's name.
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        let map = std::collections::BTreeMap::<Surface, T>::deserialize(deserializer)?;
+        let value = |s: Surface| {
+            map.get(&s)
+                .copied()
+                .ok_or_else(|| serde::de::Error::custom(format!("no value of {}", s.name())))
+        };
+        let values: Vec<T> = Surface::ALL.into_iter().map(value).collect::<Result<_, _>>()?;
+        Ok(Self {
+            values: values.try_into().ok().expect("one value per surface"),
+        })
     }
 }

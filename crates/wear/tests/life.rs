@@ -24,6 +24,7 @@ fn two_periods_wear_every_surface_and_write_a_worn_model_that_loads() {
         &Overrides::default(),
         &settings,
         Some(&dir),
+        false,
         &mut |p| {
             seen.push(p.time_h);
             std::ops::ControlFlow::Continue(())

@@ -70,6 +70,10 @@ pub struct Args {
     /// Folder of the cached CalculiX unit cases (default `out/calculix-cache`).
     #[arg(long)]
     pub cache: Option<PathBuf>,
+    /// Continue the run killed or interrupted in the `--out` folder (its `fatigue.state`: the
+    /// dynamics after each settling revolution, then the recorded loads).
+    #[arg(long, requires = "out", conflicts_with = "loads")]
+    pub resume: bool,
     /// Print the result as JSON.
     #[arg(long)]
     pub json: bool,
@@ -119,6 +123,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
         out,
         report,
         cache,
+        resume,
         json,
         quiet,
     } = args;
@@ -146,6 +151,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
         out,
         report,
         cache,
+        resume,
     };
     let bar = Bar::new(quiet || json, "fatigue");
     let result = Fatigue::run(&request, &context(model.as_deref(), &bar));

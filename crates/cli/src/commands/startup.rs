@@ -29,6 +29,10 @@ pub struct Args {
     /// `out/<model file name>-startup`).
     #[arg(long)]
     pub out: Option<PathBuf>,
+    /// Continue the run killed or interrupted in the output folder: the points it finished
+    /// (stored in `startup.state` as each one ends) are kept, the others run.
+    #[arg(long)]
+    pub resume: bool,
     /// Print the table as JSON.
     #[arg(long)]
     pub json: bool,
@@ -44,6 +48,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
         average: args.average,
         points: args.points,
         out: args.out,
+        resume: args.resume,
     };
     let lines = ProgressLines { quiet: args.quiet };
     let result = Startup::run(&request, &context(Some(&args.model), &lines))?;

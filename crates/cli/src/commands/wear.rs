@@ -68,6 +68,10 @@ pub struct Args {
     /// Write the HTML report of the output folder (`report.html`) at the end of the run.
     #[arg(long)]
     pub report: bool,
+    /// Continue the run killed or interrupted in the output folder (its `wear.state`, stored
+    /// after every period), with the same model and options: the periods done are kept.
+    #[arg(long)]
+    pub resume: bool,
     /// Print the result as JSON.
     #[arg(long)]
     pub json: bool,
@@ -94,6 +98,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
         out: args.out,
         report: args.report,
         max_periods: args.max_periods,
+        resume: args.resume,
     };
     let bar = Bar::new(args.quiet || args.json, "wear");
     let result = Wear::run(&request, &context(args.model.as_deref(), &bar));

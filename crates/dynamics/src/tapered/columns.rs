@@ -66,6 +66,27 @@ pub fn sample_row(s: &TaperedSample) -> [f64; 26] {
     ]
 }
 
+/// The sample whose [`sample_row`] is `r` (a row read back).
+pub fn sample_from_row(r: &[f64; 26]) -> TaperedSample {
+    let pair = |k: usize| [r[k], r[k + 1]];
+    TaperedSample {
+        time_s: r[0],
+        inner_ring: [r[1], r[2], r[3]],
+        cage_angle: pair(4),
+        cage_speed: pair(6),
+        max_cone_load: pair(8),
+        rollers_near_max: [r[10] as usize, r[11] as usize],
+        max_rib_force: pair(12),
+        total_rib_force: pair(14),
+        cone_sliding: pair(16),
+        cup_sliding: pair(18),
+        max_slip: r[20],
+        tracked_large_rib: pair(21),
+        tracked_small_rib: pair(23),
+        rib_ehl_share: r[25],
+    }
+}
+
 /// The summary as named values (SI; frequencies Hz), in print order.
 pub fn summary_entries(s: &TaperedSummary) -> Vec<(String, f64)> {
     let mut v: Vec<(String, f64)> = vec![

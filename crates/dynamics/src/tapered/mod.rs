@@ -25,11 +25,13 @@ mod run;
 mod sample;
 mod summary;
 
-pub use columns::{SAMPLE_COLUMNS, sample_row, summary_entries};
+pub use columns::{SAMPLE_COLUMNS, sample_from_row, sample_row, summary_entries};
 pub use contacts::{ContactRecorder, RibContact, RollerContacts, SliceContacts};
 pub use layout::TaperedLayout;
 pub use model::{TaperedModel, TaperedParameters, end_rib_film_limit_force};
 pub use rhs::{RollerReport, TaperedSystem};
-pub use run::{TaperedRun, TaperedRunSettings, initial_state, run, run_recorded};
+pub use run::{
+    TaperedRun, TaperedRunSettings, TaperedSimulation, initial_state, run, run_recorded,
+};
 pub use sample::TaperedSample;
 pub use summary::{TaperedSummary, axial_spectrum, spectrum_peaks, steady_window, summarise};

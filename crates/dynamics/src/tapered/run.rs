@@ -5,8 +5,10 @@ use super::contacts::ContactRecorder;
 use super::layout::TaperedLayout;
 use super::model::TaperedModel;
 use super::rhs::{RollerReport, TaperedSystem};
+use super::columns::{SAMPLE_COLUMNS, sample_from_row, sample_row};
 use super::sample::TaperedSample;
 use super::summary::{TaperedSummary, summarise};
+use crate::checkpoint::{Reader, Writer, fnv1a};
 use crate::error::DynError;
 use crate::integrator::{Dopri5, StepError};
 use crate::layout::{CAGE_DOF, INNER_DOF, ROLLER_DOF, cage, inner_ring, read3, roller, write3};
@@ -191,58 +193,169 @@ pub fn run(
 pub fn run_recorded(
     model: &TaperedModel,
     settings: &TaperedRunSettings,
-    mut recorder: Option<&mut dyn ContactRecorder>,
+    recorder: Option<&mut dyn ContactRecorder>,
     mut progress: impl FnMut(f64) -> ControlFlow<()>,
 ) -> Result<TaperedRun, DynError> {
-    let y0 = initial_state(model, settings.row1_offset_pitch);
-    let (scale_v, rel) = error_scales(model);
-    let set = settings.integrator;
-    let mut dp = stepper(model, y0, scale_v, rel, &set);
-    let mut sys = TaperedSystem::new(model);
-    if recorder.is_some() {
-        sys.record_contacts();
+    let mut sim = TaperedSimulation::new(model, settings, recorder.is_some());
+    sim.run_until(settings.duration_s, recorder, &mut progress)?;
+    Ok(sim.finish())
+}
+
+/// A tapered run that can be taken in pieces, checkpointed and restored: a run split at any
+/// sample, or restored from a [`TaperedSimulation::checkpoint_with`] of one, is the same run
+/// bit for bit.
+pub struct TaperedSimulation<'m> {
+    model: &'m TaperedModel,
+    settings: TaperedRunSettings,
+    dp: Stepper,
+    sys: TaperedSystem<'m>,
+    samples: Vec<TaperedSample>,
+    /// the time of the next sample, s
+    next: f64,
+    fingerprint: u64,
+}
+
+impl<'m> TaperedSimulation<'m> {
+    /// The run of `model` from the seated start; `record_contacts` computes the contact record
+    /// a [`ContactRecorder`] needs.
+    pub fn new(model: &'m TaperedModel, settings: &TaperedRunSettings, record_contacts: bool) -> Self {
+        let y0 = initial_state(model, settings.row1_offset_pitch);
+        let (scale_v, rel) = error_scales(model);
+        let mut sys = TaperedSystem::new(model);
+        if record_contacts {
+            sys.record_contacts();
+        }
+        // the length of the run is not part of its set-up: a resumed run may go further
+        let setup = TaperedRunSettings {
+            duration_s: 0.0,
+            ..*settings
+        };
+        Self {
+            model,
+            settings: *settings,
+            dp: stepper(model, y0, scale_v, rel, &settings.integrator),
+            sys,
+            samples: Vec::new(),
+            next: 0.0,
+            fingerprint: fnv1a(format!("tapered {model:?}{setup:?}").as_bytes()),
+        }
     }
-    let lay = sys.layout;
-    let mut samples = Vec::new();
-    let mut next = 0.0;
-    let mut ybuf = vec![0.0; lay.len()];
-    while next <= settings.duration_s {
-        while dp.t() < next {
-            dp.step(&mut sys, &set)
-                .map_err(|e| step_error(e, dp.t(), &lay))?;
-            if dp.stats().accepted >= set.max_steps {
-                return Err(DynError::StepBudgetExhausted {
-                    time_s: dp.t(),
-                    steps: dp.stats().accepted,
-                });
+
+    /// The time of the last sample taken, s (`None` before the first).
+    pub fn time(&self) -> Option<f64> {
+        self.samples.last().map(|s| s.time_s)
+    }
+
+    /// Integrates and samples every `sample_interval_s` up to `t_end`, handing each sample
+    /// with its contact record to `recorder`; `progress(t)` after every sample may stop the
+    /// run ([`DynError::Interrupted`]).
+    pub fn run_until(
+        &mut self,
+        t_end: f64,
+        mut recorder: Option<&mut dyn ContactRecorder>,
+        progress: &mut dyn FnMut(f64) -> ControlFlow<()>,
+    ) -> Result<(), DynError> {
+        let (model, set) = (self.model, self.settings.integrator);
+        let lay = self.sys.layout;
+        let mut ybuf = vec![0.0; lay.len()];
+        while self.next <= t_end {
+            let next = self.next;
+            let dp = &mut self.dp;
+            while dp.t() < next {
+                dp.step(&mut self.sys, &set)
+                    .map_err(|e| step_error(e, dp.t(), &lay))?;
+                if dp.stats().accepted >= set.max_steps {
+                    return Err(DynError::StepBudgetExhausted {
+                        time_s: dp.t(),
+                        steps: dp.stats().accepted,
+                    });
+                }
+            }
+            if dp.stats().accepted == 0 {
+                ybuf.copy_from_slice(dp.y());
+                let mut dy = vec![0.0; lay.len()];
+                crate::integrator::OdeSystem::rhs_reported(&mut self.sys, 0.0, &ybuf, &mut dy);
+            } else {
+                dp.interpolate(next, &mut ybuf);
+            }
+            let current = sample(model, &lay, next, &ybuf, &self.sys.rollers);
+            if let (Some(r), Some(contacts)) = (recorder.as_deref_mut(), &self.sys.contacts) {
+                r.record(&current, contacts);
+            }
+            self.samples.push(current);
+            self.next += self.settings.sample_interval_s;
+            if progress(next).is_break() {
+                return Err(DynError::Interrupted { time_s: next });
             }
         }
-        if dp.stats().accepted == 0 {
-            ybuf.copy_from_slice(dp.y());
-            let mut dy = vec![0.0; lay.len()];
-            crate::integrator::OdeSystem::rhs_reported(&mut sys, 0.0, &ybuf, &mut dy);
-        } else {
-            dp.interpolate(next, &mut ybuf);
-        }
-        let current = sample(model, &lay, next, &ybuf, &sys.rollers);
-        if let (Some(r), Some(contacts)) = (recorder.as_deref_mut(), &sys.contacts) {
-            r.record(&current, contacts);
-        }
-        samples.push(current);
-        if progress(next).is_break() {
-            return Err(DynError::Interrupted { time_s: next });
-        }
-        next += settings.sample_interval_s;
+        Ok(())
     }
-    let summary = summarise(model, &samples, settings.steady_from_s);
-    Ok(TaperedRun {
-        samples,
-        summary,
-        steps: dp.stats().accepted,
-        rejected_steps: dp.stats().rejected,
-        rhs_evaluations: dp.stats().rhs_evaluations,
-        most_limiting: dp.stats().most_limiting().map(|c| component_name(c, &lay)),
-    })
+
+    /// The run state (integrator, samples so far) with a `note` of the caller's own, given
+    /// back by [`TaperedSimulation::restore`] and covered by the checksum.
+    pub fn checkpoint_with(&self, note: &[u8]) -> Vec<u8> {
+        let mut w = Writer::new();
+        w.u64(self.fingerprint);
+        self.dp.save(&mut w);
+        w.f64(self.next);
+        w.u64(self.samples.len() as u64);
+        for s in &self.samples {
+            for v in sample_row(s) {
+                w.f64(v);
+            }
+        }
+        w.bytes(note);
+        w.seal()
+    }
+
+    /// Restores a checkpoint of a run of the same model and settings (its length aside) and
+    /// returns its note; a damaged checkpoint or one of another run is refused.
+    pub fn restore(&mut self, bytes: &[u8]) -> Result<Vec<u8>, DynError> {
+        let mut r = Reader::open(bytes)?;
+        if r.u64()? != self.fingerprint {
+            return Err(DynError::Checkpoint(
+                "the checkpoint belongs to a different set-up (bearing model, operating conditions, sample interval or integrator settings)".into(),
+            ));
+        }
+        let dp = self.dp.load(&mut r)?;
+        let next = r.f64()?;
+        let count = usize::try_from(r.u64()?)
+            .map_err(|_| DynError::Checkpoint("truncated data".into()))?;
+        let mut samples = Vec::new();
+        let mut row = [0.0; SAMPLE_COLUMNS.len()];
+        for _ in 0..count {
+            for v in row.iter_mut() {
+                *v = r.f64()?;
+            }
+            samples.push(sample_from_row(&row));
+        }
+        let note = r.bytes()?;
+        if !r.at_end() {
+            return Err(DynError::Checkpoint("trailing data".into()));
+        }
+        (self.dp, self.next, self.samples) = (dp, next, samples);
+        // the contact report of the last accepted step: its last evaluation, at the state
+        if self.dp.stats().accepted > 0 {
+            let (t, y) = (self.dp.t(), self.dp.y().to_vec());
+            let mut dy = vec![0.0; y.len()];
+            crate::integrator::OdeSystem::rhs_reported(&mut self.sys, t, &y, &mut dy);
+        }
+        Ok(note)
+    }
+
+    /// The run: its samples, summary and step statistics.
+    pub fn finish(self) -> TaperedRun {
+        let stats = self.dp.stats();
+        let lay = self.sys.layout;
+        TaperedRun {
+            summary: summarise(self.model, &self.samples, self.settings.steady_from_s),
+            steps: stats.accepted,
+            rejected_steps: stats.rejected,
+            rhs_evaluations: stats.rhs_evaluations,
+            most_limiting: stats.most_limiting().map(|c| component_name(c, &lay)),
+            samples: self.samples,
+        }
+    }
 }
 
 /// The integrator of `settings.method` at the start state; for Rosenbrock-W the Jacobian

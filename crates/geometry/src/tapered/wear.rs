@@ -9,7 +9,7 @@ use rolldyn_numerics::table::interpolate_held;
 /// circles being those the seated roller's lines run on (seed 000 §3.2.3: the wear lines are
 /// circles on the roller and on the raceway). Between lines the depth is linear, outside the
 /// lines it is held (seed 000 §3.2.3: "linear interpolation between the lines").
-#[derive(Debug, Clone, PartialEq, Default)]
+#[derive(Debug, Clone, PartialEq, Default, serde::Serialize, serde::Deserialize)]
 pub struct TaperedWear {
     /// (position, depth) on the roller's rolling surface, positions increasing
     pub roller: Vec<(f64, f64)>,

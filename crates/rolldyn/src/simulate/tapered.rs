@@ -1,6 +1,7 @@
 //! `simulate` on a double-row tapered bearing (seed 000 §3.2.1): the run, its table and plots
 //! with `out`, the summary.
 
+use super::checkpoint::{checkpoint_interval, write_checkpoint};
 use super::request::SimulateRequest;
 use super::result::{Run, SimulateResult};
 use crate::analysis::Context;
@@ -10,8 +11,8 @@ use crate::output::out_dir;
 use crate::run_record::{ModelOrigin, finish_out_folder};
 use crate::table::Table;
 use rolldyn_dynamics::tapered::{
-    SAMPLE_COLUMNS, TaperedRun, TaperedRunSettings, TaperedSample, axial_spectrum, run_recorded,
-    sample_row, steady_window, summary_entries,
+    SAMPLE_COLUMNS, TaperedRun, TaperedRunSettings, TaperedSample, TaperedSimulation,
+    axial_spectrum, sample_row, steady_window, summary_entries,
 };
 use rolldyn_output::{Formats, TableWriter};
 use rolldyn_plot::{Labels, Series, line_plot, orbit_plot};
@@ -53,7 +54,12 @@ pub fn run(
     let dir = request.out.as_deref().map(out_dir).transpose()?;
     let observer = context.observer;
     let wall = std::time::Instant::now();
-    let result = run_recorded(&tm, &settings, None, |t| {
+    let mut sim = TaperedSimulation::new(&tm, &settings, false);
+    if let Some(path) = &request.resume {
+        resume(&mut sim, path, t_end)?;
+    }
+    let chunk = checkpoint_interval(request, Some(revolution))?.unwrap_or(t_end);
+    let mut progress = |t: f64| {
         observer.progress(&Progress {
             done: t.min(t_end),
             total: t_end,
@@ -64,8 +70,18 @@ pub fn run(
             true => ControlFlow::Break(()),
             false => ControlFlow::Continue(()),
         }
-    });
-    let outcome = result.map_err(|e| Failure::Run(format!("the simulation stopped: {e}")))?;
+    };
+    let mut target = sim.time().unwrap_or(0.0);
+    let mut result = Ok(());
+    while target < t_end && result.is_ok() {
+        target = (target + chunk).min(t_end);
+        result = sim.run_until(target, None, &mut progress);
+        if let (Some(path), Ok(())) = (&request.checkpoint, &result) {
+            write_checkpoint(path, &sim.checkpoint_with(&[]))?;
+        }
+    }
+    result.map_err(|e| Failure::Run(format!("the simulation stopped: {e}")))?;
+    let outcome = sim.finish();
     let wall_s = wall.elapsed().as_secs_f64();
     if let Some(dir) = &dir {
         write_outputs(dir, &outcome)?;
@@ -101,19 +117,29 @@ pub fn run(
     Ok(result)
 }
 
-/// Refuses (bad input) the options the tapered dynamics does not have yet: checkpoints and the
-/// cage-load export of the machined cage's fatigue analysis.
+/// Refuses (bad input) the option the tapered dynamics does not have: the cage-load export of
+/// the machined cage's fatigue analysis.
 fn refuse_cylindrical_only_options(request: &SimulateRequest) -> Result<(), Failure> {
-    let flags = [
-        ("--checkpoint", request.checkpoint.is_some()),
-        ("--resume", request.resume.is_some()),
-        ("--cage-loads", request.cage_loads.is_some()),
-    ];
-    match flags.iter().find(|(_, given)| *given) {
-        Some((flag, _)) => Err(Failure::Input(format!(
-            "{flag}: not available for a double-row tapered bearing (cylindrical bearings only)"
+    match request.cage_loads.is_some() {
+        true => Err(Failure::Input(
+            "--cage-loads: not available for a double-row tapered bearing (cylindrical bearings only)".into(),
+        )),
+        false => Ok(()),
+    }
+}
+
+/// Restores the checkpoint at `path` into `sim`; refuses one that is damaged, foreign, or
+/// already at or past the end time `t_end` [s]. The tables are written at the end of the run
+/// from every sample, those of the checkpoint included.
+fn resume(sim: &mut TaperedSimulation, path: &Path, t_end: f64) -> Result<(), Failure> {
+    let input = |e: String| Failure::Input(format!("{}: {e}", path.display()));
+    let bytes = std::fs::read(path).map_err(|e| input(e.to_string()))?;
+    sim.restore(&bytes).map_err(|e| input(e.to_string()))?;
+    match sim.time() {
+        Some(t) if t >= t_end => Err(input(format!(
+            "the checkpoint is at t = {t:.6e} s, at or past the end of --duration ({t_end:.6e} s): nothing to simulate; give a longer --duration"
         ))),
-        None => Ok(()),
+        _ => Ok(()),
     }
 }
 

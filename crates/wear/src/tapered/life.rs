@@ -13,7 +13,7 @@ use rolldyn_geometry::TaperedWear;
 use std::time::Instant;
 
 /// The rates of one geometry by both methods and what they cost.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct WindowRates {
     pub direct: TaperedRates,
     pub averaged: TaperedRates,
@@ -34,7 +34,7 @@ impl WindowRates {
 }
 
 /// One period of the loop: the rates of the geometry at its start, the depth at its end.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct TaperedPeriod {
     /// 1, 2, …
     pub index: usize,
@@ -135,12 +135,40 @@ pub fn worn_further(
     }
 }
 
+/// Where a tapered life run stands after a period: everything the loop needs to go on (a
+/// resumable run stores it after every period and gives it back to
+/// [`run_tapered_life_from`]).
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct TaperedLifeState {
+    pub periods: Vec<TaperedPeriod>,
+    /// accumulated wear
+    pub wear: TaperedWear,
+    /// the rates of the geometry worn by `wear`
+    pub current: WindowRates,
+    /// operating time, s
+    pub time_s: f64,
+}
+
 /// Runs the loop; `on_period` sees every period as it ends and may end the run there (the
 /// life then stops short of `settings.life_s`).
 pub fn run_tapered_life(
     base: &TaperedModel,
     settings: &TaperedWearSettings,
     on_period: &mut dyn FnMut(&TaperedPeriod) -> std::ops::ControlFlow<()>,
+) -> Result<TaperedLife, WearError> {
+    run_tapered_life_from(base, settings, None, &mut |state| {
+        on_period(state.periods.last().expect("a period ended"))
+    })
+}
+
+/// [`run_tapered_life`] from the unworn bearing or from `start` (a state given to
+/// `on_period` by a run with the same inputs and settings); `on_period` sees the state after
+/// every period.
+pub fn run_tapered_life_from(
+    base: &TaperedModel,
+    settings: &TaperedWearSettings,
+    start: Option<TaperedLifeState>,
+    on_period: &mut dyn FnMut(&TaperedLifeState) -> std::ops::ControlFlow<()>,
 ) -> Result<TaperedLife, WearError> {
     if !(settings.period_s > 0.0 && settings.life_s > 0.0) {
         return Err(WearError::Input(
@@ -149,33 +177,43 @@ pub fn run_tapered_life(
     }
     let hour = 3600.0;
     let positions = wear_lines(base, settings);
-    let mut wear = TaperedWear::default();
-    let mut current = tapered_rates(base, &wear, settings)?;
-    let (mut time, mut periods) = (0.0, Vec::new());
-    while time < settings.life_s * (1.0 - 1e-12) {
-        let step = settings.period_s.min(settings.life_s - time);
-        wear = worn_further(&wear, &positions, current.of(settings.method), step);
-        time += step;
+    let mut state = match start {
+        Some(state) => state,
+        None => TaperedLifeState {
+            periods: Vec::new(),
+            current: tapered_rates(base, &TaperedWear::default(), settings)?,
+            wear: TaperedWear::default(),
+            time_s: 0.0,
+        },
+    };
+    while state.time_s < settings.life_s * (1.0 - 1e-12) {
+        let step = settings.period_s.min(settings.life_s - state.time_s);
+        let wear = worn_further(
+            &state.wear,
+            &positions,
+            state.current.of(settings.method),
+            step,
+        );
+        let time = state.time_s + step;
         let next = tapered_rates(base, &wear, settings)?;
         let period = TaperedPeriod {
-            index: periods.len() + 1,
+            index: state.periods.len() + 1,
             time_h: time / hour,
             period_h: step / hour,
-            rates: current,
+            rates: std::mem::replace(&mut state.current, next),
             wear: wear.clone(),
         };
-        let flow = on_period(&period);
-        periods.push(period);
-        current = next;
-        if flow.is_break() {
+        state.periods.push(period);
+        (state.wear, state.time_s) = (wear, time);
+        if on_period(&state).is_break() {
             break;
         }
     }
     Ok(TaperedLife {
-        periods,
-        last_window: current,
+        periods: state.periods,
+        last_window: state.current,
         positions_m: positions,
-        life_h: time / hour,
+        life_h: state.time_s / hour,
     })
 }
 

@@ -14,8 +14,8 @@ pub mod report;
 pub mod settings;
 
 pub use life::{
-    TaperedLife, TaperedPeriod, WindowRates, run_tapered_life, tapered_rates, wear_lines,
-    worn_further,
+    TaperedLife, TaperedLifeState, TaperedPeriod, WindowRates, run_tapered_life,
+    run_tapered_life_from, tapered_rates, wear_lines, worn_further,
 };
 pub use recorder::{TaperedDiagnostics, TaperedRates, TaperedWearData, TaperedWearRecorder};
 pub use report::write_tapered_report;

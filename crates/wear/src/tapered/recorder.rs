@@ -81,7 +81,7 @@ impl TaperedWearData {
 }
 
 /// Wear rates of one window by one method, m/s of depth.
-#[derive(Debug, Clone, PartialEq, Default)]
+#[derive(Debug, Clone, PartialEq, Default, serde::Serialize, serde::Deserialize)]
 pub struct TaperedRates {
     /// surface rates on the lines: roller (from cone and cup, mean over the rollers), cone and
     /// cup (mean of the two rows' raceways)
@@ -112,7 +112,7 @@ impl TaperedRates {
 }
 
 /// What the rates came from, per window.
-#[derive(Debug, Clone, PartialEq, Default)]
+#[derive(Debug, Clone, PartialEq, Default, serde::Serialize, serde::Deserialize)]
 pub struct TaperedDiagnostics {
     /// cone, cup, large rib (contact fraction per roller)
     pub contacts: [ContactDiagnostics; 3],
