@@ -308,9 +308,11 @@ impl Analysis for Life {
             geometry: &geometry,
         };
         let mut conditions = Vec::with_capacity(rows.len());
-        for row in &rows {
-            let point = OperatingPoint::of(request, row, &model)?;
-            let mut life = condition_life(&bearing, &point, request, &factors, &model, context)?;
+        for (index, row) in rows.iter().enumerate() {
+            let in_row = |failure| in_duty_row(request, index, failure);
+            let point = OperatingPoint::of(request, row, &model).map_err(in_row)?;
+            let mut life = condition_life(&bearing, &point, request, &factors, &model, context)
+                .map_err(in_row)?;
             life.time_share = row.time / total_time;
             conditions.push(life);
         }
@@ -431,6 +433,17 @@ struct OperatingPoint {
     load_rotates: bool,
     /// The request's overrides with the row's applied (for the load-distribution set-ups).
     operating: Operating,
+}
+
+/// A bad-input failure of duty row `index` (0-based) named by its `--duty` row: the row's values
+/// are checked like the flags of the same name, whose names the message keeps.
+fn in_duty_row(request: &LifeRequest, index: usize, failure: Failure) -> Failure {
+    match failure {
+        Failure::Input(m) if !request.duty.is_empty() => {
+            Failure::Input(format!("--duty row {}: {m}", index + 1))
+        }
+        other => other,
+    }
 }
 
 impl OperatingPoint {

@@ -196,6 +196,17 @@ fn bad_inputs_are_named() {
     }
 }
 
+/// A duty row's implausible value names its `--duty` row (it named `--speed`, a flag not given).
+#[test]
+fn an_implausible_duty_row_value_names_its_row() {
+    let request =
+        r#"{"duty": [{"time": 1, "speed": "4000 rpm"}, {"time": 1, "speed": "1e19 rpm"}]}"#;
+    match life(example("2002834.toml"), request) {
+        Err(Failure::Input(m)) => assert!(m.starts_with("--duty row 2: "), "{m}"),
+        other => panic!("{other:?}"),
+    }
+}
+
 #[test]
 fn duty_rows_parse_from_the_command_line_form() {
     use rolldyn::life::DutyRow;
