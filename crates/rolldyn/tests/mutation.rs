@@ -872,8 +872,30 @@ fn curve_values(curve: &rolldyn_fatigue::sn::SnCurve) -> Vec<String> {
     found
 }
 
-fn run_oil(path: &str, _: usize) -> Outcome {
-    analyse::<rolldyn::oils::Oils>(json!({"oil_file": path}), None)
+/// Every this many oil mutants `oils` accepts also lubricate a skid point of bearing 2002834.
+const OIL_SKID_EVERY: usize = 3;
+
+fn run_oil(path: &str, index: usize) -> Outcome {
+    let found = analyse::<rolldyn::oils::Oils>(json!({"oil_file": path}), None)?;
+    if !found.is_empty() || !index.is_multiple_of(OIL_SKID_EVERY) {
+        return Ok(found);
+    }
+    let text = example("2002834.toml");
+    let (start, end) = (
+        text.find("[lubricant]").unwrap(),
+        text.find("[operating]").unwrap(),
+    );
+    let model = Path::new(path).with_extension("model.toml");
+    std::fs::write(
+        &model,
+        format!(
+            "{}[lubricant]\nfile = \"{path}\"\n\n{}",
+            &text[..start],
+            &text[end..]
+        ),
+    )
+    .unwrap();
+    analyse::<rolldyn::skid::Skid>(json!({}), Some(&model))
 }
 
 fn run_journal(path: &str, _: usize) -> Outcome {
