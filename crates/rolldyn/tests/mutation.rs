@@ -58,7 +58,6 @@ const KNOWN_OPEN: &[(&str, usize, &str)] = &[
     ("sweep", 126, N13_SWEEP_SYNTAX),
     ("cage-loads", 5, N7_CAGE_LOAD_VALUES),
     ("cage-table", 1, N7_CAGE_LOAD_VALUES),
-    ("duty", 67, M1_UNLIMITED_LIFE_NULL),
 ];
 
 /// N13: a TOML syntax error in a sweep file names neither line nor key.
@@ -66,9 +65,6 @@ const N13_SWEEP_SYNTAX: &str = "N13";
 /// N7: a cage-load export with absurd values (a force of 1.8e19 N, damaged Parquet numbers)
 /// gives an infinite damage with exit 0.
 const N7_CAGE_LOAD_VALUES: &str = "N7";
-/// M1 (found by this test, not fixed): `life` with a duty row at zero load prints that row's
-/// lives and s0 (∞) as `null` without a `non_finite` reason.
-const M1_UNLIMITED_LIFE_NULL: &str = "M1";
 
 /// Extreme numbers written in place of a number.
 const EXTREMES: [&str; 14] = [
@@ -356,6 +352,7 @@ const DOCUMENTED_NULLS: &[&str] = &[
 
 mod walker {
     //! A serde serializer that writes nothing and records where a float is not finite.
+    use rolldyn_output::non_finite::NON_FINITE_KEY;
     use serde::ser::{self, Serialize};
     use std::fmt;
 
@@ -488,20 +485,64 @@ mod walker {
         }
     }
 
-    /// A compound value: its elements are walked with their index or key on the path.
+    /// A compound value: its elements are walked with their index or key on the path; the keys
+    /// its `non_finite` object gives a reason for are not reported (docs/outputs.md).
     pub struct Seq<'a> {
         walker: &'a mut Walker,
         index: usize,
         key: String,
+        /// `walker.found` before this value
+        found_before: usize,
+        /// the keys of this value's `non_finite` object
+        explained: Vec<String>,
     }
 
     impl<'a> Seq<'a> {
         fn new(walker: &'a mut Walker) -> Self {
+            let found_before = walker.found.len();
             Self {
                 walker,
                 index: 0,
                 key: String::new(),
+                found_before,
+                explained: Vec::new(),
             }
+        }
+
+        /// Walks the member `key`: a `non_finite` object is read, not walked.
+        fn member<T: Serialize + ?Sized>(&mut self, key: String, v: &T) -> R {
+            if key == NON_FINITE_KEY {
+                if let Ok(serde_json::Value::Object(reasons)) = serde_json::to_value(v) {
+                    self.explained.extend(reasons.keys().cloned());
+                }
+                return Ok(());
+            }
+            self.walker.at(key, v)
+        }
+
+        /// Drops the values of this member the `non_finite` object explains.
+        fn finish(self) -> R {
+            let prefix = self.walker.path.join(".");
+            let explained: Vec<String> = self
+                .explained
+                .iter()
+                .map(|k| {
+                    if prefix.is_empty() {
+                        k.clone()
+                    } else {
+                        format!("{prefix}.{k}")
+                    }
+                })
+                .collect();
+            let mut index = self.found_before;
+            while index < self.walker.found.len() {
+                if explained.contains(&self.walker.found[index].0) {
+                    self.walker.found.remove(index);
+                } else {
+                    index += 1;
+                }
+            }
+            Ok(())
         }
 
         fn element<T: Serialize + ?Sized>(&mut self, v: &T) -> R {
@@ -646,10 +687,10 @@ mod walker {
         fn serialize_value<T: Serialize + ?Sized>(&mut self, v: &T) -> R {
             self.index += 1;
             let key = std::mem::take(&mut self.key);
-            self.walker.at(key, v)
+            self.member(key, v)
         }
         fn end(self) -> R {
-            Ok(())
+            self.finish()
         }
     }
 
@@ -659,10 +700,10 @@ mod walker {
                 type Ok = ();
                 type Error = Never;
                 fn serialize_field<T: Serialize + ?Sized>(&mut self, key: &'static str, v: &T) -> R {
-                    self.walker.at(key.to_string(), v)
+                    self.member(key.to_string(), v)
                 }
                 fn end(self) -> R {
-                    Ok(())
+                    self.finish()
                 }
             })*
         };
