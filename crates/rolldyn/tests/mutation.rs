@@ -1404,3 +1404,73 @@ fn mutants_of_every_input_format_are_plausible_located_or_diagnosed() {
     assert!(broken.is_empty(), "{}", broken.join("\n"));
     assert!(total + KNOWN_OPEN.len() >= 1000, "{total} mutants");
 }
+
+/// The location rule on messages of each kind.
+#[test]
+fn a_location_is_a_line_a_key_a_table_file_or_the_value() {
+    let keys = keys_of("[cage]\nwidth = \"5 mm\"\n");
+    let keyed = Location::Keyed(&[]);
+    let file = "/tmp/m.toml";
+    assert!(located(
+        "/tmp/m.toml:2:1: cage.width — too wide",
+        keyed,
+        file,
+        &keys
+    ));
+    assert!(located(
+        "/tmp/m.toml: bad value at line 2",
+        keyed,
+        file,
+        &keys
+    ));
+    assert!(located("cage.width must be positive", keyed, file, &keys));
+    assert!(!located(
+        "/tmp/m.toml: key with no value, expected `=`",
+        keyed,
+        file,
+        &keys
+    ));
+    assert!(!located("cagewidth: no", keyed, file, &keys));
+    assert!(located(
+        "/tmp/h.csv: the file has no values",
+        Location::Table,
+        "/tmp/h.csv",
+        &[]
+    ));
+    assert!(!located(
+        "the file has no values",
+        Location::Table,
+        "/tmp/h.csv",
+        &[]
+    ));
+    let value = Location::Value(&["--duty"]);
+    assert!(located("'NU22X5': bad bore code", value, "NU22X5", &[]));
+    assert!(located("--duty row 2: implausible", value, "time=1", &[]));
+    assert!(!located("--speed: implausible", value, "time=1", &[]));
+}
+
+/// The walker reports a raw non-finite number by its path, and not one its level's
+/// `non_finite` object explains.
+#[test]
+fn non_finite_numbers_are_found_unless_explained() {
+    #[derive(Serialize)]
+    struct Inner {
+        a: f64,
+        b: Option<f64>,
+        non_finite: BTreeMap<&'static str, &'static str>,
+    }
+    #[derive(Serialize)]
+    struct Outer {
+        x: f64,
+        inner: Vec<Inner>,
+    }
+    let value = Outer {
+        x: f64::NAN,
+        inner: vec![Inner {
+            a: f64::INFINITY,
+            b: Some(f64::NEG_INFINITY),
+            non_finite: BTreeMap::from([("a", "unlimited")]),
+        }],
+    };
+    assert_eq!(non_finite_numbers(&value), ["x = NaN", "inner.0.b = -inf"]);
+}
