@@ -26,6 +26,7 @@ use rolldyn_setup::FlagValues;
 use rolldyn_setup::quasi_static::{QuasiStaticOverrides, RacewayFriction, quasi_static_conditions};
 use rolldyn_units::{AngularSpeed, Force, KinematicViscosity, Length, Quantity, Temperature};
 use serde::{Deserialize, Serialize};
+use std::collections::BTreeMap;
 use std::fmt;
 
 /// Reliability of the basic rating life (ISO 281: L10, a1 = 1).
@@ -182,6 +183,10 @@ pub struct ConditionLife {
     pub l10r_outer_rev: f64,
     pub l10r_rev: f64,
     pub l10r_h: f64,
+    /// Why a value above is `null` (docs/outputs.md): an infinite life or s0 is unlimited (no
+    /// load in the condition); absent when every value is finite.
+    #[serde(skip_serializing_if = "BTreeMap::is_empty")]
+    pub non_finite: BTreeMap<&'static str, String>,
     /// Lamina loads: per (row, roller, lamina), inner and outer ring [N].
     #[serde(skip)]
     laminae: LaminaLoads,
@@ -196,6 +201,10 @@ pub struct DutyLives {
     pub l_nm_h: Option<f64>,
     pub l10r_rev: f64,
     pub l10r_h: f64,
+    /// Why a value above is `null` (docs/outputs.md): an infinite life or s0 is unlimited (no
+    /// load in the condition); absent when every value is finite.
+    #[serde(skip_serializing_if = "BTreeMap::is_empty")]
+    pub non_finite: BTreeMap<&'static str, String>,
 }
 
 /// The rating lives of the bearing.
@@ -220,6 +229,28 @@ pub struct LifeResult {
     pub lives: DutyLives,
     /// One entry per condition (per duty row).
     pub conditions: Vec<ConditionLife>,
+    /// Why a value above is `null` (docs/outputs.md): an infinite life or s0 is unlimited (no
+    /// load in the condition); absent when every value is finite.
+    #[serde(skip_serializing_if = "BTreeMap::is_empty")]
+    pub non_finite: BTreeMap<&'static str, String>,
+}
+
+/// The `non_finite` reasons of `values` (JSON key, value): +∞ is an unlimited life or safety
+/// (no load), anything else not finite the policy's default reason.
+fn non_finite_reasons(values: &[(&'static str, Option<f64>)]) -> BTreeMap<&'static str, String> {
+    values
+        .iter()
+        .filter_map(|&(key, value)| Some((key, value?)))
+        .filter(|(_, value)| !value.is_finite())
+        .map(|(key, value)| {
+            let reason = if value == f64::INFINITY {
+                "unlimited: no load in this condition".to_string()
+            } else {
+                rolldyn_output::default_reason(value).to_string()
+            };
+            (key, reason)
+        })
+        .collect()
 }
 
 /// The lamina loads of one condition, flattened: index (row, roller, lamina).
@@ -308,20 +339,23 @@ impl Analysis for Life {
             geometry: &geometry,
         };
         let mut conditions = Vec::with_capacity(rows.len());
-        for row in &rows {
-            let point = OperatingPoint::of(request, row, &model)?;
-            let mut life = condition_life(&bearing, &point, request, &factors, &model, context)?;
+        for (index, row) in rows.iter().enumerate() {
+            let in_row = |failure| in_duty_row(request, index, failure);
+            let point = OperatingPoint::of(request, row, &model).map_err(in_row)?;
+            let mut life = condition_life(&bearing, &point, request, &factors, &model, context)
+                .map_err(in_row)?;
             life.time_share = row.time / total_time;
             conditions.push(life);
         }
         let lives = combined(&conditions)?;
+        let s0 = conditions
+            .iter()
+            .map(|c| c.s0)
+            .fold(f64::INFINITY, f64::min);
         Ok(LifeResult {
             model: model.bearing.name().to_string(),
             kind: bearing.kind(),
-            s0: conditions
-                .iter()
-                .map(|c| c.s0)
-                .fold(f64::INFINITY, f64::min),
+            s0,
             ratings,
             reliability_percent,
             a1,
@@ -331,6 +365,7 @@ impl Analysis for Life {
             defaults,
             lives,
             conditions,
+            non_finite: non_finite_reasons(&[("s0", Some(s0))]),
         })
     }
 }
@@ -431,6 +466,17 @@ struct OperatingPoint {
     load_rotates: bool,
     /// The request's overrides with the row's applied (for the load-distribution set-ups).
     operating: Operating,
+}
+
+/// A bad-input failure of duty row `index` (0-based) named by its `--duty` row: the row's values
+/// are checked like the flags of the same name, whose names the message keeps.
+fn in_duty_row(request: &LifeRequest, index: usize, failure: Failure) -> Failure {
+    match failure {
+        Failure::Input(m) if !request.duty.is_empty() => {
+            Failure::Input(format!("--duty row {}: {m}", index + 1))
+        }
+        other => other,
+    }
 }
 
 impl OperatingPoint {
@@ -571,7 +617,7 @@ fn condition_life(
     };
     let (l10r_inner_rev, l10r_outer_rev) = ring_lives(&distribution.laminae, point, r);
     let l10r_rev = ts16281::bearing_life(l10r_inner_rev, l10r_outer_rev);
-    Ok(ConditionLife {
+    let mut life = ConditionLife {
         time_share: 1.0,
         inner_speed_rad_s: point.inner_speed,
         outer_speed_rad_s: point.outer_speed,
@@ -598,8 +644,24 @@ fn condition_life(
         l10r_outer_rev,
         l10r_rev,
         l10r_h: iso281::hours(l10r_rev, speed),
+        non_finite: BTreeMap::new(),
         laminae: distribution.laminae,
-    })
+    };
+    life.non_finite = non_finite_reasons(&[
+        ("s0", Some(life.s0)),
+        ("l10_rev", Some(life.l10_rev)),
+        ("l10_h", Some(life.l10_h)),
+        ("kappa", Some(life.kappa)),
+        ("ec_cu_over_p", Some(life.ec_cu_over_p)),
+        ("a_iso", life.a_iso),
+        ("l_nm_rev", life.l_nm_rev),
+        ("l_nm_h", life.l_nm_h),
+        ("l10r_inner_rev", Some(life.l10r_inner_rev)),
+        ("l10r_outer_rev", Some(life.l10r_outer_rev)),
+        ("l10r_rev", Some(life.l10r_rev)),
+        ("l10r_h", Some(life.l10r_h)),
+    ]);
+    Ok(life)
 }
 
 /// A load distribution's lamina loads and what it was solved with.
@@ -794,6 +856,14 @@ fn combined(conditions: &[ConditionLife]) -> Result<DutyLives, Failure> {
     } else {
         None
     };
+    let non_finite = non_finite_reasons(&[
+        ("l10_rev", Some(l10.revolutions)),
+        ("l10_h", Some(l10.hours)),
+        ("l_nm_rev", l_nm.map(|l| l.revolutions)),
+        ("l_nm_h", l_nm.map(|l| l.hours)),
+        ("l10r_rev", Some(l10r.revolutions)),
+        ("l10r_h", Some(l10r.hours)),
+    ]);
     Ok(DutyLives {
         l10_rev: l10.revolutions,
         l10_h: l10.hours,
@@ -801,6 +871,7 @@ fn combined(conditions: &[ConditionLife]) -> Result<DutyLives, Failure> {
         l_nm_h: l_nm.map(|l| l.hours),
         l10r_rev: l10r.revolutions,
         l10r_h: l10r.hours,
+        non_finite,
     })
 }
 

@@ -196,6 +196,36 @@ fn bad_inputs_are_named() {
     }
 }
 
+/// A duty row's implausible value names its `--duty` row (it named `--speed`, a flag not given).
+#[test]
+fn an_implausible_duty_row_value_names_its_row() {
+    let request =
+        r#"{"duty": [{"time": 1, "speed": "4000 rpm"}, {"time": 1, "speed": "1e19 rpm"}]}"#;
+    match life(example("2002834.toml"), request) {
+        Err(Failure::Input(m)) => assert!(m.starts_with("--duty row 2: "), "{m}"),
+        other => panic!("{other:?}"),
+    }
+}
+
+/// M1 (issue 39 mutation test): a duty row at zero load has an unlimited life and s0; JSON
+/// prints them as `null`, which docs/outputs.md requires to carry a `non_finite` reason.
+#[test]
+fn m1_an_unloaded_duty_row_names_why_its_lives_are_null() {
+    let request =
+        r#"{"duty": [{"time": 3, "radial_load": "5 kN"}, {"time": 1, "radial_load": "0 kN"}]}"#;
+    let r = life(example("2002834.toml"), request).unwrap();
+    let idle = &r["conditions"][1];
+    for key in ["s0", "l10_rev", "l10_h", "l10r_rev", "ec_cu_over_p"] {
+        assert!(idle[key].is_null(), "{key}: {idle}");
+        let reason = idle["non_finite"][key].as_str().unwrap_or_default();
+        assert!(reason.contains("unlimited"), "{key}: {idle}");
+    }
+    assert!(r["conditions"][0].get("non_finite").is_none());
+    // the loaded row's damage alone sets the cycle's life
+    assert!(f(&r["lives"]["l10_rev"]) > 0.0);
+    assert!(r["lives"].get("non_finite").is_none());
+}
+
 #[test]
 fn duty_rows_parse_from_the_command_line_form() {
     use rolldyn::life::DutyRow;
