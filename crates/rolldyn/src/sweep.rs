@@ -474,10 +474,14 @@ impl Analysis for Sweep {
             .out
             .clone()
             .unwrap_or_else(|| PathBuf::from("out").join(stem));
-        // `--collect-only` reads a folder and does not create one
-        let _lock = match request.collect_only && !out_dir.is_dir() {
-            true => None,
-            false => Some(crate::output::out_dir(&out_dir)?),
+        // `--collect-only` reads a folder and does not create one; shards that do not collect
+        // write their own variants only and share the folder
+        let _lock = if request.collect_only && !out_dir.is_dir() {
+            None
+        } else if request.shard.is_some() && request.no_collect {
+            Some(crate::output::shared_out_dir(&out_dir)?)
+        } else {
+            Some(crate::output::out_dir(&out_dir)?)
         };
         let analysis = sweep.analysis;
         let cache_dir = out_dir.join("calculix-cache");
