@@ -453,3 +453,35 @@ fn n5_the_report_inlines_only_the_plots_the_run_wrote() {
     assert!(html.contains("<svg"), "the other plots are shown");
     std::fs::remove_dir_all(dir).unwrap();
 }
+
+#[test]
+fn n4_shards_that_do_not_collect_share_the_folder_and_a_collecting_sweep_waits() {
+    let dir = scratch("shards");
+    let sweep = dir.join("sweep.toml");
+    std::fs::write(
+        &sweep,
+        format!(
+            "model = {:?}\nanalysis = \"skid\"\n[[variant]]\nname = \"a\"\n[[variant]]\nname = \"b\"\n",
+            example("2002834.toml")
+        ),
+    )
+    .unwrap();
+    let out = dir.join("out");
+    // another shard running now
+    let shard = rolldyn_output::FolderLock::acquire_shared(&out).unwrap();
+    let args = [
+        "sweep",
+        sweep.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--quiet",
+    ];
+    let this_shard = rolldyn(&[&args[..], &["--shard", "1/2", "--no-collect"]].concat());
+    assert_eq!(this_shard.status.code(), Some(0), "{}", stderr(&this_shard));
+    let collecting = rolldyn(&[&args[..], &["--collect-only"]].concat());
+    assert_eq!(collecting.status.code(), Some(2), "{}", stderr(&collecting));
+    drop(shard);
+    let collecting = rolldyn(&[&args[..], &["--collect-only"]].concat());
+    assert_eq!(collecting.status.code(), Some(0), "{}", stderr(&collecting));
+    std::fs::remove_dir_all(dir).unwrap();
+}

@@ -36,7 +36,10 @@ pub fn seal_json<T: serde::Serialize>(value: &T) -> Result<String, serde_json::E
             "only a non-empty JSON object can be sealed",
         ));
     };
-    Ok(format!("{open}{SEAL}{}\"\n}}\n", checksum_hex(body.as_bytes())))
+    Ok(format!(
+        "{open}{SEAL}{}\"\n}}\n",
+        checksum_hex(body.as_bytes())
+    ))
 }
 
 /// Checks the checksum of a document written by [`seal_json`].

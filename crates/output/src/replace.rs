@@ -7,7 +7,9 @@ use std::fs::OpenOptions;
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
-/// Suffix of the temporary file written beside the target before the rename.
+/// Suffix of the temporary file written beside the target before the rename, after the
+/// process id (`run.json.4711.partial`), so that processes sharing a folder (the shards of a
+/// sweep, each writing `run.json`) never write one temporary file.
 pub const PARTIAL_SUFFIX: &str = ".partial";
 
 /// Why a file could not be replaced.
@@ -76,13 +78,13 @@ pub fn ensure_replaceable(path: &Path) -> Result<(), ReplaceError> {
     }
 }
 
-/// Writes `bytes` to `path` through `path.partial` (created afresh, synced) renamed over
+/// Writes `bytes` to `path` through `path.<pid>.partial` (created afresh, synced) renamed over
 /// `path`: a reader sees the old or the new content, never a part. Refuses a `path` that exists
 /// and is not a regular file ([`ReplaceError::NotRegularFile`]).
 pub fn replace_file_atomically(path: &Path, bytes: &[u8]) -> Result<(), ReplaceError> {
     ensure_replaceable(path)?;
     let mut partial = path.as_os_str().to_owned();
-    partial.push(PARTIAL_SUFFIX);
+    partial.push(format!(".{}{PARTIAL_SUFFIX}", std::process::id()));
     let partial = PathBuf::from(partial);
     let io = |source| ReplaceError::Io {
         path: path.to_path_buf(),
@@ -110,7 +112,8 @@ mod tests {
     use super::*;
 
     fn scratch(name: &str) -> PathBuf {
-        let dir = std::env::temp_dir().join(format!("rolldyn-replace-{name}-{}", std::process::id()));
+        let dir =
+            std::env::temp_dir().join(format!("rolldyn-replace-{name}-{}", std::process::id()));
         let _ = std::fs::remove_dir_all(&dir);
         std::fs::create_dir_all(&dir).unwrap();
         dir
@@ -123,7 +126,11 @@ mod tests {
         replace_file_atomically(&path, b"one").unwrap();
         replace_file_atomically(&path, b"two").unwrap();
         assert_eq!(std::fs::read(&path).unwrap(), b"two");
-        assert!(!dir.join("state.bin.partial").exists());
+        assert_eq!(
+            std::fs::read_dir(&dir).unwrap().count(),
+            1,
+            "no temporary file left"
+        );
         std::fs::remove_dir_all(dir).unwrap();
     }
 
@@ -137,7 +144,12 @@ mod tests {
         std::os::unix::fs::symlink(&target, &link).unwrap();
         let error = replace_file_atomically(&link, b"new").unwrap_err();
         assert!(error.to_string().contains("a symbolic link"), "{error}");
-        assert!(std::fs::symlink_metadata(&link).unwrap().file_type().is_symlink());
+        assert!(
+            std::fs::symlink_metadata(&link)
+                .unwrap()
+                .file_type()
+                .is_symlink()
+        );
         assert_eq!(std::fs::read_to_string(&target).unwrap(), "keep");
         std::fs::remove_dir_all(dir).unwrap();
     }
@@ -159,7 +171,8 @@ mod tests {
         let dir = scratch("partial");
         let target = dir.join("precious.txt");
         std::fs::write(&target, "keep").unwrap();
-        std::os::unix::fs::symlink(&target, dir.join("out.json.partial")).unwrap();
+        let partial = format!("out.json.{}.partial", std::process::id());
+        std::os::unix::fs::symlink(&target, dir.join(partial)).unwrap();
         replace_file_atomically(&dir.join("out.json"), b"{}").unwrap();
         assert_eq!(std::fs::read_to_string(&target).unwrap(), "keep");
         assert_eq!(std::fs::read(dir.join("out.json")).unwrap(), b"{}");

@@ -8,10 +8,20 @@ use std::path::{Path, PathBuf};
 /// returned lock (which derefs to the folder) is dropped; a folder another run writes is
 /// refused as bad input.
 pub fn out_dir(dir: &Path) -> Result<FolderLock, Failure> {
-    FolderLock::acquire(dir).map_err(|e| match e {
+    FolderLock::acquire(dir).map_err(lock_failure)
+}
+
+/// [`out_dir`] for a run that shares its folder with others writing other files of it (the
+/// shards of a sweep that do not collect).
+pub fn shared_out_dir(dir: &Path) -> Result<FolderLock, Failure> {
+    FolderLock::acquire_shared(dir).map_err(lock_failure)
+}
+
+fn lock_failure(e: FolderLockError) -> Failure {
+    match e {
         FolderLockError::Busy { .. } => Failure::Input(format!("--out {e}")),
         FolderLockError::Io { .. } => Failure::Run(e.to_string()),
-    })
+    }
 }
 
 /// Creates a folder inside a locked output folder, or a cache shared between runs, and returns

@@ -497,7 +497,12 @@ impl Analysis for Sweep {
                 out_dir.display()
             )));
         }
-        let _lock = crate::output::out_dir(&out_dir)?;
+        // shards that do not collect write their own variants only and share the folder
+        let _lock = if request.shard.is_some() && request.no_collect {
+            crate::output::shared_out_dir(&out_dir)?
+        } else {
+            crate::output::out_dir(&out_dir)?
+        };
         let analysis = sweep.analysis;
         let cache_dir = out_dir.join("calculix-cache");
         let variants_dir = out_dir.join("variants");
