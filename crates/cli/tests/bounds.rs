@@ -264,6 +264,21 @@ fn still_accepted_geometry_values_are_refused_with_their_key() {
             "radial = \"1e7 mm\"",
             "clearance.radial",
         ),
+        (
+            "width = \"5 mm\"",
+            "width = \"1e7 mm\"",
+            "inner_ring.guiding_land.width",
+        ),
+        (
+            "radius = \"0.6 mm\" }",
+            "radius = \"1e7 mm\" }",
+            "roller.profile.chamfer.radius",
+        ),
+        (
+            "fillet_radius = \"0.5 mm\"",
+            "fillet_radius = \"1e7 mm\"",
+            "cage.pocket.fillet_radius",
+        ),
     ];
     for (from, to, key) in cases {
         let model = model_in(&dir, from, to, "");

@@ -60,6 +60,16 @@ pub fn check_mass(key: &str, given: f64, computed: f64) -> Result<(), GeometryEr
     })
 }
 
+/// Checks an outside diameter [m] at `key` against [`MAX_OUTSIDE_DIAMETER_M`].
+pub(crate) fn check_outside_diameter(key: &str, diameter: f64) -> Result<(), GeometryError> {
+    at_most(
+        key,
+        diameter,
+        MAX_OUTSIDE_DIAMETER_M,
+        "10 m (the largest rolling bearings are ≈ 8 m)",
+    )
+}
+
 fn within(
     key: &str,
     value: f64,
@@ -99,12 +109,7 @@ impl CylindricalRollerBearing {
     /// The plausibility bounds of a bearing that passed its consistency checks.
     pub(crate) fn validate_plausibility(&self) -> Result<(), GeometryError> {
         let outside = self.outer_ring.body_diameter;
-        at_most(
-            "outer_ring.outside_diameter",
-            outside,
-            MAX_OUTSIDE_DIAMETER_M,
-            "10 m (the largest rolling bearings are ≈ 8 m)",
-        )?;
+        check_outside_diameter("outer_ring.outside_diameter", outside)?;
         let wall = MAX_WALL_PER_ROLLER_DIAMETER * self.roller.diameter;
         at_most(
             "outer_ring.outside_diameter",
@@ -130,6 +135,14 @@ impl CylindricalRollerBearing {
             0.5 * self.roller.diameter,
             "the roller's radius",
         )?;
+        if let Some(chamfer) = self.roller.profile.chamfer {
+            at_most(
+                "roller.profile.chamfer.radius",
+                chamfer.radius,
+                self.roller.length,
+                "the roller's length",
+            )?;
+        }
         let ring_width = self.inner_ring.width.max(self.outer_ring.width);
         for (key, ring, inner) in [
             ("inner_ring", &self.inner_ring, true),
@@ -141,6 +154,22 @@ impl CylindricalRollerBearing {
                 MAX_WIDTH_PER_OUTSIDE_DIAMETER * outside,
                 "twice the outside diameter",
             )?;
+            if let Some(land) = ring.guiding_land {
+                at_most(
+                    &format!("{key}.guiding_land.width"),
+                    land.width,
+                    ring.width,
+                    "the ring's width",
+                )?;
+            }
+            if let Some(chamfer) = ring.raceway_profile.as_ref().and_then(|p| p.chamfer) {
+                at_most(
+                    &format!("{key}.raceway_profile.chamfer.radius"),
+                    chamfer.radius,
+                    ring.width,
+                    "the ring's width",
+                )?;
+            }
             self.check_ribs(key, ring, inner)?;
         }
         at_most(
@@ -167,6 +196,12 @@ impl CylindricalRollerBearing {
                 cage.outer_diameter,
                 outside,
                 "the bearing's outside diameter",
+            )?;
+            at_most(
+                "cage.pocket.fillet_radius",
+                cage.pocket.fillet_radius,
+                0.5 * self.roller.diameter,
+                "the roller's radius (the fillet would fill the window)",
             )?;
             surfaces.push(("cage.roughness_ra", cage.roughness_ra));
         }

@@ -31,6 +31,10 @@ impl DoubleRowTaperedBearing {
     pub fn validate(&self) -> Result<(), GeometryError> {
         require_positive("bearing.bore", self.bore)?;
         require_positive("bearing.outside_diameter", self.outside_diameter)?;
+        crate::plausible::check_outside_diameter(
+            "bearing.outside_diameter",
+            self.outside_diameter,
+        )?;
         require_positive("bearing.pitch_diameter", self.pitch_diameter)?;
         self.roller.validate()?;
         self.large_rib.validate()?;
