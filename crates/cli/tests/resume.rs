@@ -172,8 +172,18 @@ fn n10_wear_killed_resumes_to_the_outputs_of_an_uninterrupted_run() {
     let args = |dir: &str| {
         with_out(
             &[
-                "wear", &model, "--radial-load", "2kN", "--life", "1500h", "--period", "500h",
-                "--settle", "0", "--revolutions", "1",
+                "wear",
+                &model,
+                "--radial-load",
+                "2kN",
+                "--life",
+                "1500h",
+                "--period",
+                "500h",
+                "--settle",
+                "0",
+                "--revolutions",
+                "1",
             ],
             dir,
         )
@@ -193,13 +203,27 @@ fn n10_tapered_wear_killed_resumes_to_the_outputs_of_an_uninterrupted_run() {
     let args = |dir: &str| {
         with_out(
             &[
-                "wear", &model, "--life", "2000h", "--period", "500h", "--window-settle",
-                "0.1ms", "--window", "0.2ms",
+                "wear",
+                &model,
+                "--life",
+                "2000h",
+                "--period",
+                "500h",
+                "--window-settle",
+                "0.1ms",
+                "--window",
+                "0.2ms",
             ],
             dir,
         )
     };
-    killed_and_resumed("wear-tapered", &args, "wear.state", &resume_folder, &["wall_s"]);
+    killed_and_resumed(
+        "wear-tapered",
+        &args,
+        "wear.state",
+        &resume_folder,
+        &["wall_s"],
+    );
 }
 
 #[test]
@@ -208,12 +232,25 @@ fn n10_startup_killed_resumes_to_the_outputs_of_an_uninterrupted_run() {
     let args = |dir: &str| {
         with_out(
             &[
-                "startup", &model, "--points", "3,4,5", "--revolutions", "1", "--jobs", "1",
+                "startup",
+                &model,
+                "--points",
+                "1,3",
+                "--revolutions",
+                "1",
+                "--jobs",
+                "1",
             ],
             dir,
         )
     };
-    killed_and_resumed("startup", &args, "startup.state", &resume_folder, &["wall_time_s"]);
+    killed_and_resumed(
+        "startup",
+        &args,
+        "startup.state",
+        &resume_folder,
+        &["wall_time_s"],
+    );
 }
 
 #[test]
@@ -229,8 +266,15 @@ fn n10_tapered_simulate_killed_resumes_to_the_outputs_of_an_uninterrupted_run() 
         let checkpoint = format!("{dir}/run.checkpoint");
         let mut words = with_out(
             &[
-                "simulate", &model, "--duration", "1ms", "--output-step", "0.05ms",
-                "--checkpoint-interval", "0.1ms", "--checkpoint",
+                "simulate",
+                &model,
+                "--duration",
+                "1ms",
+                "--output-step",
+                "0.05ms",
+                "--checkpoint-interval",
+                "0.1ms",
+                "--checkpoint",
             ],
             dir,
         );

@@ -23,10 +23,10 @@ pub mod replace;
 pub mod run_state;
 pub mod size;
 
-pub use mixed_table::{Column, Values, write_parquet_table};
-pub use non_finite::{csv_field, csv_integer, default_reason, mark_non_finite};
 pub use checksum::{ChecksumError, checksum_hex, seal_json, verify_sealed_json};
 pub use folder_lock::{FolderLock, FolderLockError, LOCK_FILE};
+pub use mixed_table::{Column, Values, write_parquet_table};
+pub use non_finite::{csv_field, csv_integer, default_reason, mark_non_finite};
 pub use replace::{ReplaceError, ensure_replaceable, replace_file_atomically};
 pub use run_state::{StateError, StateFile};
 pub use size::{ByteSize, estimated_table_bytes};

@@ -16,10 +16,10 @@ use rolldyn_fatigue::study::{
     FatigueAnswer, FatigueError, FatigueSettings, REQUIRED_STRESS_SAFETY_FACTOR, RevolutionMaxima,
     SettleCheckpoints, StressModelKind, evaluate, record_loads,
 };
-use rolldyn_output::run_state::{StateFile, fingerprint};
 use rolldyn_fatigue::{
     CageLoadExport, Cycle, HistoryKind, UnitStresses, rainflow, read_history_csv,
 };
+use rolldyn_output::run_state::{StateFile, fingerprint};
 use rolldyn_report::RunKind;
 use rolldyn_units::{Length, Quantity};
 use serde::{Deserialize, Serialize};
@@ -512,7 +512,8 @@ impl Analysis for Fatigue {
                                 export: export.clone(),
                                 maxima,
                             };
-                            s.store(&recorded).map_err(|e| Failure::Run(e.to_string()))?;
+                            s.store(&recorded)
+                                .map_err(|e| Failure::Run(e.to_string()))?;
                         }
                         (export, maxima)
                     }
