@@ -3,6 +3,7 @@
 //! once it has stored its first unit of work, resumes it there, and compares the two folders
 //! file by file — the timing columns of the tables aside.
 
+#[allow(dead_code)] // json(): not needed here
 mod common;
 use common::{example, rolldyn};
 use std::path::{Path, PathBuf};
@@ -255,7 +256,7 @@ fn n10_startup_killed_resumes_to_the_outputs_of_an_uninterrupted_run() {
 
 #[test]
 fn n10_fatigue_killed_resumes_to_the_outputs_of_an_uninterrupted_run() {
-    let args = |dir: &str| with_out(&["fatigue", "--revolutions", "3"], dir);
+    let args = |dir: &str| with_out(&["fatigue", "--revolutions", "2"], dir);
     killed_and_resumed("fatigue", &args, "fatigue.state", &resume_folder, &[]);
 }
 
@@ -269,7 +270,7 @@ fn n10_tapered_simulate_killed_resumes_to_the_outputs_of_an_uninterrupted_run() 
                 "simulate",
                 &model,
                 "--duration",
-                "1ms",
+                "0.3ms",
                 "--output-step",
                 "0.05ms",
                 "--checkpoint-interval",

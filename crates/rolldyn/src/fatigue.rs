@@ -133,7 +133,7 @@ enum StoredFatigue {
     Settling(Vec<u8>),
     /// The loads of the recorded revolution.
     Recorded {
-        export: CageLoadExport,
+        export: Box<CageLoadExport>,
         maxima: RevolutionMaxima,
     },
 }
@@ -483,7 +483,7 @@ impl Analysis for Fatigue {
                     _ => None,
                 };
                 match stored {
-                    Some(StoredFatigue::Recorded { export, maxima }) => (export, maxima),
+                    Some(StoredFatigue::Recorded { export, maxima }) => (*export, maxima),
                     settling => {
                         let start = match settling {
                             Some(StoredFatigue::Settling(bytes)) => Some(bytes),
@@ -509,7 +509,7 @@ impl Analysis for Fatigue {
                         .map_err(failure)?;
                         if let Some(s) = &store {
                             let recorded = StoredFatigue::Recorded {
-                                export: export.clone(),
+                                export: Box::new(export.clone()),
                                 maxima,
                             };
                             s.store(&recorded)
