@@ -23,9 +23,7 @@ pub(crate) struct Writer {
 
 impl Writer {
     pub fn new() -> Self {
-        Self {
-            buf: KIND.header(),
-        }
+        Self { buf: KIND.header() }
     }
     /// The checkpoint: the buffer closed by its checksum.
     pub fn seal(self) -> Vec<u8> {

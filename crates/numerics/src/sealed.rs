@@ -97,7 +97,10 @@ mod tests {
         let mut changed = sealed.clone();
         changed[9] ^= 1;
         assert_eq!(KIND.open(&changed), Err(Unsealed::Damaged));
-        assert_eq!(KIND.open(&sealed[..sealed.len() - 1]), Err(Unsealed::Damaged));
+        assert_eq!(
+            KIND.open(&sealed[..sealed.len() - 1]),
+            Err(Unsealed::Damaged)
+        );
         let other = Kind {
             version: b"02",
             ..KIND

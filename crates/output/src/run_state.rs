@@ -113,7 +113,13 @@ mod tests {
         let file = StateFile::new(path.clone(), fingerprint("inputs"));
         assert!(file.load::<Progress>().unwrap().is_none());
         let state = Progress {
-            done: vec![0.1 + 0.2, f64::NAN.copysign(1.0), 5e-324, -0.0, f64::INFINITY],
+            done: vec![
+                0.1 + 0.2,
+                f64::NAN.copysign(1.0),
+                5e-324,
+                -0.0,
+                f64::INFINITY,
+            ],
             count: u64::MAX,
         };
         file.store(&state).unwrap();

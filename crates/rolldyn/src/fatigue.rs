@@ -16,10 +16,10 @@ use rolldyn_fatigue::study::{
     FatigueAnswer, FatigueError, FatigueSettings, REQUIRED_STRESS_SAFETY_FACTOR, RevolutionMaxima,
     SettleCheckpoints, StressModelKind, evaluate, record_loads,
 };
-use rolldyn_output::run_state::{StateFile, fingerprint};
 use rolldyn_fatigue::{
     CageLoadExport, Cycle, HistoryKind, UnitStresses, rainflow, read_history_csv,
 };
+use rolldyn_output::run_state::{StateFile, fingerprint};
 use rolldyn_report::RunKind;
 use rolldyn_units::{Length, Quantity};
 use serde::{Deserialize, Serialize};
@@ -133,7 +133,7 @@ enum StoredFatigue {
     Settling(Vec<u8>),
     /// The loads of the recorded revolution.
     Recorded {
-        export: CageLoadExport,
+        export: Box<CageLoadExport>,
         maxima: RevolutionMaxima,
     },
 }
@@ -484,7 +484,7 @@ impl Analysis for Fatigue {
                     _ => None,
                 };
                 match stored {
-                    Some(StoredFatigue::Recorded { export, maxima }) => (export, maxima),
+                    Some(StoredFatigue::Recorded { export, maxima }) => (*export, maxima),
                     settling => {
                         let start = match settling {
                             Some(StoredFatigue::Settling(bytes)) => Some(bytes),
@@ -510,10 +510,11 @@ impl Analysis for Fatigue {
                         .map_err(failure)?;
                         if let Some(s) = &store {
                             let recorded = StoredFatigue::Recorded {
-                                export: export.clone(),
+                                export: Box::new(export.clone()),
                                 maxima,
                             };
-                            s.store(&recorded).map_err(|e| Failure::Run(e.to_string()))?;
+                            s.store(&recorded)
+                                .map_err(|e| Failure::Run(e.to_string()))?;
                         }
                         (export, maxima)
                     }

@@ -9,10 +9,10 @@ use crate::failure::Failure;
 use crate::model_source::ModelSource;
 use crate::observer::{Observer, Progress};
 use crate::output::out_dir;
-use rolldyn_output::run_state::{StateFile, fingerprint};
 use crate::table::{Table, Tables};
 use rolldyn_dynamics::output::{OutputSink, RevolutionSummary, Snapshot};
 use rolldyn_model::FrozenPoint;
+use rolldyn_output::run_state::{StateFile, fingerprint};
 use rolldyn_setup::{Overrides, frozen_conditions, prepare_frozen};
 use rolldyn_sweep::frozen::{
     FrozenPointRow, NUMERIC_COLUMNS, drift_of_last, mean_of_last, run_points, write_outputs,
@@ -252,7 +252,10 @@ impl Analysis for Startup {
         };
         let rows = run_points(&points, jobs, &stored_or_analysed, &progress)
             .map_err(|e| Failure::Run(e.to_string()))?;
-        if let Some(e) = store_error.into_inner().expect("no panic while the lock is held") {
+        if let Some(e) = store_error
+            .into_inner()
+            .expect("no panic while the lock is held")
+        {
             return Err(Failure::Run(e.to_string()));
         }
         if observer.stop_requested() {

@@ -299,9 +299,13 @@ fn fatigue(
     cache: &Path,
 ) -> Result<BTreeMap<String, Figure>, String> {
     std::fs::create_dir_all(out).map_err(|e| format!("cannot create {}: {e}", out.display()))?;
-    let (export, maxima, _) = record_loads(&model, &Overrides::default(), settings, None, &mut |_, _| {
-        std::ops::ControlFlow::Continue(())
-    })
+    let (export, maxima, _) = record_loads(
+        &model,
+        &Overrides::default(),
+        settings,
+        None,
+        &mut |_, _| std::ops::ControlFlow::Continue(()),
+    )
     .map_err(|e| e.to_string())?;
     let unit =
         crate::fatigue::unit_stresses(&export, settings, cache).map_err(|e| e.to_string())?;

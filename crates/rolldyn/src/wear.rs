@@ -10,9 +10,9 @@ use crate::operating::{Operating, seconds_or_text};
 use crate::output::out_dir;
 use crate::run_record::{ModelOrigin, finish_out_folder};
 use crate::table::{Table, Tables};
+use rolldyn_output::run_state::{StateFile, fingerprint};
 use rolldyn_report::RunKind;
 use rolldyn_units::{Length, Quantity, Time};
-use rolldyn_output::run_state::{StateFile, fingerprint};
 use rolldyn_wear::study::{STATE_FILE, WearAnswer, run_wear};
 use rolldyn_wear::tapered::{
     TaperedPeriod, TaperedWearSettings, run_tapered_life_from, write_tapered_report,

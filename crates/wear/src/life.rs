@@ -252,8 +252,7 @@ pub fn run_life(
     let mut state = match start {
         Some(state) => state,
         None => {
-            let depth =
-                SurfaceWear::zero(lines, settings.angle_bins, inputs.bearing.roller_count);
+            let depth = SurfaceWear::zero(lines, settings.angle_bins, inputs.bearing.roller_count);
             LifeState {
                 periods: Vec::new(),
                 current: rates_of(inputs, &positions, &depth, settings)?,

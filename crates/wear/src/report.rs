@@ -186,7 +186,13 @@ impl WearTables {
             }
         }
         let [inner, outer] = &mut self.maps;
-        for t in [&mut self.periods, &mut self.roller, &mut self.bar, inner, outer] {
+        for t in [
+            &mut self.periods,
+            &mut self.roller,
+            &mut self.bar,
+            inner,
+            outer,
+        ] {
             t.flush()?;
         }
         self.history.push(ProfileHistory {

@@ -3,9 +3,7 @@
 
 use crate::WearError;
 use crate::bearing_data::ribs_on_inner_ring;
-use crate::life::{
-    LifeInputs, LifeState, PeriodRecord, StopReason, halved_period_check, run_life,
-};
+use crate::life::{LifeInputs, LifeState, PeriodRecord, StopReason, halved_period_check, run_life};
 use crate::rates::{CONTACT_KINDS, ContactDiagnostics};
 use crate::report::{WearTables, WearTablesNote};
 use crate::settings::{PeriodControl, WearMethod, WearSettings};
@@ -158,13 +156,18 @@ pub fn run_wear(
     let run = run_life(&inputs, settings, stored.map(|s| s.life), &mut |state| {
         let record = state.periods.last().expect("a period was accepted");
         if let (Some(t), None) = (tables.as_mut(), &table_error) {
-            let stored = t.period(record, &state.depth).map_err(|e| e.to_string()).and_then(|_| {
-                let life = StoredLife {
-                    life: state.clone(),
-                    tables: t.note(),
-                };
-                store.as_ref().map_or(Ok(()), |s| s.store(&life).map_err(|e| e.to_string()))
-            });
+            let stored = t
+                .period(record, &state.depth)
+                .map_err(|e| e.to_string())
+                .and_then(|_| {
+                    let life = StoredLife {
+                        life: state.clone(),
+                        tables: t.note(),
+                    };
+                    store
+                        .as_ref()
+                        .map_or(Ok(()), |s| s.store(&life).map_err(|e| e.to_string()))
+                });
             if let Err(e) = stored {
                 table_error = Some(e);
                 // what is not stored cannot be resumed: stop here

@@ -3,7 +3,9 @@
 use serde::Serialize;
 
 /// A surface whose wear rolldyn tracks (seed 000 §3.1.1.5–3.1.1.7).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, serde::Deserialize)]
+#[derive(
+    Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, serde::Deserialize,
+)]
 #[serde(rename_all = "snake_case")]
 pub enum Surface {
     /// the roller's rolling surface (worn by both raceways and the cage bar)
@@ -87,7 +89,10 @@ impl<'de, T: Copy + serde::Deserialize<'de>> serde::Deserialize<'de> for PerSurf
                 .copied()
                 .ok_or_else(|| serde::de::Error::custom(format!("no value of {}", s.name())))
         };
-        let values: Vec<T> = Surface::ALL.into_iter().map(value).collect::<Result<_, _>>()?;
+        let values: Vec<T> = Surface::ALL
+            .into_iter()
+            .map(value)
+            .collect::<Result<_, _>>()?;
         Ok(Self {
             values: values.try_into().ok().expect("one value per surface"),
         })

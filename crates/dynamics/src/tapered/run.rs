@@ -1,11 +1,11 @@
 //! Running the tapered model: the seated start, the integration with samples at a fixed
 //! interval, and the run's summary (seed 000 §3.2.1 observables).
 
+use super::columns::{SAMPLE_COLUMNS, sample_from_row, sample_row};
 use super::contacts::ContactRecorder;
 use super::layout::TaperedLayout;
 use super::model::TaperedModel;
 use super::rhs::{RollerReport, TaperedSystem};
-use super::columns::{SAMPLE_COLUMNS, sample_from_row, sample_row};
 use super::sample::TaperedSample;
 use super::summary::{TaperedSummary, summarise};
 use crate::checkpoint::{Reader, Writer, fnv1a};
@@ -218,7 +218,11 @@ pub struct TaperedSimulation<'m> {
 impl<'m> TaperedSimulation<'m> {
     /// The run of `model` from the seated start; `record_contacts` computes the contact record
     /// a [`ContactRecorder`] needs.
-    pub fn new(model: &'m TaperedModel, settings: &TaperedRunSettings, record_contacts: bool) -> Self {
+    pub fn new(
+        model: &'m TaperedModel,
+        settings: &TaperedRunSettings,
+        record_contacts: bool,
+    ) -> Self {
         let y0 = initial_state(model, settings.row1_offset_pitch);
         let (scale_v, rel) = error_scales(model);
         let mut sys = TaperedSystem::new(model);
@@ -319,8 +323,8 @@ impl<'m> TaperedSimulation<'m> {
         }
         let dp = self.dp.load(&mut r)?;
         let next = r.f64()?;
-        let count = usize::try_from(r.u64()?)
-            .map_err(|_| DynError::Checkpoint("truncated data".into()))?;
+        let count =
+            usize::try_from(r.u64()?).map_err(|_| DynError::Checkpoint("truncated data".into()))?;
         let mut samples = Vec::new();
         let mut row = [0.0; SAMPLE_COLUMNS.len()];
         for _ in 0..count {
