@@ -639,7 +639,7 @@ mod tests {
             location: 1,
             ..bar
         };
-        let export = CageLoadExport {
+        CageLoadExport {
             header: ExportHeader {
                 format: FORMAT.into(),
                 version: VERSION,
@@ -655,8 +655,7 @@ mod tests {
                 set(2.0, vec![]),
                 set(4.0, vec![bar]),
             ],
-        };
-        export
+        }
     }
 
     fn scratch(name: &str) -> PathBuf {
