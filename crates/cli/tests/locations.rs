@@ -193,6 +193,9 @@ fn n16_skid_at_one_point_writes_its_rollers_table_to_out() {
     assert_eq!(lines.count(), rollers, "{text}");
 }
 
+/// An edit of a load export's JSON header.
+type Edit = fn(&mut serde_json::Value);
+
 /// A load export of the embedded model (two simulated revolutions) in `dir`: its table.
 fn load_export(dir: &Path) -> PathBuf {
     let loads = dir.join("loads.parquet");
@@ -214,20 +217,20 @@ fn n7_cage_load_values_out_of_bounds_are_refused_at_their_line() {
     let loads = load_export(&dir);
     let header = dir.join("loads.json");
     let original = std::fs::read_to_string(&header).unwrap();
-    let edits: [(&str, &dyn Fn(&mut serde_json::Value)); 5] = [
-        ("sets[5].angular_velocity_rad_s", &|v| {
+    let edits: [(&str, Edit); 5] = [
+        ("sets[5].angular_velocity_rad_s", |v| {
             v["sets"][5]["angular_velocity_rad_s"][2] = 1e308.into()
         }),
-        ("sets[5].angular_velocity_rad_s", &|v| {
+        ("sets[5].angular_velocity_rad_s", |v| {
             v["sets"][5]["angular_velocity_rad_s"][2] = 1e30.into()
         }),
-        ("sets[7].angular_acceleration_rad_s2", &|v| {
+        ("sets[7].angular_acceleration_rad_s2", |v| {
             v["sets"][7]["angular_acceleration_rad_s2"][0] = 1e300.into()
         }),
-        ("sets[0].acceleration_m_s2", &|v| {
+        ("sets[0].acceleration_m_s2", |v| {
             v["sets"][0]["acceleration_m_s2"][1] = (-1e30).into()
         }),
-        ("header.cage_speed_rpm", &|v| {
+        ("header.cage_speed_rpm", |v| {
             v["header"]["cage_speed_rpm"] = 1e30.into()
         }),
     ];

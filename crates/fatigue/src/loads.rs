@@ -304,7 +304,7 @@ impl CageLoadExport {
             ("header.bar_station_z_m", 0, h.bar_station_z_m),
         ];
         for (key, occurrence, value) in lengths {
-            if !(value.abs() <= size) {
+            if !(..=size).contains(&value.abs()) {
                 return Err(bad(
                     key,
                     occurrence,
@@ -372,7 +372,7 @@ impl CageLoadExport {
                 c.pitch_radius
             )
         };
-        if !(h.cage_speed_rpm.abs() <= max_speed * rpm) {
+        if !(..=max_speed * rpm).contains(&h.cage_speed_rpm.abs()) {
             return Err(bad(
                 "header.cage_speed_rpm",
                 0,
@@ -392,7 +392,7 @@ impl CageLoadExport {
         let max_angular_acceleration = max_speed / MIN_CAGE_SPEED_UP_S;
         for (i, set) in self.sets.iter().enumerate() {
             let key = |name: &str| format!("sets[{i}].{name}");
-            if !(set.cage_angle_deg.abs() <= 360.0) {
+            if !(..=360.0).contains(&set.cage_angle_deg.abs()) {
                 return Err(bad(
                     &key("cage_angle_deg"),
                     i,
@@ -410,11 +410,11 @@ impl CageLoadExport {
                 ));
             }
             let speed = norm(&set.angular_velocity_rad_s);
-            if !(speed <= max_speed) {
+            if !(..=max_speed).contains(&speed) {
                 return Err(bad(&key("angular_velocity_rad_s"), i, speed_reason(speed)));
             }
             let alpha = norm(&set.angular_acceleration_rad_s2);
-            if !(alpha <= max_angular_acceleration) {
+            if !(..=max_angular_acceleration).contains(&alpha) {
                 return Err(bad(
                     &key("angular_acceleration_rad_s2"),
                     i,
@@ -424,7 +424,7 @@ impl CageLoadExport {
                 ));
             }
             let a = norm(&set.acceleration_m_s2);
-            if !(a <= MAX_CAGE_ACCELERATION_M_S2) {
+            if !(..=MAX_CAGE_ACCELERATION_M_S2).contains(&a) {
                 return Err(bad(
                     &key("acceleration_m_s2"),
                     i,
@@ -639,7 +639,7 @@ mod tests {
             location: 1,
             ..bar
         };
-        let export = CageLoadExport {
+        CageLoadExport {
             header: ExportHeader {
                 format: FORMAT.into(),
                 version: VERSION,
@@ -655,8 +655,7 @@ mod tests {
                 set(2.0, vec![]),
                 set(4.0, vec![bar]),
             ],
-        };
-        export
+        }
     }
 
     fn scratch(name: &str) -> PathBuf {

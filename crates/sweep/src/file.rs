@@ -510,10 +510,21 @@ mod tests {
             Err(OverrideError::Override { key, .. }) => assert_eq!(key, "cage.width"),
             other => panic!("{other:?}"),
         }
-        let nested = set("inner_ring.ribs.0.diameter", "1e308 mm");
+        let nested = set("inner_ring.ribs.0.diameter", "fast");
         match model_with_overrides(base, "base.toml", &nested) {
             Err(OverrideError::Override { key, .. }) => {
                 assert_eq!(key, "inner_ring.ribs.0.diameter")
+            }
+            other => panic!("{other:?}"),
+        }
+        // a rib rim beyond the cage fails at the cage's key: its line in the base file
+        let huge_rib = set("inner_ring.ribs.0.diameter", "1e308 mm");
+        match model_with_overrides(base, "base.toml", &huge_rib) {
+            Err(OverrideError::Base(e)) => {
+                let (line, _) = e.position.expect("a line of the base file");
+                let text = base.lines().nth(line - 1).unwrap();
+                let name = e.key.rsplit('.').next().unwrap();
+                assert!(text.contains(name), "{e}: line {line} is '{text}'");
             }
             other => panic!("{other:?}"),
         }
