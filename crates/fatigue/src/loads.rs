@@ -514,12 +514,57 @@ impl RowLimits {
     }
 }
 
+/// Refuses a table whose footer places a column chunk outside the file's `file_bytes` (a damaged
+/// file): the Parquet reader asserts on a negative extent instead of returning an error.
+fn check_column_extents(
+    reader: &SerializedFileReader<std::fs::File>,
+    file_bytes: u64,
+) -> Result<(), String> {
+    for group in reader.metadata().row_groups() {
+        for column in group.columns() {
+            let start = column
+                .dictionary_page_offset()
+                .unwrap_or(column.data_page_offset());
+            let length = column.compressed_size();
+            let inside = u64::try_from(start)
+                .ok()
+                .zip(u64::try_from(length).ok())
+                .is_some_and(|(s, l)| s.checked_add(l).is_some_and(|end| end <= file_bytes));
+            if !inside {
+                return Err(format!(
+                    "column {} lies outside the file (offset {start}, {length} bytes): a damaged table",
+                    column.column_path()
+                ));
+            }
+        }
+    }
+    Ok(())
+}
+
 /// The contact rows of a load table: (set, contact), each within `limits`; an error names the
 /// table, the row (1-based) and the column.
+///
+/// The Parquet reader asserts on some damaged files instead of returning an error: such a panic
+/// is caught and the table refused as damaged.
 fn read_contacts(table: &Path, limits: &RowLimits) -> Result<Vec<(usize, ContactLoad)>, String> {
     let fail = |e: &dyn std::fmt::Display| format!("{}: {e}", table.display());
     let file = std::fs::File::open(table).map_err(|e| fail(&e))?;
+    let file_bytes = file.metadata().map_err(|e| fail(&e))?.len();
     let reader = SerializedFileReader::new(file).map_err(|e| fail(&e))?;
+    check_column_extents(&reader, file_bytes).map_err(|e| fail(&e))?;
+    std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+        contact_rows(table, &reader, limits)
+    }))
+    .unwrap_or_else(|_| Err(fail(&"the Parquet reader failed on a damaged table")))
+}
+
+/// The contact rows of the opened load `table`, as [`read_contacts`] returns them.
+fn contact_rows(
+    table: &Path,
+    reader: &SerializedFileReader<std::fs::File>,
+    limits: &RowLimits,
+) -> Result<Vec<(usize, ContactLoad)>, String> {
+    let fail = |e: &dyn std::fmt::Display| format!("{}: {e}", table.display());
     let rows = reader.get_row_iter(None).map_err(|e| fail(&e))?;
     let mut out = Vec::new();
     for (index, row) in rows.enumerate() {
@@ -706,5 +751,29 @@ mod tests {
         bad.write(&path).unwrap();
         let e = CageLoadExport::read(&path).unwrap_err();
         assert!(e.contains("row 2, column z_m"), "{e}");
+    }
+
+    /// M2 (issue 39 mutation test): a load table whose Parquet footer is damaged is refused
+    /// naming the file; it panicked in the Parquet reader (a column chunk of negative extent).
+    #[test]
+    fn m2_a_damaged_load_table_is_refused_not_a_panic() {
+        let table = scratch("m2");
+        export().write(&table).unwrap();
+        let good = std::fs::read(&table).unwrap();
+        // every byte of the footer (its metadata, before the 8-byte length and magic) in turn,
+        // set to 0x00, 0x7f or 0xff
+        let footer = u32::from_le_bytes(good[good.len() - 8..good.len() - 4].try_into().unwrap());
+        let start = good.len() - 8 - footer as usize;
+        for at in start..good.len() - 8 {
+            let byte = [0x00, 0x7f, 0xff][at % 3];
+            let mut damaged = good.clone();
+            damaged[at] = byte;
+            std::fs::write(&table, &damaged).unwrap();
+            match std::panic::catch_unwind(|| CageLoadExport::read(&table)) {
+                Ok(Ok(_)) => {}
+                Ok(Err(e)) => assert!(e.contains("loads"), "byte {at} = {byte:#x}: {e}"),
+                Err(_) => panic!("byte {at} = {byte:#x}: the reader panicked"),
+            }
+        }
     }
 }
