@@ -6,7 +6,7 @@
 mod common;
 
 use common::{example, rolldyn};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// A fresh temporary folder for `name`.
 fn folder(name: &str) -> PathBuf {
@@ -16,7 +16,7 @@ fn folder(name: &str) -> PathBuf {
 }
 
 /// A copy of the default model with `from` replaced by `to` (and `extra` appended) in `dir`.
-fn model_in(dir: &PathBuf, from: &str, to: &str, extra: &str) -> String {
+fn model_in(dir: &Path, from: &str, to: &str, extra: &str) -> String {
     let text = std::fs::read_to_string(example("2002834.toml")).unwrap();
     assert!(text.contains(from), "test setup: '{from}'");
     let path = dir.join("m.toml");

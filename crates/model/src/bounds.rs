@@ -85,7 +85,7 @@ pub fn check_rolling_speed(key: &str, speed: f64) -> Result<(), GeometryError> {
 /// The reason a contact pressure `pressure_pa` is beyond [`MAX_CREDIBLE_PRESSURE_PA`], for a
 /// message naming the load that gives it; `None` within the bound.
 pub fn pressure_beyond_materials(pressure_pa: f64) -> Option<String> {
-    (!(pressure_pa <= MAX_CREDIBLE_PRESSURE_PA)).then(|| {
+    (pressure_pa.is_nan() || pressure_pa > MAX_CREDIBLE_PRESSURE_PA).then(|| {
         format!(
             "a Hertz pressure of {} GPa, beyond any bearing material ({} GPa): the elastic \
              contact model does not apply",
@@ -161,7 +161,7 @@ pub fn check_radial_load(
     key: &str,
     load: f64,
 ) -> Result<(), GeometryError> {
-    if !(load >= 0.0) {
+    if load.is_nan() || load < 0.0 {
         return Err(GeometryError::new(key, "must be ≥ 0"));
     }
     match pressure_beyond_materials(radial_load_pressure_floor(bearing, load)) {
