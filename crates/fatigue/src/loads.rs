@@ -10,7 +10,9 @@ use parquet::file::reader::{FileReader, SerializedFileReader};
 use parquet::record::Field;
 use rolldyn_geometry::RetainingLip;
 use rolldyn_output::mixed_table::{Column, Values, write_parquet_table};
+use rolldyn_output::non_finite::{NON_FINITE_KEY, default_reason};
 use serde::{Deserialize, Serialize};
+use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
 /// The kind of a contact on the cage.
@@ -619,11 +621,47 @@ const NUMBER_COLUMNS: [&str; 9] = [
 
 /// The largest contact forces of the recorded revolution (seed 000 Table 3.2 columns the
 /// correlations of V-27 use), N.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+///
+/// Serialised with a `non_finite` reason beside a force the revolution did not define (an
+/// export holds no roller–raceway force: NaN).
+#[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
 pub struct RevolutionMaxima {
     pub max_cage_land_force_n: f64,
     pub max_roller_cage_force_n: f64,
     pub max_roller_raceway_force_n: f64,
+}
+
+impl Serialize for RevolutionMaxima {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeMap;
+        let values = [
+            ("max_cage_land_force_n", self.max_cage_land_force_n),
+            ("max_roller_cage_force_n", self.max_roller_cage_force_n),
+            (
+                "max_roller_raceway_force_n",
+                self.max_roller_raceway_force_n,
+            ),
+        ];
+        let reasons: BTreeMap<&str, &str> = values
+            .iter()
+            .filter(|(_, value)| !value.is_finite())
+            .map(|&(key, value)| match (key, value.is_nan()) {
+                ("max_roller_raceway_force_n", true) => (
+                    key,
+                    "not recorded: a cage-load export holds no roller–raceway force",
+                ),
+                _ => (key, default_reason(value)),
+            })
+            .collect();
+        let mut map = serializer.serialize_map(None)?;
+        for (key, value) in values {
+            map.serialize_entry(key, &value)?;
+        }
+        if !reasons.is_empty() {
+            map.serialize_entry(NON_FINITE_KEY, &reasons)?;
+        }
+        map.end()
+    }
 }
 
 impl RevolutionMaxima {

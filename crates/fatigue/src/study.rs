@@ -15,7 +15,9 @@ use crate::recorder::{CageLoadRecorder, export_output_step};
 use crate::sn::{BelowKnee, SnSettings};
 use crate::unit_stresses::{Stress, UnitStresses, signed_von_mises};
 use rolldyn_geometry::CylindricalRollerBearing;
+use rolldyn_output::non_finite::default_reason;
 use serde::Serialize;
+use std::collections::BTreeMap;
 use std::ops::ControlFlow;
 
 // at its old path too (the `rolldyn fatigue` command names it here); it lives with the export
@@ -158,6 +160,53 @@ pub struct FatigueAnswer {
     /// the endurance margin of the worst point on the inclusion's surface
     pub inclusion_endurance_margin: Option<f64>,
     pub points: Vec<PointFatigue>,
+    /// why a value of this level prints as `null` (docs/outputs.md: the one policy for values
+    /// that are not finite numbers)
+    #[serde(skip_serializing_if = "BTreeMap::is_empty")]
+    pub non_finite: BTreeMap<&'static str, String>,
+}
+
+impl FatigueAnswer {
+    /// The reasons of the values that print as `null`: an infinite life is unlimited (no cycle
+    /// above the S–N curve's knee), any other non-finite value gets the usual reason.
+    fn non_finite_reasons(&self) -> BTreeMap<&'static str, String> {
+        let unlimited = "unlimited: no cycle above the knee of the S–N curve";
+        let values = [
+            ("damage_per_revolution", self.damage_per_revolution),
+            ("life_revolutions", self.life_revolutions),
+            ("life_hours", self.life_hours),
+            (
+                "extrapolated_life_revolutions",
+                self.extrapolated_life_revolutions,
+            ),
+            ("max_stress_pa", self.max_stress_pa),
+            ("endurance_margin", self.endurance_margin),
+            ("stress_safety_factor", self.stress_safety_factor),
+            (
+                "inclusion_life_revolutions",
+                self.inclusion_life_revolutions.unwrap_or(0.0),
+            ),
+            (
+                "inclusion_max_stress_pa",
+                self.inclusion_max_stress_pa.unwrap_or(0.0),
+            ),
+            (
+                "inclusion_endurance_margin",
+                self.inclusion_endurance_margin.unwrap_or(0.0),
+            ),
+        ];
+        values
+            .into_iter()
+            .filter(|(_, value)| !value.is_finite())
+            .map(|(key, value)| {
+                let reason = match value == f64::INFINITY && key.contains("life") {
+                    true => unlimited.to_string(),
+                    false => default_reason(value).to_string(),
+                };
+                (key, reason)
+            })
+            .collect()
+    }
 }
 
 /// Everything a fatigue evaluation computed, for the report files.
@@ -288,10 +337,12 @@ pub fn evaluate(
         inclusion_location: None,
         inclusion_endurance_margin: None,
         points: fatigue,
+        non_finite: BTreeMap::new(),
     };
     if let Some(inclusion) = &settings.inclusion {
         inclusion_fatigue(&unit.cage, inclusion, &histories[critical], &mut answer)?;
     }
+    answer.non_finite = answer.non_finite_reasons();
     Ok(FatigueResult {
         answer,
         critical_history: histories[critical].clone(),

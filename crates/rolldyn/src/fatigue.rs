@@ -462,9 +462,9 @@ impl Analysis for Fatigue {
                         ControlFlow::Continue(())
                     }
                 };
-                let store = match &request.out {
+                let store = match &out {
                     Some(dir) => Some(StateFile::new(
-                        out_dir(dir)?.join(STATE_FILE),
+                        dir.join(STATE_FILE),
                         fingerprint(&format!(
                             "fatigue\n{model:?}\n{:?}\n{settings:?}",
                             request.operating

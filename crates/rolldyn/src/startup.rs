@@ -183,7 +183,7 @@ impl Analysis for Startup {
             .file()
             .and_then(|p| p.file_stem())
             .map_or("model".into(), |s| s.to_string_lossy().to_string());
-        let out = crate::output::out_dir(
+        let out = out_dir(
             &request
                 .out
                 .clone()
@@ -195,7 +195,7 @@ impl Analysis for Startup {
             average,
         };
         let store = StateFile::new(
-            out_dir(&out)?.join(STATE_FILE),
+            out.join(STATE_FILE),
             fingerprint(&format!("startup\n{model:?}\n{revolutions:?}\n{average:?}")),
         );
         let finished: Vec<FrozenPointRow> = match request.resume {

@@ -7,8 +7,8 @@
 //! program would return (`Failure::exit_code`). Every mutant is classified:
 //!
 //! - exit 0, *plausible*: accepted; no number of the result may be non-finite (a raw NaN or ±∞
-//!   in the serialised result: the JSON writer would print a `null` without reason), except the
-//!   nulls docs/outputs.md gives a meaning ([`DOCUMENTED_NULLS`]);
+//!   in the serialised result: the JSON writer would print a `null` without reason) unless a
+//!   `non_finite` object beside it gives the reason;
 //! - exit 2, *located*: refused as bad input by a message that names where ([`located`]): for
 //!   a keyed file (TOML, JSON) `FILE:LINE`, or the file with `line N`, or a key of it; for a
 //!   table (CSV, Parquet) the file; for a command-line value the value itself or its flag;
@@ -314,20 +314,9 @@ fn non_finite_numbers(value: &impl Serialize) -> Vec<String> {
     walker
         .found
         .into_iter()
-        .filter(|(path, _)| !DOCUMENTED_NULLS.contains(&path.as_str()))
         .map(|(path, value)| format!("{path} = {value}"))
         .collect()
 }
-
-/// Result keys whose `null` docs/outputs.md explains (`fatigue --json`): the lives are null for
-/// an unlimited life, the roller–raceway force maximum with `--loads` (an export does not hold
-/// it).
-const DOCUMENTED_NULLS: &[&str] = &[
-    "life_revolutions",
-    "life_hours",
-    "inclusion_life_revolutions",
-    "maxima.max_roller_raceway_force_n",
-];
 
 mod walker {
     //! A serde serializer that writes nothing and records where a float is not finite.
