@@ -28,9 +28,11 @@ python3 tools/module_cycles.py
 
 cargo test --workspace
 
-# The program the Python answers are compared with, and the package (release builds share their
-# compiled crates).
-cargo build --release --bin rolldyn
+# The package and the program its answers are compared with, both with the wheel profile
+# (python/pyproject.toml: thin LTO), so the program reuses the crates pip's build compiled — a fat-LTO
+# release build of the same code would add minutes and test nothing more (same arithmetic,
+# BENCHMARKS.md "Wheel build and profiles").
 python3 -m pip install --quiet --disable-pip-version-check "./python[test]"
+cargo build --profile wheel --bin rolldyn
 
-ROLLDYN_BIN="$PWD/target/release/rolldyn" python3 -m pytest python/tests
+ROLLDYN_BIN="$PWD/target/wheel/rolldyn" python3 -m pytest python/tests

@@ -737,6 +737,8 @@ def fatigue(
     inclusion: Optional[str] = None,
     mean_stress: Optional[str] = None,
     fillet_radius: Optional[Quantity] = None,
+    mesh_size: Optional[Quantity] = None,
+    fillet_mesh_size: Optional[Quantity] = None,
     stress_concentration: Optional[Sequence[float]] = None,
     sn_curve: Optional[PathLike] = None,
     coating_factor: Optional[float] = None,
@@ -762,6 +764,9 @@ def fatigue(
     inclusion : {"debonded", "bonded"}, optional
     mean_stress : {"none", "goodman", "gerber", "swt"}, optional
     fillet_radius : float or str, optional
+    mesh_size, fillet_mesh_size : float or str, optional
+        Element sizes of the CalculiX solid model away from the fillets (default 8 mm) and at
+        the fillet corners (default 0.6 mm); with ``stress="calculix"``.
     stress_concentration : pair of float, optional
     sn_curve : path, optional
         CSV rows ``N, sigma_a_MPa`` replacing the S–N curve of the cage's material.
@@ -783,7 +788,8 @@ def fatigue(
     -------
     Result
         Summary keys: ``model``, ``stress_model``, ``load_sets``, ``cage_speed_rpm``,
-        ``stress_concentration``, ``damage_per_revolution``, ``life_revolutions``,
+        ``stress_concentration``, ``solid_mesh`` (CalculiX element sizes, m),
+        ``damage_per_revolution``, ``life_revolutions``,
         ``life_hours``, ``extrapolated_life_revolutions``, ``critical_location``,
         ``critical_point_m``, ``max_stress_pa``, ``endurance_margin``,
         ``stress_safety_factor``, ``maxima``, ``sn`` (the S–N curve's material, source,

@@ -89,14 +89,52 @@ fn fatigue_by_the_calculix_solid_model() {
         "1",
         "--stress",
         "calculix",
+        "--mesh-size",
+        "16mm",
+        "--fillet-mesh-size",
+        "1.2mm",
         "--cache",
         &cache,
         "--json",
     ]));
     assert_eq!(answer["stress_model"], "calculix");
+    assert_eq!(answer["solid_mesh"]["mesh_size_m"], 0.016);
+    assert_eq!(answer["solid_mesh"]["fillet_mesh_size_m"], 0.0012);
     assert_eq!(answer["load_sets"], 180);
     assert!(answer["max_stress_pa"].as_f64().unwrap() > 0.0);
     assert!(std::fs::read_dir(&cache).unwrap().count() > 0);
+}
+
+#[test]
+fn solid_mesh_sizes_are_checked_before_the_run() {
+    let refused = [
+        (
+            &["--mesh-size", "6mm"][..],
+            "--mesh-size: element sizes belong to the solid model",
+        ),
+        (
+            &["--stress", "calculix", "--fillet-mesh-size", "0.01mm"][..],
+            "--fillet-mesh-size 0.01 mm: at least 0.05 mm",
+        ),
+        (
+            &[
+                "--stress",
+                "calculix",
+                "--mesh-size",
+                "2mm",
+                "--fillet-mesh-size",
+                "3mm",
+            ][..],
+            "--fillet-mesh-size 3 mm is larger than --mesh-size 2 mm",
+        ),
+    ];
+    for (flags, reason) in refused {
+        let out = rolldyn(&[&["fatigue", "--revolutions", "1"][..], flags].concat());
+        assert_eq!(out.status.code(), Some(2), "{flags:?}");
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(stderr.contains(reason), "{flags:?}: {stderr}");
+        assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    }
 }
 
 #[test]

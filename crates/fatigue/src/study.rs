@@ -5,6 +5,7 @@
 
 use crate::cage::{CageGeometry, FilletPoint};
 use crate::cage_material::{CageMaterial, SnChoice, SnUsed, resolve};
+use crate::calculix::CalculixSettings;
 use crate::damage::{DamageBreakdown, life_hours, miner_damage};
 use crate::frame::{FilletFactors, FrameSettings, fillet_factors};
 use crate::inclusion::{InclusionModel, InclusionSettings};
@@ -51,6 +52,8 @@ pub struct FatigueSettings {
     pub mean_stress: MeanStressCorrection,
     /// the inclusion at the critical location, if any
     pub inclusion: Option<InclusionSettings>,
+    /// the solid model's mesh and executables (used with [`StressModelKind::Calculix`])
+    pub calculix: CalculixSettings,
 }
 
 impl Default for FatigueSettings {
@@ -64,6 +67,7 @@ impl Default for FatigueSettings {
             sn: SnChoice::default(),
             mean_stress: MeanStressCorrection::default(),
             inclusion: None,
+            calculix: CalculixSettings::default(),
         }
     }
 }
@@ -121,6 +125,25 @@ pub struct PointFatigue {
     pub damage_per_revolution: f64,
 }
 
+/// The element sizes of the solid model a fatigue answer was computed with.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct SolidMesh {
+    /// largest element size away from the fillets, m
+    pub mesh_size_m: f64,
+    /// element size at the fillet corners, m
+    pub fillet_mesh_size_m: f64,
+}
+
+impl SolidMesh {
+    /// The mesh of `settings`.
+    pub fn of(settings: &CalculixSettings) -> Self {
+        Self {
+            mesh_size_m: settings.mesh_size,
+            fillet_mesh_size_m: settings.fillet_mesh_size,
+        }
+    }
+}
+
 /// The answer of a fatigue evaluation (`rolldyn fatigue --json`).
 #[derive(Debug, Clone, Serialize)]
 pub struct FatigueAnswer {
@@ -129,6 +152,8 @@ pub struct FatigueAnswer {
     pub cage_speed_rpm: f64,
     /// the fillet stress-concentration factors of the frame model
     pub stress_concentration: FilletFactors,
+    /// the element sizes of the CalculiX solid model (`None` with the frame model)
+    pub solid_mesh: Option<SolidMesh>,
     pub damage_per_revolution: f64,
     /// cage revolutions to failure (∞ → null)
     pub life_revolutions: f64,
@@ -321,6 +346,10 @@ pub fn evaluate(
         load_sets: export.sets.len(),
         cage_speed_rpm,
         stress_concentration: fillet_factors(&unit.cage, &settings.frame),
+        solid_mesh: match settings.stress_model {
+            StressModelKind::Frame => None,
+            StressModelKind::Calculix => Some(SolidMesh::of(&settings.calculix)),
+        },
         damage_per_revolution: breakdown.damage_per_repeat,
         life_revolutions: life,
         life_hours: life_hours(life, omega),

@@ -9,6 +9,7 @@ use crate::output::{out_dir, sub_dir};
 use crate::run_record::{ModelOrigin, finish_out_folder};
 use crate::table::{Table, Tables};
 use rolldyn_fatigue::cage_material::{CageMaterial, SnChoice, resolve};
+use rolldyn_fatigue::calculix::CalculixSettings;
 use rolldyn_fatigue::inclusion::{InclusionSettings, Interface};
 use rolldyn_fatigue::mean_stress::MeanStressCorrection;
 use rolldyn_fatigue::sn::{BelowKnee, SnCurve};
@@ -94,6 +95,10 @@ pub struct FatigueRequest {
     pub mean_stress: MeanStressName,
     /// Radius of the window-corner fillet, overriding the model's `cage.pocket.fillet_radius`.
     pub fillet_radius: Option<Quantity<Length>>,
+    /// Largest element size of the CalculiX solid model away from the fillets (default 8 mm).
+    pub mesh_size: Option<Quantity<Length>>,
+    /// Element size of the CalculiX solid model at the fillet corners (default 0.6 mm).
+    pub fillet_mesh_size: Option<Quantity<Length>>,
     /// Stress-concentration factors of the frame model's fillets, `[tension, bending]`
     /// (default: from the fillet radius by Roark's charts).
     pub stress_concentration: Option<[f64; 2]>,
@@ -147,6 +152,8 @@ impl Default for FatigueRequest {
             inclusion: None,
             mean_stress: MeanStressName::None,
             fillet_radius: None,
+            mesh_size: None,
+            fillet_mesh_size: None,
             stress_concentration: None,
             sn_curve: None,
             coating_factor: None,
@@ -184,7 +191,54 @@ fn check_factor_pair([t, b]: [f64; 2]) -> Result<[f64; 2], String> {
     }
 }
 
+/// The finest element a solid model of a cage may ask for, m: 0.05 mm meshes even a small
+/// cage into tens of millions of nodes, beyond a workstation's memory.
+pub const FINEST_SOLID_ELEMENT_M: f64 = 0.05e-3;
+
 impl FatigueRequest {
+    /// The CalculiX settings with the request's element sizes, checked: only with the CalculiX
+    /// model, no element finer than [`FINEST_SOLID_ELEMENT_M`], the fillet elements no larger
+    /// than the others (they refine the mesh).
+    fn calculix_settings(&self) -> Result<CalculixSettings, Failure> {
+        let defaults = CalculixSettings::default();
+        let sizes = [
+            ("--mesh-size", self.mesh_size, defaults.mesh_size),
+            (
+                "--fillet-mesh-size",
+                self.fillet_mesh_size,
+                defaults.fillet_mesh_size,
+            ),
+        ];
+        let mut chosen = [0.0; 2];
+        for ((flag, given, default), value) in sizes.into_iter().zip(&mut chosen) {
+            if given.is_some() && self.stress != StressName::Calculix {
+                return Err(Failure::Input(format!(
+                    "{flag}: element sizes belong to the solid model (--stress calculix)"
+                )));
+            }
+            *value = given.map_or(default, |q| q.si());
+            if !(*value >= FINEST_SOLID_ELEMENT_M && value.is_finite()) {
+                return Err(Failure::Input(format!(
+                    "{flag} {} mm: at least 0.05 mm (finer meshes a cage into tens of millions of nodes)",
+                    rolldyn_units::format_number(*value * 1e3)
+                )));
+            }
+        }
+        let [mesh_size, fillet_mesh_size] = chosen;
+        if fillet_mesh_size > mesh_size {
+            return Err(Failure::Input(format!(
+                "--fillet-mesh-size {} mm is larger than --mesh-size {} mm: the fillet elements refine the mesh",
+                rolldyn_units::format_number(fillet_mesh_size * 1e3),
+                rolldyn_units::format_number(mesh_size * 1e3)
+            )));
+        }
+        Ok(CalculixSettings {
+            mesh_size,
+            fillet_mesh_size,
+            ..defaults
+        })
+    }
+
     /// The fatigue settings the request asks for.
     pub fn settings(&self) -> Result<FatigueSettings, Failure> {
         let defaults = FatigueSettings::default();
@@ -225,6 +279,7 @@ impl FatigueRequest {
                 ..defaults.frame.clone()
             },
             fillet_radius_m: self.fillet_radius.map(|f| f.si()),
+            calculix: self.calculix_settings()?,
             sn,
             inclusion: self.inclusion.map(|interface| InclusionSettings {
                 interface: match interface {
@@ -270,7 +325,7 @@ pub fn unit_stresses(
         StressModelKind::Calculix => rolldyn_fatigue::calculix::unit_stresses(
             cage,
             z,
-            &rolldyn_fatigue::calculix::CalculixSettings::default(),
+            &settings.calculix,
             Some(&sub_dir(cache)?),
         )
         .map_err(|e| Failure::Run(e.to_string())),

@@ -39,6 +39,14 @@ pub struct Args {
     /// `cage.pocket.fillet_radius`.
     #[arg(long)]
     pub fillet_radius: Option<Quantity<Length>>,
+    /// Largest element size of the CalculiX solid model away from the fillets (e.g. 6mm;
+    /// default 8 mm). With --stress calculix.
+    #[arg(long)]
+    pub mesh_size: Option<Quantity<Length>>,
+    /// Element size of the CalculiX solid model at the fillet corners (e.g. 0.4mm; default
+    /// 0.6 mm). With --stress calculix.
+    #[arg(long)]
+    pub fillet_mesh_size: Option<Quantity<Length>>,
     /// Stress-concentration factors of the frame model's fillets, `TENSION,BENDING` (default: from
     /// the fillet radius by Roark's shoulder-fillet charts).
     #[arg(long, value_parser = parse_factor_pair)]
@@ -114,6 +122,8 @@ pub fn run(args: Args) -> Result<(), Failure> {
         inclusion,
         mean_stress,
         fillet_radius,
+        mesh_size,
+        fillet_mesh_size,
         stress_concentration,
         sn_curve,
         coating_factor,
@@ -142,6 +152,8 @@ pub fn run(args: Args) -> Result<(), Failure> {
         inclusion,
         mean_stress,
         fillet_radius,
+        mesh_size,
+        fillet_mesh_size,
         stress_concentration,
         sn_curve,
         coating_factor,
