@@ -17,7 +17,7 @@ use crate::rhs::assembly::{cage_rates, roller_rates};
 use crate::rhs::bodies::{CageKin, cage_kinematics, single_roller_kinematics};
 use crate::vec3::{V3, add, axpy, cross, dot, norm, perp, power, scale, sub};
 use rolldyn_contact::damping::SliceDamping;
-use rolldyn_lubrication::{ContactGeometry, ContactState, traction};
+use rolldyn_lubrication::{BatchContact, ContactGeometry, ContactState, SliceBatch};
 
 /// Per-roller results of the last reported evaluation.
 #[derive(Debug, Clone, Default)]
@@ -50,6 +50,8 @@ pub struct TaperedSystem<'m> {
     /// net contact force of all rollers on the inner ring, N
     pub inner_contact_force: V3,
     wrench: Vec<Wrench>,
+    /// scratch of the raceway slices of one roller
+    pub(super) slices: SliceScratch,
     report: bool,
     /// the opt-in contact record of the last reported evaluation (see [`super::contacts`])
     pub(crate) contacts: Option<Vec<RollerContacts>>,
@@ -64,6 +66,7 @@ impl<'m> TaperedSystem<'m> {
             rollers: vec![RollerReport::default(); 2 * model.z],
             inner_contact_force: [0.0; 3],
             wrench: vec![Wrench::default(); 2 * model.z],
+            slices: SliceScratch::default(),
             report: false,
             contacts: None,
         }
@@ -102,7 +105,7 @@ fn inner_body(model: &TaperedModel, t: f64, y: &[f64], lay: &TaperedLayout) -> B
 }
 
 /// The cup: fixed, axis z.
-const CUP: BodyKin = BodyKin {
+pub(super) const CUP: BodyKin = BodyKin {
     o: [0.0; 3],
     v: [0.0; 3],
     axis: [0.0, 0.0, 1.0],
@@ -146,6 +149,7 @@ fn evaluate(sys: &mut TaperedSystem, t: f64, y: &[f64], dy: &mut [f64]) {
             &inner,
             &mut roller,
             &mut f_inner,
+            &mut sys.slices,
             (&mut report, record.as_deref_mut()),
         );
         ends(
@@ -220,7 +224,7 @@ fn inner_ring_rates(
 
 /// Position of a point in a body's half-plane: `(ρ, ζ, e_ρ)`.
 #[inline]
-fn half_plane(body: &BodyKin, p: V3) -> (f64, f64, V3) {
+pub(super) fn half_plane(body: &BodyKin, p: V3) -> (f64, f64, V3) {
     let rel = sub(p, body.o);
     let zeta = dot(rel, body.axis);
     let radial = axpy(rel, -zeta, body.axis);
@@ -230,7 +234,7 @@ fn half_plane(body: &BodyKin, p: V3) -> (f64, f64, V3) {
 
 /// Velocity of the material point `p` of a body.
 #[inline]
-fn body_velocity(body: &BodyKin, p: V3) -> V3 {
+pub(super) fn body_velocity(body: &BodyKin, p: V3) -> V3 {
     add(body.v, cross(body.omega, sub(p, body.o)))
 }
 
@@ -248,7 +252,44 @@ fn yaw_and_pitch(geo: &super::geometry::RowGeometry, rk: &RollerKinematics) -> (
     (yaw, pitch)
 }
 
-/// The slices of one roller on the cone (`race = 0`) and the cup (`race = 1`).
+/// A loaded slice of a roller on the cone or cup, between its normal force and its traction.
+#[derive(Debug, Clone, Copy)]
+struct LoadedSlice {
+    /// 0 cone, 1 cup; the slice's index along the roller
+    race: usize,
+    slice: usize,
+    /// normal force, N; unit normal (ring → roller); contact point
+    q: f64,
+    n: V3,
+    p: V3,
+    /// tangential relative velocity (roller − ring) and its magnitude, m/s
+    vt: V3,
+    vs: f64,
+    /// entrainment speed in the orbital frame, m/s
+    u_roll: f64,
+    /// distance of the slice centre from the ring axis, m; reduced radius across the line, m
+    rho: f64,
+    reduced_radius: f64,
+    /// the slice's contact in the traction batch
+    contact: BatchContact,
+}
+
+/// Scratch of [`raceways`]: the loaded slices of one roller and their traction batch.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct SliceScratch {
+    batch: SliceBatch,
+    loaded: Vec<LoadedSlice>,
+    /// evaluate the slices with the scalar oracle instead ([`super::slice_oracle`])
+    #[cfg(test)]
+    pub(super) scalar: bool,
+}
+
+/// The slices of one roller on the cone (`race = 0`) and the cup (`race = 1`): pass 1 finds the
+/// loaded slices (approach, slice law, damping) and their kinematics and adds each to the
+/// traction batch as a line contact of its own (its own film: per-slice load, length, R' and
+/// entrainment, SPEC §3.3); the batch evaluates every coefficient in one vector loop
+/// ([`SliceBatch::evaluate`], the kernel of the cylindrical raceways); pass 2 applies each
+/// slice's normal and friction force in slice order (seed 000 (2.9)).
 #[allow(clippy::too_many_arguments)]
 fn raceways(
     model: &TaperedModel,
@@ -257,7 +298,79 @@ fn raceways(
     inner: &BodyKin,
     roller: &mut Wrench,
     f_inner: &mut V3,
+    scratch: &mut SliceScratch,
     (report, mut record): (&mut RollerReport, Option<&mut RollerContacts>),
+) {
+    #[cfg(test)]
+    if scratch.scalar {
+        return super::slice_oracle::raceways(
+            model,
+            row,
+            rk,
+            inner,
+            roller,
+            f_inner,
+            (report, record),
+        );
+    }
+    let SliceScratch { batch, loaded, .. } = scratch;
+    batch.clear();
+    loaded.clear();
+    loaded_slices(model, row, rk, inner, batch, loaded);
+    batch.evaluate(&model.traction);
+    if let Some(r) = record.as_deref_mut() {
+        r.cone.clear();
+        r.cup.clear();
+    }
+    let (mut total, mut sliding) = ([0.0; 2], [0.0; 2]);
+    for (k, ls) in loaded.iter().enumerate() {
+        let LoadedSlice { race, q, vs, .. } = *ls;
+        let mu = batch.coefficient(k).abs();
+        if let Some(r) = record.as_deref_mut() {
+            let c = if race == 0 { &mut r.cone } else { &mut r.cup };
+            let i = ls.slice;
+            c.force_n[i] = q;
+            c.sliding_m_s[i] = vs;
+            c.lambda[i] = batch.film(ls.contact).2;
+            c.half_width_m[i] = batch.state(k).hertz().half_width_m;
+            c.reduced_radius_m[i] = ls.reduced_radius;
+            c.ring_radius_m[i] = ls.rho;
+        }
+        let mut f = scale(ls.n, q);
+        if vs > 0.0 {
+            f = axpy(f, -mu * q / vs, ls.vt);
+        }
+        roller.force = add(roller.force, f);
+        roller.moment = add(roller.moment, cross(sub(ls.p, rk.c), f));
+        if race == 0 {
+            *f_inner = sub(*f_inner, f);
+            report.cone_slice_max = report.cone_slice_max.max(q);
+        }
+        total[race] += q;
+        sliding[race] += q * vs;
+        report.slip = report.slip.max(vs / ls.u_roll.max(1e-3));
+    }
+    let mean = |race: usize| {
+        if total[race] > 0.0 {
+            sliding[race] / total[race]
+        } else {
+            0.0
+        }
+    };
+    (report.cone, report.cone_sliding) = (total[0], mean(0));
+    (report.cup, report.cup_sliding) = (total[1], mean(1));
+}
+
+/// Pass 1 of [`raceways`]: every loaded slice of the roller on cone and cup, in slice order,
+/// into `loaded`, and as a line contact of its own into `batch` (slice `k` of the batch is
+/// `loaded[k]`).
+fn loaded_slices(
+    model: &TaperedModel,
+    row: usize,
+    rk: &RollerKinematics,
+    inner: &BodyKin,
+    batch: &mut SliceBatch,
+    loaded: &mut Vec<LoadedSlice>,
 ) {
     let geo = &model.rows[row];
     let u = scale(rk.a, geo.sigma);
@@ -267,12 +380,6 @@ fn raceways(
         .into_iter()
         .enumerate()
     {
-        let (mut total, mut sliding) = (0.0, 0.0);
-        let mut slices = record.as_deref_mut().map(|r| {
-            let c = if race == 0 { &mut r.cone } else { &mut r.cup };
-            c.clear();
-            c
-        });
         for i in 0..s.x.len() {
             let centre = axpy(rk.c, s.x[i], u);
             let (rho, zeta, e_rho) = half_plane(body, centre);
@@ -317,49 +424,35 @@ fn raceways(
                 roughness_ra_m: model.roughness,
                 film_thickness_m: None,
             };
-            let tr = traction(&state, &model.traction);
-            let mu = tr.coefficient.abs();
-            if let Some(c) = slices.as_deref_mut() {
-                c.force_n[i] = q;
-                c.sliding_m_s[i] = vs;
-                c.lambda[i] = tr.lambda;
-                c.half_width_m[i] = tr.half_width_m;
-                c.reduced_radius_m[i] = reduced_radius;
-                c.ring_radius_m[i] = rho;
-            }
-            let mut f = scale(n, q);
-            if vs > 0.0 {
-                f = axpy(f, -mu * q / vs, vt);
-            }
-            roller.force = add(roller.force, f);
-            roller.moment = add(roller.moment, cross(sub(p, rk.c), f));
-            if race == 0 {
-                *f_inner = sub(*f_inner, f);
-                report.cone_slice_max = report.cone_slice_max.max(q);
-            }
-            total += q;
-            sliding += q * vs;
-            report.slip = report.slip.max(vs / u_roll.max(1e-3));
-        }
-        let mean_sliding = if total > 0.0 { sliding / total } else { 0.0 };
-        if race == 0 {
-            (report.cone, report.cone_sliding) = (total, mean_sliding);
-        } else {
-            (report.cup, report.cup_sliding) = (total, mean_sliding);
+            let contact = batch.add_contact(&model.traction, &state);
+            batch.push(contact, q, s.length[i], u_roll, vs);
+            loaded.push(LoadedSlice {
+                race,
+                slice: i,
+                q,
+                n,
+                p,
+                vt,
+                vs,
+                u_roll,
+                rho,
+                reduced_radius,
+                contact,
+            });
         }
     }
 }
 
 /// The 3-D unit normal of a half-plane line at the azimuth of `e_ρ`.
 #[inline]
-fn contact_normal(line: &HalfPlaneLine, e_rho: V3, axis: V3) -> V3 {
+pub(super) fn contact_normal(line: &HalfPlaneLine, e_rho: V3, axis: V3) -> V3 {
     add(scale(e_rho, line.n_rho), scale(axis, line.n_zeta))
 }
 
 /// Normal curvature of the raceway cone across its generatrix at distance `ρ` from the axis:
 /// `cos α/ρ`, convex (+) on the cone, concave (−) on the cup, 1/m.
 #[inline]
-fn line_curvature(model: &TaperedModel, race: usize, rho: f64) -> f64 {
+pub(super) fn line_curvature(model: &TaperedModel, race: usize, rho: f64) -> f64 {
     if race == 0 {
         model.cone_angle.cos() / rho
     } else {
@@ -534,5 +627,130 @@ fn bars(
             cage_wrench.moment = sub(cage_wrench.moment, cross(sub(edge, cage.centre), f));
             report.cage += q;
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::conditions::{ContactTemperatures, InnerRingSupport, OperatingConditions};
+    use crate::integrator::Dopri5;
+    use crate::settings::IntegratorSettings;
+    use crate::tapered::{TaperedParameters, initial_state};
+    use rolldyn_geometry::BearingModel;
+    use std::path::Path;
+
+    /// The cassette of `examples/tapered-cassette.toml` (load case 1: 663 rpm, 118 862 N, oil
+    /// at 60 °C), its inner ring free, as `rolldyn simulate` sets it up.
+    fn cassette() -> TaperedModel {
+        let path =
+            Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/tapered-cassette.toml");
+        let file = rolldyn_model::load(&path).unwrap();
+        let BearingModel::Tapered(bearing) = &file.bearing else {
+            panic!("not a tapered bearing");
+        };
+        let traction = file.lubrication.as_ref().unwrap().traction_model().unwrap();
+        let mut c = OperatingConditions::new(663.0 * std::f64::consts::TAU / 60.0, 118_862.0);
+        c.temperatures = ContactTemperatures::uniform(333.15);
+        c.support = InnerRingSupport {
+            radial_free: true,
+            axial_free: true,
+            mass_kg: None,
+        };
+        TaperedModel::new(
+            bearing,
+            c,
+            TaperedParameters::for_bearing(bearing),
+            traction,
+        )
+        .unwrap()
+    }
+
+    /// The rates, the per-roller report and the contact record of one reported evaluation at
+    /// `(t, y)`, with the slices evaluated by the batch or by the scalar oracle.
+    fn evaluated(
+        model: &TaperedModel,
+        t: f64,
+        y: &[f64],
+        scalar: bool,
+    ) -> (Vec<f64>, Vec<RollerReport>, Vec<RollerContacts>) {
+        let mut sys = TaperedSystem::new(model);
+        sys.record_contacts();
+        sys.slices.scalar = scalar;
+        let mut dy = vec![0.0; y.len()];
+        sys.rhs_reported(t, y, &mut dy);
+        (dy, sys.rollers, sys.contacts.unwrap())
+    }
+
+    fn assert_close(what: &str, batched: f64, scalar: f64, rel: f64) {
+        assert!(
+            batched.to_bits() == scalar.to_bits() || (batched - scalar).abs() <= rel * scalar.abs(),
+            "{what}: batched {batched:e} vs scalar {scalar:e}"
+        );
+    }
+
+    /// Issue 40 item 3: the batched slice traction gives the rates of the scalar path (one
+    /// `traction` call per slice) bit for bit — the same arithmetic — at the seated start and
+    /// at the states of the first Dormand–Prince steps (slices entering contact, the rollers
+    /// spinning up); the contact record agrees bit for bit except the Hertz half-width, which
+    /// the record now takes from the slice's state (to 1e-15).
+    #[test]
+    fn batched_slices_match_the_scalar_oracle() {
+        let model = cassette();
+        let y0 = initial_state(&model, 0.0);
+        let n = y0.len();
+        let mut dp = Dopri5::new(0.0, y0, vec![1e-3; n], vec![1.0; n], 1e-8);
+        let mut sys = TaperedSystem::new(&model);
+        let set = IntegratorSettings {
+            tolerance: 1e-5,
+            ..IntegratorSettings::default()
+        };
+        let mut loaded = 0;
+        for step in 0..6 {
+            let (t, y) = (dp.t, dp.y.clone());
+            let (dy_b, rep_b, rec_b) = evaluated(&model, t, &y, false);
+            let (dy_s, rep_s, rec_s) = evaluated(&model, t, &y, true);
+            for (i, (b, s)) in dy_b.iter().zip(&dy_s).enumerate() {
+                assert_eq!(
+                    b.to_bits(),
+                    s.to_bits(),
+                    "step {step}, rate {i}: {b:e} vs {s:e}"
+                );
+            }
+            for (j, (b, s)) in rep_b.iter().zip(&rep_s).enumerate() {
+                let pairs = [
+                    (b.cone, s.cone),
+                    (b.cup, s.cup),
+                    (b.cone_slice_max, s.cone_slice_max),
+                    (b.cone_sliding, s.cone_sliding),
+                    (b.cup_sliding, s.cup_sliding),
+                    (b.slip, s.slip),
+                ];
+                for (k, (b, s)) in pairs.into_iter().enumerate() {
+                    assert_eq!(
+                        b.to_bits(),
+                        s.to_bits(),
+                        "step {step}, roller {j}, report {k}"
+                    );
+                }
+            }
+            for (j, (b, s)) in rec_b.iter().zip(&rec_s).enumerate() {
+                for (bc, sc) in [(&b.cone, &s.cone), (&b.cup, &s.cup)] {
+                    loaded += bc.force_n.iter().filter(|&&q| q > 0.0).count();
+                    assert_eq!(bc.force_n, sc.force_n, "step {step}, roller {j}");
+                    assert_eq!(bc.sliding_m_s, sc.sliding_m_s, "step {step}, roller {j}");
+                    assert_eq!(bc.reduced_radius_m, sc.reduced_radius_m);
+                    assert_eq!(bc.ring_radius_m, sc.ring_radius_m);
+                    for i in 0..bc.lambda.len() {
+                        assert_eq!(bc.lambda[i].to_bits(), sc.lambda[i].to_bits());
+                        assert_close("half-width", bc.half_width_m[i], sc.half_width_m[i], 1e-15);
+                    }
+                }
+            }
+            for _ in 0..4 {
+                dp.step(&mut sys, &set).unwrap();
+            }
+        }
+        assert!(loaded > 1000, "{loaded} loaded slices compared");
     }
 }
