@@ -1083,16 +1083,12 @@ mod tests {
                 .fold(0.0_f64, |m, (a, b)| m.max((a - b).abs()))
                 / scale
         };
+        // equal up to the differences' rounding (≈ 1e-8 of the entries); the couplings matter
+        // here: the block-diagonal Jacobian gives other steps
+        let (g_bordered, g_diagonal) = (gap(&bordered), gap(&diagonal));
         assert!(
-            gap(&bordered) < 1e-9,
-            "bordered vs full: {}",
-            gap(&bordered)
-        );
-        // the couplings matter here: the block-diagonal Jacobian gives other steps
-        assert!(
-            gap(&diagonal) > 1e-6,
-            "block-diagonal vs full: {}",
-            gap(&diagonal)
+            g_bordered < 1e-6 && g_diagonal > 1e3 * g_bordered,
+            "bordered vs full: {g_bordered:e}, block-diagonal vs full: {g_diagonal:e}"
         );
         // the FD Jacobian with shares costs one RHS per column of a group, as without a border
         assert_eq!(ig.stats.jacobian_evaluations, 1);
