@@ -45,3 +45,25 @@ fn coupled_jacobian_matches_the_dense_difference_jacobian() {
     );
     assert!(worst < 1e-6, "worst gap {worst:.3e}");
 }
+
+#[test]
+fn bordered_run_restored_from_a_checkpoint_is_the_same_run() {
+    // the checkpoint carries the coupling blocks and the rollers' shares at the state
+    let model = cassette();
+    let settings = TaperedRunSettings::default();
+    let mut go = |_| ControlFlow::Continue(());
+    let mut whole = TaperedSimulation::new(&model, &settings, false);
+    whole.run_until(3e-4, None, &mut go).unwrap();
+    let mut first = TaperedSimulation::new(&model, &settings, false);
+    first.run_until(1.5e-4, None, &mut go).unwrap();
+    let bytes = first.checkpoint_with(b"");
+    let mut resumed = TaperedSimulation::new(&model, &settings, false);
+    resumed.restore(&bytes).unwrap();
+    resumed.run_until(3e-4, None, &mut go).unwrap();
+    let (a, b) = (whole.finish(), resumed.finish());
+    assert_eq!(a.samples, b.samples);
+    assert_eq!(
+        (a.steps, a.rejected_steps, a.rhs_evaluations),
+        (b.steps, b.rejected_steps, b.rhs_evaluations)
+    );
+}
