@@ -21,6 +21,12 @@ pub trait OdeSystem {
     fn rhs_reported(&mut self, t: f64, y: &[f64], dy: &mut [f64]) {
         self.rhs(t, y, dy);
     }
+
+    /// For a bordered Rosenbrock-W Jacobian ([`crate::rosenbrock::JacobianBorder`]): writes the
+    /// additive share of each coupled block's contacts in the border rates of the last
+    /// evaluation, block after block, each in the order of its support. Systems without a
+    /// border keep the default (nothing).
+    fn border_shares(&self, _out: &mut [f64]) {}
 }
 
 /// Step statistics.

@@ -118,7 +118,7 @@ pub use parameters::{
     ContactParameters, EndFriction, PairParameters, RacewayParameters, RollerEndParameters,
 };
 pub use rhs::axisymmetric_omega;
-pub use rosenbrock::{JacobianBlock, RosenbrockW};
+pub use rosenbrock::{JacobianBlock, JacobianBorder, RosenbrockW};
 pub use settings::{DynamicsSettings, IntegratorMethod, IntegratorSettings, VelocityErrorScale};
 pub use simulation::Simulation;
 pub use summary_columns::SummaryValue;

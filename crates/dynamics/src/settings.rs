@@ -47,6 +47,12 @@ pub struct IntegratorSettings {
     /// false: on 2002834 it doubled the RHS count without fewer rejections, see
     /// `docs/dynamics-integrator.md`).
     pub refresh_jacobian_on_reject: bool,
+    /// Rosenbrock-W only: couple each roller's block with its cage and the inner ring in the
+    /// Jacobian and solve the stages as one bordered block system (Schur complement on the
+    /// cages and ring), where the model declares the coupling (the tapered bearing; default
+    /// true: the roller ↔ inner-ring traction coupling is stiff, `docs/dynamics-integrator.md`
+    /// §2). The cylindrical model keeps the block-diagonal Jacobian.
+    pub bordered_jacobian: bool,
     /// Dimensionless error tolerance τ. A step is accepted when, for every state component,
     /// `|error_i| ≤ τ·(s_i + ρ_i |y_i|)` where `s_i` is the component's characteristic scale
     /// (see the crate docs, "Error control") and `ρ_i` is 1 for velocities/momenta and 0 for
@@ -93,6 +99,7 @@ impl Default for IntegratorSettings {
             method: IntegratorMethod::default(),
             jacobian_interval: 20,
             refresh_jacobian_on_reject: false,
+            bordered_jacobian: true,
             tolerance: 1e-6,
             velocity_scale: VelocityErrorScale::default(),
             initial_step_s: 1e-7,

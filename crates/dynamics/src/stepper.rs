@@ -114,6 +114,12 @@ impl Stepper {
                 w.u64(u64::from(ig.jac_valid));
                 w.u64(ig.jac_age);
                 w.slice(&ig.jac);
+                if let Some(bd) = &ig.border {
+                    w.slice(&bd.jac_rows);
+                    w.slice(&bd.jac_cols);
+                    w.u64(u64::from(bd.shares0_valid));
+                    w.slice(&bd.shares0);
+                }
             }
         }
         w.u64(stats.accepted);
@@ -162,6 +168,12 @@ impl Stepper {
                 ig.jac_valid = r.u64()? != 0;
                 ig.jac_age = r.u64()?;
                 r.slice_into(&mut ig.jac)?;
+                if let Some(bd) = &mut ig.border {
+                    r.slice_into(&mut bd.jac_rows)?;
+                    r.slice_into(&mut bd.jac_cols)?;
+                    bd.shares0_valid = r.u64()? != 0;
+                    r.slice_into(&mut bd.shares0)?;
+                }
                 ig.after_restore();
                 &mut ig.stats
             }

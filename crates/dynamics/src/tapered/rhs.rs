@@ -11,7 +11,7 @@ use super::model::TaperedModel;
 use crate::ends::{AxialReach, BodyKin, EndGeometry, EndLubrication, FaceGeometry, end_force};
 use crate::integrator::OdeSystem;
 use crate::kinematics::RollerKinematics;
-use crate::layout::{CAGE_DOF, ROLLER_DOF, inner_ring, read3};
+use crate::layout::{CAGE_DOF, INNER_DOF, ROLLER_DOF, cage, inner_ring, read3, write3};
 use crate::rhs::Wrench;
 use crate::rhs::assembly::{cage_rates, roller_rates};
 use crate::rhs::bodies::{CageKin, cage_kinematics, single_roller_kinematics};
@@ -52,6 +52,10 @@ pub struct TaperedSystem<'m> {
     wrench: Vec<Wrench>,
     /// scratch of the raceway slices of one roller
     pub(super) slices: SliceScratch,
+    /// per roller: its contacts' share of its cage's wrench and of the force on the inner ring
+    /// in the last evaluation (the coupling columns of the Rosenbrock-W Jacobian,
+    /// [`TaperedSystem::border_support`])
+    shares: Vec<RollerShare>,
     report: bool,
     /// the opt-in contact record of the last reported evaluation (see [`super::contacts`])
     pub(crate) contacts: Option<Vec<RollerContacts>>,
@@ -67,6 +71,7 @@ impl<'m> TaperedSystem<'m> {
             inner_contact_force: [0.0; 3],
             wrench: vec![Wrench::default(); 2 * model.z],
             slices: SliceScratch::default(),
+            shares: vec![RollerShare::default(); 2 * model.z],
             report: false,
             contacts: None,
         }
@@ -90,6 +95,60 @@ impl OdeSystem for TaperedSystem<'_> {
     fn rhs_reported(&mut self, t: f64, y: &[f64], dy: &mut [f64]) {
         self.report = true;
         evaluate(self, t, y, dy);
+    }
+
+    /// Per roller, in the order of [`TaperedSystem::border_support`]: its share of its cage's
+    /// rates (`v̇ = F/m_c`, `L̇ = M`, the other components 0) and of the inner ring's
+    /// (`v̇ = F/m_i`).
+    fn border_shares(&self, out: &mut [f64]) {
+        let (m_c, m_i) = (self.model.m_c, self.model.m_i);
+        for (share, o) in self
+            .shares
+            .iter()
+            .zip(out.chunks_exact_mut(CAGE_DOF + INNER_DOF))
+        {
+            o.fill(0.0);
+            write3(o, cage::VELOCITY, scale(share.cage.force, 1.0 / m_c));
+            write3(o, cage::MOMENTUM, share.cage.moment);
+            write3(
+                o,
+                CAGE_DOF + inner_ring::VELOCITY,
+                scale(share.inner, 1.0 / m_i),
+            );
+        }
+    }
+}
+
+/// A roller's contacts' share of the wrench on its cage and of the force on the inner ring.
+#[derive(Debug, Clone, Copy, Default)]
+struct RollerShare {
+    cage: Wrench,
+    inner: V3,
+}
+
+impl RollerShare {
+    /// The share as the change of the accumulated cage wrench and inner-ring force over the
+    /// roller's contacts (`before` → `after`); the accumulation itself is left untouched.
+    fn between(before: (&Wrench, V3), after: (&Wrench, V3)) -> Self {
+        Self {
+            cage: Wrench {
+                force: sub(after.0.force, before.0.force),
+                moment: sub(after.0.moment, before.0.moment),
+            },
+            inner: sub(after.1, before.1),
+        }
+    }
+}
+
+impl TaperedSystem<'_> {
+    /// The state components roller `j`'s rates depend on beyond its own and whose rates its
+    /// contacts enter: its row's cage and the inner ring (the border of the coupled
+    /// Rosenbrock-W Jacobian, [`crate::rosenbrock::JacobianBorder`]).
+    pub(crate) fn border_support(layout: &TaperedLayout, j: usize) -> Vec<usize> {
+        let cage = layout.cage(j / layout.z);
+        (cage..cage + CAGE_DOF)
+            .chain(layout.inner()..layout.inner() + INNER_DOF)
+            .collect()
     }
 }
 
@@ -142,6 +201,7 @@ fn evaluate(sys: &mut TaperedSystem, t: f64, y: &[f64], dy: &mut [f64]) {
         if let Some(r) = record.as_deref_mut() {
             (r.yaw_rad, r.pitch_rad) = yaw_and_pitch(&model.rows[row], &rk);
         }
+        let before = (cage_wrench[row], f_inner);
         raceways(
             model,
             row,
@@ -172,6 +232,7 @@ fn evaluate(sys: &mut TaperedSystem, t: f64, y: &[f64], dy: &mut [f64]) {
             &mut cage_wrench[row],
             &mut report,
         );
+        sys.shares[j] = RollerShare::between((&before.0, before.1), (&cage_wrench[row], f_inner));
         sys.wrench[j] = roller;
         roller_rates(
             &y[b..b + ROLLER_DOF],

@@ -13,7 +13,7 @@ use crate::error::DynError;
 use crate::integrator::{Dopri5, StepError};
 use crate::layout::{CAGE_DOF, INNER_DOF, ROLLER_DOF, cage, inner_ring, read3, roller, write3};
 use crate::rhs::axisymmetric_omega;
-use crate::rosenbrock::{JacobianBlock, RosenbrockW};
+use crate::rosenbrock::{JacobianBlock, JacobianBorder, RosenbrockW};
 use crate::settings::IntegratorMethod;
 use crate::settings::IntegratorSettings;
 use crate::stepper::Stepper;
@@ -347,6 +347,21 @@ impl<'m> TaperedSimulation<'m> {
         Ok(note)
     }
 
+    /// At the current state: the Rosenbrock-W Jacobian approximation evaluated afresh
+    /// ([`RosenbrockW::jacobian_approximation`]) and its test oracle, the dense
+    /// column-by-column difference Jacobian ([`RosenbrockW::dense_difference_jacobian`]), both
+    /// dense and row-major; `None` for Dormand–Prince. For diagnostics and tests: the run
+    /// continues with this Jacobian.
+    pub fn jacobian_against_oracle(&mut self) -> Option<(Vec<f64>, Vec<f64>)> {
+        match &mut self.dp {
+            Stepper::RosenbrockW(ig) => {
+                let a = ig.jacobian_approximation(&mut self.sys);
+                Some((a, ig.dense_difference_jacobian(&mut self.sys)))
+            }
+            Stepper::Dopri5(_) => None,
+        }
+    }
+
     /// The run: its samples, summary and step statistics.
     pub fn finish(self) -> TaperedRun {
         let stats = self.dp.stats();
@@ -364,7 +379,8 @@ impl<'m> TaperedSimulation<'m> {
 
 /// The integrator of `settings.method` at the start state; for Rosenbrock-W the Jacobian
 /// blocks are the rollers (one colour group: no roller's rates depend on another roller), the
-/// two cages (one group) and the inner ring.
+/// two cages (one group) and the inner ring, and with [`IntegratorSettings::bordered_jacobian`]
+/// each roller's couplings with its cage and the inner ring (the border).
 fn stepper(
     model: &TaperedModel,
     y: Vec<f64>,
@@ -386,14 +402,17 @@ fn stepper(
                 vec![block(lay.cage(0), CAGE_DOF), block(lay.cage(1), CAGE_DOF)],
                 vec![block(lay.inner(), INNER_DOF)],
             ];
-            Stepper::RosenbrockW(RosenbrockW::new(
-                0.0,
-                y,
-                scale,
-                relative,
-                set.initial_step_s,
-                &groups,
-            ))
+            let integrator = RosenbrockW::new(0.0, y, scale, relative, set.initial_step_s, &groups);
+            Stepper::RosenbrockW(if set.bordered_jacobian {
+                integrator.with_border(&JacobianBorder {
+                    group: 0,
+                    support: (0..2 * model.z)
+                        .map(|j| TaperedSystem::border_support(&lay, j))
+                        .collect(),
+                })
+            } else {
+                integrator
+            })
         }
     }
 }
