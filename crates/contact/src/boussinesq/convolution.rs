@@ -511,13 +511,25 @@ pub fn direct_convolution(table: &InfluenceTable, p: &[f64], u: &mut [f64]) {
 /// `(i0, j0)` (used for sparse updates).
 #[inline]
 pub fn accumulate_cell(table: &InfluenceTable, i0: usize, j0: usize, v: f64, u: &mut [f64]) {
+    accumulate_cells(table, &[(j0 * table.nx() + i0, v)], 1.0, u);
+}
+
+/// [`accumulate_cell`] for each `(k, v)` of `cells` (cell index `k = j0·nx + i0`, pressure
+/// `scale · v`), row by row of `u`: each row of `u` stays in cache while every cell adds to
+/// it, in the order of `cells` (the same sums as one [`accumulate_cell`] per cell).
+pub fn accumulate_cells(table: &InfluenceTable, cells: &[(usize, f64)], scale: f64, u: &mut [f64]) {
     let (nx, ny) = (table.nx(), table.ny());
     for j in 0..ny {
-        let row = table.row(j as isize - j0 as isize);
-        // row[m + nx − 1] = f(m), m = i − i0 ∈ [−i0, nx − 1 − i0].
-        let seg = &row[nx - 1 - i0..2 * nx - 1 - i0];
-        for (ui, &f) in u[j * nx..(j + 1) * nx].iter_mut().zip(seg) {
-            *ui += v * f;
+        let u_row = &mut u[j * nx..(j + 1) * nx];
+        for &(k, v) in cells {
+            let (i0, j0) = (k % nx, k / nx);
+            let v = scale * v;
+            let row = table.row(j as isize - j0 as isize);
+            // row[m + nx − 1] = f(m), m = i − i0 ∈ [−i0, nx − 1 − i0].
+            let seg = &row[nx - 1 - i0..2 * nx - 1 - i0];
+            for (ui, &f) in u_row.iter_mut().zip(seg) {
+                *ui += v * f;
+            }
         }
     }
 }

@@ -15,7 +15,7 @@
 //! complementarity conditions themselves) or, as before issue 40, on the relative pressure
 //! change ([`StopRule::PressureChange`]).
 
-use super::convolution::{ConvolutionMode, Convolver, accumulate_cell};
+use super::convolution::{ConvolutionMode, Convolver, accumulate_cells};
 use super::influence::InfluenceTable;
 use super::{BoussinesqError, Grid};
 
@@ -793,10 +793,7 @@ impl BoussinesqSolver {
         } else {
             let (u, r) = (&mut self.u[..n], &self.r[..n]);
             let sums = scale_pressure(p, p_old, scale, |i| u[i] = scale * (u[i] - tau * r[i]));
-            let nx = self.grid.nx;
-            for &(k, v) in &self.corr {
-                accumulate_cell(&self.table, k % nx, k / nx, scale * v, &mut self.u);
-            }
+            accumulate_cells(&self.table, &self.corr, scale, &mut self.u);
             sums
         }
     }
