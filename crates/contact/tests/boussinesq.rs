@@ -479,7 +479,12 @@ fn gap_stop_rule_matches_pressure_change_rule() {
         // difference ≤ 7.7e-6 p_max (1024 × 64), p_max ≤ 1.7e-7; asserted 10× below the
         // issue's bound for the pressures (6× above the largest observed) and 1e-7 for the
         // approach.
-        assert!(ea < 1e-7 && ep < 5e-5 && em < 5e-5, "{}x{}", grid.nx, grid.ny);
+        assert!(
+            ea < 1e-7 && ep < 5e-5 && em < 5e-5,
+            "{}x{}",
+            grid.nx,
+            grid.ny
+        );
         // A converged result passes its own test on the returned (exact) displacement.
         assert!(gap_rule.residual < rolldyn_contact::boussinesq::solver::DEFAULT_GAP_TOLERANCE);
         assert!(gap_rule.iterations < former.iterations);
