@@ -3,6 +3,8 @@
 //! (a) 350 × 9 square cells of 0.0214 mm (Table 2 finest grid), crowned roller, Q = 1167 N
 //!     (flag F-08), force-controlled. Target ≤ 20 ms.
 //! (b) 1024 × 64 cells over 7.6 mm × 0.4 mm, same gap, Q = 1167 N. Target ≤ 0.3 s.
+//! (c) 4096 × 256 cells over the same extent (issue 40 item 5), in its own group of ten
+//!     samples without warm-up: about ten solves of a few seconds each.
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use rolldyn_contact::boussinesq::{
@@ -79,6 +81,15 @@ fn benches(c: &mut Criterion) {
     );
 }
 
+fn large_grid(c: &mut Criterion) {
+    case(
+        c,
+        "boussinesq_4096x256_1167N",
+        Grid::centered_extent(4096, 256, 7.6e-3, 0.4e-3).unwrap(),
+        1167.0,
+    );
+}
+
 /// One `u = f * p` evaluation, both modes (used to choose `AUTO_DIRECT_Y_MAX_NY`).
 fn convolutions(c: &mut Criterion) {
     let compliance = combined_compliance(201e9, 0.3, 201e9, 0.3);
@@ -112,4 +123,12 @@ criterion_group! {
         .measurement_time(Duration::from_secs(3));
     targets = benches, convolutions
 }
-criterion_main!(group);
+criterion_group! {
+    name = large;
+    config = Criterion::default()
+        .sample_size(10)
+        .warm_up_time(Duration::from_millis(1))
+        .measurement_time(Duration::from_secs(1));
+    targets = large_grid
+}
+criterion_main!(group, large);

@@ -41,6 +41,12 @@ pub enum ConvolutionMode {
 /// 2-D transform cheap already at `nfy = 18`.
 pub const AUTO_DIRECT_Y_MAX_NY: usize = 8;
 
+/// Frequencies per tile of the blocked transposes between the packed rows (`[pair][k]`) and
+/// the column-major spectra (`[k][j]`) of [`ConvolutionMode::Fft2d`]: 16 complex values are
+/// four cache lines of a row, so a tile of all row pairs stays in L1/L2 and each page of the
+/// rows is visited once per tile instead of once per frequency.
+const TRANSPOSE_TILE: usize = 16;
+
 /// Smallest even integer `≥ n` with no prime factor other than 2, 3, 5.
 pub fn fast_fft_len(n: usize) -> usize {
     let mut m = n.max(2);
@@ -99,6 +105,9 @@ pub struct Convolver {
     ifft_x: Arc<dyn Fft<f64>>,
     /// Packed rows, `npairs × rs` (first `nfx` entries of each row used).
     rows: Vec<C64>,
+    /// Whether packed row pair `m` holds a non-zero value (an all-zero pair, e.g. pressure
+    /// rows outside the contact, has an all-zero spectrum: its FFT is skipped).
+    nonzero_pairs: Vec<bool>,
     /// Separated `x` spectra, `[j][k]` (direct-y) or `[k][j]` with stride `nfy` (2-D).
     spec: Vec<C64>,
     scratch: Vec<C64>,
@@ -218,6 +227,7 @@ impl Convolver {
             fft_x,
             ifft_x,
             rows: vec![zero; npairs * (nfx + 4)],
+            nonzero_pairs: vec![false; npairs],
             spec: vec![zero; spec_len],
             scratch: vec![zero; scratch_len],
             along,
@@ -283,7 +293,8 @@ impl Convolver {
         }
     }
 
-    /// Step 1: pack rows 2m, 2m+1 into z = p_a + i p_b, zero padded to nfx, and FFT them along x.
+    /// Step 1: pack rows 2m, 2m+1 into z = p_a + i p_b, zero padded to nfx, and FFT them along x
+    /// (all-zero pairs are left zero: their spectrum).
     fn transform_rows(&mut self, p: &[f64]) {
         let Shape {
             nx,
@@ -308,10 +319,13 @@ impl Convolver {
                 }
             }
             z[nx..].fill(zero);
+            self.nonzero_pairs[m] = z[..nx].iter().any(|&v| v != zero);
         }
         for m in 0..npairs {
-            self.fft_x
-                .process_with_scratch(&mut self.rows[m * rs..m * rs + nfx], &mut self.scratch);
+            if self.nonzero_pairs[m] {
+                self.fft_x
+                    .process_with_scratch(&mut self.rows[m * rs..m * rs + nfx], &mut self.scratch);
+            }
         }
     }
 
@@ -342,20 +356,26 @@ impl Convolver {
                 }
             }
         } else {
-            // [k][j]: frequency-major loop, contiguous writes (and zero padding j ≥ ny).
-            for k in 0..half {
-                let col = &mut self.spec[k * sk..(k + 1) * sk];
-                let kc = (nfx - k) % nfx;
+            // [k][j]: a transpose, done in tiles of TRANSPOSE_TILE frequencies so that each
+            // packed row is read in whole cache lines (and few pages) per tile.
+            for k0 in (0..half).step_by(TRANSPOSE_TILE) {
+                let k1 = (k0 + TRANSPOSE_TILE).min(half);
                 for m in 0..npairs {
-                    let zk = self.rows[m * rs + k];
-                    let zc = self.rows[m * rs + kc].conj();
-                    col[2 * m] = zk + zc;
-                    if 2 * m + 1 < ny {
-                        let d = zk - zc;
-                        col[2 * m + 1] = C64::new(d.im, -d.re);
+                    let z = &self.rows[m * rs..m * rs + nfx];
+                    for k in k0..k1 {
+                        let zk = z[k];
+                        let zc = z[(nfx - k) % nfx].conj();
+                        let col = &mut self.spec[k * sk..(k + 1) * sk];
+                        col[2 * m] = zk + zc;
+                        if 2 * m + 1 < ny {
+                            let d = zk - zc;
+                            col[2 * m + 1] = C64::new(d.im, -d.re);
+                        }
                     }
                 }
-                col[ny..].fill(C64::new(0.0, 0.0));
+                for k in k0..k1 {
+                    self.spec[k * sk + ny..(k + 1) * sk].fill(C64::new(0.0, 0.0));
+                }
             }
         }
     }
@@ -445,16 +465,23 @@ fn repack_spectra(shape: Shape, (sj, sk): (usize, usize), out: &[C64], rows: &mu
             }
         }
     } else {
-        for k in 0..half {
-            let col = &out[k * sk..k * sk + ny];
-            let mirror = k > 0 && 2 * k < nfx;
+        // The transpose back, in tiles of TRANSPOSE_TILE frequencies (see `separate_spectra`).
+        for k0 in (0..half).step_by(TRANSPOSE_TILE) {
+            let k1 = (k0 + TRANSPOSE_TILE).min(half);
             for m in 0..npairs {
-                let ua = col[2 * m];
-                let ub = if 2 * m + 1 < ny { col[2 * m + 1] } else { zero };
-                let (lo, hi) = repack(ua, ub);
-                rows[m * rs + k] = lo;
-                if mirror {
-                    rows[m * rs + nfx - k] = hi;
+                let w = &mut rows[m * rs..m * rs + nfx];
+                for k in k0..k1 {
+                    let ua = out[k * sk + 2 * m];
+                    let ub = if 2 * m + 1 < ny {
+                        out[k * sk + 2 * m + 1]
+                    } else {
+                        zero
+                    };
+                    let (lo, hi) = repack(ua, ub);
+                    w[k] = lo;
+                    if k > 0 && 2 * k < nfx {
+                        w[nfx - k] = hi;
+                    }
                 }
             }
         }
@@ -484,13 +511,25 @@ pub fn direct_convolution(table: &InfluenceTable, p: &[f64], u: &mut [f64]) {
 /// `(i0, j0)` (used for sparse updates).
 #[inline]
 pub fn accumulate_cell(table: &InfluenceTable, i0: usize, j0: usize, v: f64, u: &mut [f64]) {
+    accumulate_cells(table, &[(j0 * table.nx() + i0, v)], 1.0, u);
+}
+
+/// [`accumulate_cell`] for each `(k, v)` of `cells` (cell index `k = j0·nx + i0`, pressure
+/// `scale · v`), row by row of `u`: each row of `u` stays in cache while every cell adds to
+/// it, in the order of `cells` (the same sums as one [`accumulate_cell`] per cell).
+pub fn accumulate_cells(table: &InfluenceTable, cells: &[(usize, f64)], scale: f64, u: &mut [f64]) {
     let (nx, ny) = (table.nx(), table.ny());
     for j in 0..ny {
-        let row = table.row(j as isize - j0 as isize);
-        // row[m + nx − 1] = f(m), m = i − i0 ∈ [−i0, nx − 1 − i0].
-        let seg = &row[nx - 1 - i0..2 * nx - 1 - i0];
-        for (ui, &f) in u[j * nx..(j + 1) * nx].iter_mut().zip(seg) {
-            *ui += v * f;
+        let u_row = &mut u[j * nx..(j + 1) * nx];
+        for &(k, v) in cells {
+            let (i0, j0) = (k % nx, k / nx);
+            let v = scale * v;
+            let row = table.row(j as isize - j0 as isize);
+            // row[m + nx − 1] = f(m), m = i − i0 ∈ [−i0, nx − 1 − i0].
+            let seg = &row[nx - 1 - i0..2 * nx - 1 - i0];
+            for (ui, &f) in u_row.iter_mut().zip(seg) {
+                *ui += v * f;
+            }
         }
     }
 }

@@ -30,7 +30,7 @@ pub mod solver;
 
 pub use convolution::{ConvolutionMode, Convolver, direct_convolution};
 pub use influence::{InfluenceTable, combined_compliance, influence_coefficient};
-pub use solver::{BoussinesqOptions, BoussinesqSolver, ContactSolution};
+pub use solver::{BoussinesqOptions, BoussinesqSolver, ContactSolution, StopRule};
 
 use std::fmt;
 

@@ -10,17 +10,55 @@
 //! convolution (of the conjugate direction) is done; `u(p)` is updated linearly, the cells
 //! changed by the projection (`p < 0 → 0`) or the overlap step are added by direct sums when
 //! few, otherwise `u` is recomputed by FFT.
+//!
+//! The iteration stops on the relative gap residual ([`StopRule::RelativeGap`], the
+//! complementarity conditions themselves) or, as before issue 40, on the relative pressure
+//! change ([`StopRule::PressureChange`]).
 
-use super::convolution::{ConvolutionMode, Convolver, accumulate_cell};
+use super::convolution::{ConvolutionMode, Convolver, accumulate_cells};
 use super::influence::InfluenceTable;
 use super::{BoussinesqError, Grid};
+
+/// Default tolerance of [`StopRule::RelativeGap`]: the same approach and pressures as the
+/// former pressure-change rule at `1e-10` to 1e-6 relative or better on the seed 004 grids and
+/// at 4096 × 256 (crate test `gap_stop_rule_matches_pressure_change_rule`; docs/theory.md §2.6).
+pub const DEFAULT_GAP_TOLERANCE: f64 = 1e-7;
+
+/// When the Polonsky–Keer iteration stops.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum StopRule {
+    /// Relative gap residual of the complementarity conditions (seed 004 (1)–(3)) on the exact
+    /// displacement `u = F p`:
+    /// `r = max( max_{p>0} |g|, max_{p=0} max(−g, 0) ) / max u < tolerance`, with
+    /// `g = K − α + u` (the [`ContactSolution::residual`] of the returned field).
+    RelativeGap(f64),
+    /// Relative pressure change of one iteration, `ε = Σ|p_k − p_{k−1}| / Σ p_k < tolerance`
+    /// (Polonsky–Keer step 11; the rule before issue 40, with tolerance `1e-10`).
+    PressureChange(f64),
+}
+
+impl StopRule {
+    /// The tolerance of the rule.
+    pub fn tolerance(self) -> f64 {
+        match self {
+            Self::RelativeGap(t) | Self::PressureChange(t) => t,
+        }
+    }
+}
+
+impl Default for StopRule {
+    /// [`StopRule::RelativeGap`] with [`DEFAULT_GAP_TOLERANCE`].
+    fn default() -> Self {
+        Self::RelativeGap(DEFAULT_GAP_TOLERANCE)
+    }
+}
 
 /// Every knob of [`BoussinesqSolver`].
 #[derive(Debug, Clone, PartialEq)]
 pub struct BoussinesqOptions {
-    /// Convergence tolerance on the relative pressure change per iteration,
-    /// `ε = Σ|p_k − p_{k−1}| / Σ p_k < tolerance` (Polonsky–Keer criterion). Default `1e-10`.
-    pub tolerance: f64,
+    /// Stop rule and its tolerance. Default [`StopRule::RelativeGap`] with
+    /// [`DEFAULT_GAP_TOLERANCE`].
+    pub stop: StopRule,
     /// Iteration limit; on reaching it the result has `converged == false`. Default 5000.
     pub max_iterations: usize,
     /// Convolution evaluation along `y`. Default [`ConvolutionMode::Auto`].
@@ -38,7 +76,7 @@ pub struct BoussinesqOptions {
 impl Default for BoussinesqOptions {
     fn default() -> Self {
         Self {
-            tolerance: 1e-10,
+            stop: StopRule::default(),
             max_iterations: 5000,
             convolution: ConvolutionMode::Auto,
             sparse_update_max_cells: 32,
@@ -69,11 +107,12 @@ pub struct ContactSolution {
     /// FFT convolutions performed on this grid (about one per iteration plus full `u`
     /// recomputations).
     pub convolutions: usize,
-    /// Whether `pressure_change < tolerance` was reached.
+    /// Whether the stop rule's test passed ([`BoussinesqOptions::stop`]).
     pub converged: bool,
-    /// Final relative pressure change `ε` of the last iteration.
+    /// Relative pressure change `ε` of the last iteration (0 without iterations).
     pub pressure_change: f64,
-    /// Complementarity residual: `max(|g| on p > 0, max(−g, 0) on p = 0) / max u`.
+    /// Relative gap (complementarity) residual of the returned fields:
+    /// `max(|g| on p > 0, max(−g, 0) on p = 0) / max u` ([`StopRule::RelativeGap`]).
     pub residual: f64,
     /// Contact reaches the first or last column (candidate region too short along `x`).
     pub touches_edge_x: bool,
@@ -184,6 +223,34 @@ enum Control {
     Approach(f64),
 }
 
+/// Steps 1–3 of one iteration: the contact set and the centred gap of the current pressure.
+#[derive(Clone, Copy)]
+struct GapState {
+    /// Cells in contact `|I_c|`.
+    nc: usize,
+    /// `G = Σ_{I_c} g²`.
+    gg: f64,
+    /// Relative gap residual ([`StopRule::RelativeGap`]) with the current `u`.
+    residual: f64,
+}
+
+/// How [`BoussinesqSolver::solve_in_place`] ended.
+struct Outcome {
+    iterations: usize,
+    converged: bool,
+    /// Relative pressure change of the last iteration.
+    pressure_change: f64,
+    /// `u = F p` exactly (last computed by FFT), not by the linear update.
+    u_exact: bool,
+}
+
+/// Violation of the contact conditions by one cell of pressure `p` and gap `g`: `|g|` in
+/// contact (`g = 0` required), `max(−g, 0)` out of contact (`g ≥ 0` required); seed 004 (1)–(3).
+#[inline]
+fn gap_violation(p: f64, g: f64) -> f64 {
+    if p > 0.0 { g.abs() } else { (-g).max(0.0) }
+}
+
 /// Conjugate-gradient state carried from one iteration to the next.
 struct CgState {
     /// `G = Σ_{I_c} g²` of the previous iteration.
@@ -246,10 +313,10 @@ impl BoussinesqSolver {
         if !(compliance.is_finite() && compliance > 0.0) {
             return Err(BoussinesqError::InvalidCompliance(compliance));
         }
-        if !(options.tolerance.is_finite() && options.tolerance > 0.0) {
+        let tolerance = options.stop.tolerance();
+        if !(tolerance.is_finite() && tolerance > 0.0) {
             return Err(BoussinesqError::InvalidOption(format!(
-                "tolerance {}",
-                options.tolerance
+                "tolerance {tolerance}"
             )));
         }
         if options.max_iterations == 0 || options.recompute_interval == 0 {
@@ -407,45 +474,76 @@ impl BoussinesqSolver {
         guess: Option<&[f64]>,
     ) -> Result<ContactSolution, BoussinesqError> {
         self.validate(gap, control, guess)?;
-        let (iterations, converged, eps) = self.solve_in_place(gap, control, guess)?;
-        // Final exact displacement, approach, residual.
-        self.conv.apply(&self.p, &mut self.u);
-        self.n_conv += 1;
-        Ok(self.finish(gap, control, iterations, converged, eps))
+        let outcome = self.solve_in_place(gap, control, guess)?;
+        // Final exact displacement (unless it is exact already), approach, residual.
+        if !outcome.u_exact {
+            self.conv.apply(&self.p, &mut self.u);
+            self.n_conv += 1;
+        }
+        Ok(self.finish(gap, control, &outcome))
     }
 
     /// Polonsky–Keer iteration; leaves the pressure in `self.p` and `u ≈ F p` in `self.u`.
-    /// Returns (iterations, converged, last pressure change).
+    ///
+    /// [`StopRule::RelativeGap`] is tested before each iteration; when it passes on a linearly
+    /// updated `u`, `u` is recomputed by FFT and the test repeated, so that a converged result
+    /// passes it on the exact displacement. [`StopRule::PressureChange`] is tested after each
+    /// iteration (step 11).
     fn solve_in_place(
         &mut self,
         gap: &[f64],
         control: Control,
         guess: Option<&[f64]>,
-    ) -> Result<(usize, bool, f64), BoussinesqError> {
+    ) -> Result<Outcome, BoussinesqError> {
         self.n_conv = 0;
         self.initial_pressure(gap, control, guess);
         self.balance_initial_pressure(gap, control);
         self.conv.apply(&self.p, &mut self.u);
         self.n_conv += 1;
 
-        if self.p.iter().all(|&v| v == 0.0) {
-            // Nothing to iterate (q = 0 or no interference).
-            return Ok((0, true, 0.0));
-        }
         let mut cg = CgState {
             g_old: 1.0,
             delta: 0.0,
             since_recompute: 0,
         };
-        let mut eps = f64::INFINITY;
-        for iteration in 1..=self.options.max_iterations {
-            eps = self.iterate(gap, control, iteration, &mut cg)?;
-            // Step 11: convergence on the relative pressure change.
-            if eps < self.options.tolerance {
-                return Ok((iteration, true, eps));
+        let mut pressure_change = 0.0;
+        let outcome = |iterations, converged, pressure_change, cg: &CgState| Outcome {
+            iterations,
+            converged,
+            pressure_change,
+            u_exact: cg.since_recompute == 0,
+        };
+        if self.p.iter().all(|&v| v == 0.0) {
+            // Nothing to iterate (q = 0 or no interference).
+            return Ok(outcome(0, true, 0.0, &cg));
+        }
+        let max_iterations = self.options.max_iterations;
+        for iteration in 1..=max_iterations + 1 {
+            let mut state = self.centred_gap(gap, control);
+            if let StopRule::RelativeGap(tolerance) = self.options.stop
+                && state.residual < tolerance
+            {
+                if cg.since_recompute > 0 {
+                    self.conv.apply(&self.p, &mut self.u);
+                    self.n_conv += 1;
+                    cg.since_recompute = 0;
+                    state = self.centred_gap(gap, control);
+                }
+                if state.residual < tolerance {
+                    return Ok(outcome(iteration - 1, true, pressure_change, &cg));
+                }
+            }
+            if iteration > max_iterations {
+                break;
+            }
+            pressure_change = self.iterate(control, iteration, state, &mut cg)?;
+            if let StopRule::PressureChange(tolerance) = self.options.stop
+                && pressure_change < tolerance
+            {
+                return Ok(outcome(iteration, true, pressure_change, &cg));
             }
         }
-        Ok((self.options.max_iterations, false, eps))
+        Ok(outcome(max_iterations, false, pressure_change, &cg))
     }
 
     /// Brings the initial pressure to the load: force mode scales it to `ΔS Σ p = Q` (a zero
@@ -484,17 +582,16 @@ impl BoussinesqSolver {
         }
     }
 
-    /// One Polonsky–Keer iteration (steps 1–10 and the pressure change of step 11); returns
-    /// the relative pressure change `ε`.
+    /// One Polonsky–Keer iteration after steps 1–3 (`state`, [`Self::centred_gap`]): steps
+    /// 4–10 and the pressure change of step 11; returns the relative pressure change `ε`.
     fn iterate(
         &mut self,
-        gap: &[f64],
         control: Control,
         iteration: usize,
+        GapState { nc, gg, .. }: GapState,
         cg: &mut CgState,
     ) -> Result<f64, BoussinesqError> {
         let breakdown = || BoussinesqError::NumericalBreakdown { iteration };
-        let (nc, gg) = self.centred_gap(gap, control);
         // Step 4: conjugate direction t = g + δ (G/G_old) t on I_c, 0 elsewhere.
         let beta = if cg.g_old > 0.0 {
             cg.delta * gg / cg.g_old
@@ -533,11 +630,12 @@ impl BoussinesqSolver {
     }
 
     /// Steps 1–3: gap `g = K + u`, its mean `ḡ` on the contact set `I_c = {p > 0}` (force
-    /// mode; `ḡ = α` in approach mode) and `g ← g − ḡ`. Returns `(|I_c|, G = Σ_{I_c} g²)`.
-    fn centred_gap(&mut self, gap: &[f64], control: Control) -> (usize, f64) {
+    /// mode; `ḡ = α` in approach mode) and `g ← g − ḡ`; with `|I_c|`, `G = Σ_{I_c} g²` and the
+    /// relative gap residual of [`StopRule::RelativeGap`].
+    fn centred_gap(&mut self, gap: &[f64], control: Control) -> GapState {
         let n = self.grid.len();
         // Steps 1–2: gap g = K + u and its mean on the contact set I_c = {p > 0}.
-        let (mut ncl, mut gsl) = ([0.0; L], [0.0; L]);
+        let (mut ncl, mut gsl, mut uml) = ([0.0; L], [0.0; L], [0.0_f64; L]);
         {
             let (g, u, h, p) = (&mut self.g[..n], &self.u[..n], &gap[..n], &self.p[..n]);
             for_lanes!(n, |i, l| {
@@ -546,6 +644,7 @@ impl BoussinesqSolver {
                 let c = p[i] > 0.0;
                 gsl[l] += if c { v } else { 0.0 };
                 ncl[l] += if c { 1.0 } else { 0.0 };
+                uml[l] = uml[l].max(u[i]);
             });
         }
         let nc = ncl.iter().sum::<f64>() as usize;
@@ -556,16 +655,27 @@ impl BoussinesqSolver {
             Control::Approach(alpha) => alpha,
         };
         // Step 3: g ← g − ḡ, G = Σ_{I_c} g².
-        let mut ggl = [0.0; L];
+        let (mut ggl, mut rl) = ([0.0; L], [0.0_f64; L]);
         {
             let (g, p) = (&mut self.g[..n], &self.p[..n]);
             for_lanes!(n, |i, l| {
                 let v = g[i] - gbar;
                 g[i] = v;
                 ggl[l] += if p[i] > 0.0 { v * v } else { 0.0 };
+                rl[l] = rl[l].max(gap_violation(p[i], v));
             });
         }
-        (nc, ggl.iter().sum())
+        let umax = uml.iter().copied().fold(0.0, f64::max);
+        let violation = rl.iter().copied().fold(0.0, f64::max);
+        GapState {
+            nc,
+            gg: ggl.iter().sum(),
+            residual: if umax > 0.0 {
+                violation / umax
+            } else {
+                violation
+            },
+        }
     }
 
     /// Steps 5–6 on a non-empty contact set of `nc` cells: `r = F t`, step length
@@ -683,22 +793,12 @@ impl BoussinesqSolver {
         } else {
             let (u, r) = (&mut self.u[..n], &self.r[..n]);
             let sums = scale_pressure(p, p_old, scale, |i| u[i] = scale * (u[i] - tau * r[i]));
-            let nx = self.grid.nx;
-            for &(k, v) in &self.corr {
-                accumulate_cell(&self.table, k % nx, k / nx, scale * v, &mut self.u);
-            }
+            accumulate_cells(&self.table, &self.corr, scale, &mut self.u);
             sums
         }
     }
 
-    fn finish(
-        &self,
-        gap: &[f64],
-        control: Control,
-        iterations: usize,
-        converged: bool,
-        eps: f64,
-    ) -> ContactSolution {
+    fn finish(&self, gap: &[f64], control: Control, outcome: &Outcome) -> ContactSolution {
         let grid = self.grid;
         let (nx, ny) = (grid.nx, grid.ny);
         let mut nc = 0usize;
@@ -721,8 +821,7 @@ impl BoussinesqSolver {
         let umax = self.u.iter().copied().fold(0.0_f64, f64::max);
         let mut res = 0.0_f64;
         for ((&p, &h), &u) in self.p.iter().zip(gap).zip(&self.u) {
-            let g = h - alpha + u;
-            res = res.max(if p > 0.0 { g.abs() } else { (-g).max(0.0) });
+            res = res.max(gap_violation(p, h - alpha + u));
         }
         let residual = if umax > 0.0 { res / umax } else { res };
         let in_contact = |i: usize, j: usize| self.p[j * nx + i] > 0.0;
@@ -736,10 +835,10 @@ impl BoussinesqSolver {
             force_n: grid.cell_area() * psum,
             max_pressure_pa: pmax,
             cells_in_contact: nc,
-            iterations,
+            iterations: outcome.iterations,
             convolutions: self.n_conv,
-            converged,
-            pressure_change: eps,
+            converged: outcome.converged,
+            pressure_change: outcome.pressure_change,
             residual,
             touches_edge_x,
             touches_edge_y,

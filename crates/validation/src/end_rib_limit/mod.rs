@@ -18,7 +18,7 @@ mod pair;
 pub use pair::{EndRibPair, OUTSIDE_GAP_M, RibSurface};
 
 use rolldyn_contact::boussinesq::{
-    BoussinesqError, BoussinesqOptions, BoussinesqSolver, ContactSolution,
+    BoussinesqError, BoussinesqOptions, BoussinesqSolver, ContactSolution, StopRule,
 };
 use rolldyn_contact::hertz::{EllipticalContact, EllipticalMethod, elliptical_contact};
 use rolldyn_dynamics::tapered::end_rib_film_limit_force;
@@ -74,7 +74,7 @@ impl Default for Settings {
             cell_m: 0.05e-3,
             force_tolerance: 0.005,
             solver: BoussinesqOptions {
-                tolerance: 1e-8,
+                stop: StopRule::PressureChange(1e-8),
                 ..BoussinesqOptions::default()
             },
         }
