@@ -1056,6 +1056,7 @@ mod tests {
         moment: f64,
         cases: usize,
         kinks: usize,
+        flat_maxima: usize,
         oracle_missed: usize,
     }
 
@@ -1116,8 +1117,29 @@ mod tests {
                 self.oracle_missed += 1;
                 return;
             }
-            self.cases += 1;
             self.delta = self.delta.max((new.delta - old.delta).abs() / old.delta);
+            // on a flat maximum the oracle's x is only known to √(2 ε_δ/|f''|) (golden-section
+            // comparisons of δ values within their rounding ε_δ), where the new search solves
+            // f' = 0: the point and the forces (damping and friction at the point) are compared
+            // where that resolution is below 10⁻¹² of the disc radius, x everywhere
+            let reach = AxialReach::new(body, end, c, a);
+            let frame = EndOnFace::new(face, end, body, &reach, c, a).unwrap();
+            if frame.cs != 0.0 || face.curvature != 0.0 {
+                let (x_new, x_old) = (frame.deepest_curved().0, frame.deepest_curved_golden().0);
+                let bend = frame.slope_on(x_new, frame.chord_at(x_new)).1.abs();
+                let rounding = 4.0 * f64::EPSILON * norm(old.point);
+                let width = 0.5 * (frame.xb - frame.xa) * 0.618_f64.powi(40);
+                let resolution = (2.0 * rounding / bend).sqrt().max(width);
+                assert!(
+                    (x_new - x_old).abs() <= 4.0 * resolution,
+                    "{label}: x {x_new} vs oracle {x_old} (resolution {resolution:e})"
+                );
+                if resolution > 1e-12 * frame.r {
+                    self.flat_maxima += 1;
+                    return;
+                }
+            }
+            self.cases += 1;
             self.point = self
                 .point
                 .max(rel(new.point, old.point, norm(sub(old.point, c))));
