@@ -19,7 +19,7 @@
 //!   matrix `[[D, B], [C, R]]` (`D` the roller blocks, `R` the border blocks) is then solved by
 //!   block elimination with the Schur complement `S = R − Σ_j C_j D_j⁻¹ B_j` on the border
 //!   (32 unknowns for the tapered bearing's two cages and ring), factored with the roller
-//!   blocks whenever `h` changes.
+//!   blocks whenever `h` changes by more than a set ratio.
 //! * `A` is obtained by forward differences of the full right-hand side with **column
 //!   colouring**: a roller's derivative depends on no other roller's state, so perturbing
 //!   component `k` of *all* rollers at once gives column `k` of every roller block in one
@@ -41,7 +41,9 @@
 //! (§IV.7, eq. (7.4')), so no product with `A` is ever needed:
 //! `(1/(γh) I − A) u_i = f(t + α_i h, y + Σ_j a_ij u_j) + Σ_j (c_ij/h) u_j`,
 //! `y₁ = y + Σ m_j u_j`. Each stage solve is a set of small dense LU solves (12 × 12 per
-//! roller; with a border also the Schur complement's), the LU is refactored when `h` changes. The first stage uses `f(t, y)` from the end of
+//! roller; with a border also the Schur complement's), the LU is refactored when `h` changes by
+//! more than [`crate::IntegratorSettings::refactor_step_ratio`] (kept factors stand for a
+//! shifted `A`, see `RosenbrockW::needs_factor`). The first stage uses `f(t, y)` from the end of
 //! the previous step, so an accepted step costs 4 right-hand sides (3 stages + the new state,
 //! which is also what leaves the per-evaluation diagnostics describing the accepted state).
 //! Dense output: cubic Hermite interpolation between `(y₀, f₀)` and `(y₁, f₁)` (Hairer, Nørsett
@@ -574,6 +576,24 @@ impl RosenbrockW {
         self.lu_h = h;
     }
 
+    /// Whether the factors must be rebuilt for a step of size `h`: none exist, or `h` differs
+    /// from their step size `lu_h` by more than the ratio `max_ratio` (0: any difference).
+    /// Kept factors are those of `I/(γ lu_h) − A = I/(γh) − A'` with
+    /// `A' = A + (1/(γh) − 1/(γ lu_h)) I`, so a step with them is the W-method with the matrix
+    /// `A'` at step size `h` (order kept, Hairer & Wanner II, §IV.7): in the transformed stages
+    /// `(I/(γh) − A') u_i = f(t + α_i h, y + Σ_j a_ij u_j) + Σ_j (c_ij/h) u_j` only the matrix
+    /// (and the zero-Jacobian components' `γ lu_h` in [`Self::solve`]) takes `lu_h`; the
+    /// stage times, `a_ij`, `c_ij/h` and the weights take the actual `h`.
+    fn needs_factor(&self, h: f64, max_ratio: f64) -> bool {
+        if self.lu_h == 0.0 {
+            true
+        } else if max_ratio > 0.0 {
+            (h / self.lu_h - 1.0).abs() > max_ratio
+        } else {
+            h != self.lu_h
+        }
+    }
+
     /// Solves `(1/(γh) I − A) x = rhs` in place: per block, or with a border by block
     /// elimination — `y_b = D_b⁻¹ x_b`, `S z = x_border − Σ_b C_b y_b`, `x_b = y_b − X_b z`.
     fn solve(&mut self, h: f64, x: &mut [f64]) {
@@ -713,9 +733,11 @@ impl RosenbrockW {
             if !self.jac_valid {
                 self.evaluate_jacobian(sys);
             }
-            if self.lu_h != h {
+            if self.needs_factor(h, set.refactor_step_ratio) {
                 self.factor(h);
             }
+            // the stage matrix is `I/(γ·lu_h) − A` (= `I/(γh) − A'`, see `needs_factor`)
+            let h_matrix = self.lu_h;
             for s in 0..STAGES {
                 let (done, rest) = self.u.split_at_mut(s);
                 let us = &mut rest[0];
@@ -740,7 +762,7 @@ impl RosenbrockW {
                 }
                 // `solve` borrows self; move the stage vector out meanwhile
                 let mut v = std::mem::take(&mut self.u[s]);
-                self.solve(h, &mut v);
+                self.solve(h_matrix, &mut v);
                 self.u[s] = v;
             }
             self.stats.rhs_evaluations += (STAGES - 1) as u64;
@@ -852,10 +874,19 @@ impl RosenbrockW {
         self.dense_t
     }
 
+    /// Step size of the current LU factors (0: none), saved in a checkpoint.
+    pub(crate) fn factor_step(&self) -> f64 {
+        self.lu_h
+    }
+
     /// Recomputes derived data after the fields were restored from a checkpoint: the LU factors
-    /// are a pure function of `jac` and the step size, so they are rebuilt on the next step.
-    pub(crate) fn after_restore(&mut self) {
+    /// are a pure function of `jac` and their step size `factor_step`, so they are rebuilt here
+    /// at that step size (the resumed run keeps them as long as the uninterrupted one would).
+    pub(crate) fn after_restore(&mut self, factor_step: f64) {
         self.lu_h = 0.0;
+        if self.jac_valid && factor_step > 0.0 {
+            self.factor(factor_step);
+        }
     }
 }
 

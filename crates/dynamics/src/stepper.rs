@@ -113,6 +113,7 @@ impl Stepper {
                 w.slice(&ig.dense_f0);
                 w.u64(u64::from(ig.jac_valid));
                 w.u64(ig.jac_age);
+                w.f64(ig.factor_step());
                 w.slice(&ig.jac);
                 if let Some(bd) = &ig.border {
                     w.slice(&bd.jac_rows);
@@ -167,6 +168,7 @@ impl Stepper {
                 r.slice_into(&mut ig.dense_f0)?;
                 ig.jac_valid = r.u64()? != 0;
                 ig.jac_age = r.u64()?;
+                let factor_step = r.f64()?;
                 r.slice_into(&mut ig.jac)?;
                 if let Some(bd) = &mut ig.border {
                     r.slice_into(&mut bd.jac_rows)?;
@@ -174,7 +176,7 @@ impl Stepper {
                     bd.shares0_valid = r.u64()? != 0;
                     r.slice_into(&mut bd.shares0)?;
                 }
-                ig.after_restore();
+                ig.after_restore(factor_step);
                 &mut ig.stats
             }
             _ => {
