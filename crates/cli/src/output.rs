@@ -37,6 +37,17 @@ pub fn print_error_line(line: &str) {
     let _ = writeln!(std::io::stderr().lock(), "{line}");
 }
 
+/// Prints `value` and a newline on stdout as [`print_text`] does, formatted straight into a
+/// buffered stdout (a long answer, such as a rainflow count's cycles, is not first copied into
+/// one string).
+pub fn print_display(value: &impl std::fmt::Display) -> Result<(), Failure> {
+    let mut stdout = std::io::BufWriter::with_capacity(1 << 16, std::io::stdout().lock());
+    match writeln!(stdout, "{value}").and_then(|()| stdout.flush()) {
+        Err(e) if !is_closed_pipe(&e) => Err(Failure::Run(write_failure(&e))),
+        _ => Ok(()),
+    }
+}
+
 /// Whether a write failed because its reader went away (`rolldyn … | head`).
 pub fn is_closed_pipe(e: &std::io::Error) -> bool {
     e.kind() == std::io::ErrorKind::BrokenPipe
@@ -58,7 +69,7 @@ pub fn run_and_print<A: Analysis>(
     if json {
         print_json(&result)
     } else {
-        print_text(&result.to_string())
+        print_display(&result)
     }
 }
 

@@ -19,10 +19,15 @@ pub mod sn;
 pub mod study;
 pub mod superpose;
 pub mod unit_stresses;
+#[cfg(test)]
+mod whole_file_oracle;
 
 pub use cage::{CageGeometry, Face, FilletPoint, PocketSide, STATIONS, Station};
-pub use history::read_history_csv;
+pub use history::{CountedHistory, rainflow_csv, read_history_values};
 pub use loads::{CageLoadExport, ContactKind, ContactLoad, ExportHeader, LoadSet};
-pub use rainflow::{Cycle, HistoryKind, rainflow, turning_points};
+pub use rainflow::{
+    Cycle, FourPointStack, HistoryKind, TurningPointFilter, rainflow, rainflow_streamed,
+    turning_points,
+};
 pub use recorder::{CageLoadRecorder, SETS_PER_REVOLUTION, export_output_step};
 pub use unit_stresses::{Stress, UnitStresses, principal_extremes, signed_von_mises};

@@ -17,9 +17,7 @@ use rolldyn_fatigue::study::{
     FatigueAnswer, FatigueError, FatigueSettings, REQUIRED_STRESS_SAFETY_FACTOR, RevolutionMaxima,
     SettleCheckpoints, StressModelKind, evaluate, record_loads,
 };
-use rolldyn_fatigue::{
-    CageLoadExport, Cycle, HistoryKind, UnitStresses, rainflow, read_history_csv,
-};
+use rolldyn_fatigue::{CageLoadExport, Cycle, HistoryKind, UnitStresses, rainflow_csv};
 use rolldyn_output::run_state::{StateFile, fingerprint};
 use rolldyn_report::RunKind;
 use rolldyn_units::{Length, Quantity};
@@ -636,7 +634,8 @@ impl Analysis for Fatigue {
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct RainflowRequest {
-    /// CSV file: one value per row (the first column, or `column` of a file with a header).
+    /// CSV file: one value per row (the first column, or `column` of a file with a header),
+    /// read line by line, of any size.
     pub history: PathBuf,
     /// Column to count (by its header name).
     #[serde(default)]
@@ -694,19 +693,18 @@ impl Analysis for Rainflow {
 
     fn run(request: &RainflowRequest, _context: &Context<'_>) -> Result<RainflowResult, Failure> {
         let file = request.history.display().to_string();
-        let bad = |e: String| Failure::Input(format!("{file}: {e}"));
-        let text = rolldyn_model::read_input_file(&request.history).map_err(bad)?;
-        let values = read_history_csv(&text, request.column.as_deref()).map_err(bad)?;
         let kind = if request.periodic {
             HistoryKind::Periodic
         } else {
             HistoryKind::NonPeriodic
         };
+        let counted = rainflow_csv(&request.history, request.column.as_deref(), kind)
+            .map_err(|e| Failure::Input(format!("{file}: {e}")))?;
         Ok(RainflowResult {
-            cycles: rainflow(&values, kind),
+            cycles: counted.cycles,
             history: file,
             periodic: request.periodic,
-            values: values.len(),
+            values: counted.values,
         })
     }
 }

@@ -98,7 +98,8 @@ pub enum FatigueCommand {
 
 #[derive(clap::Args)]
 pub struct RainflowArgs {
-    /// CSV file: one value per row (first column, or `--column` of a file with a header row).
+    /// CSV file: one value per row (first column, or `--column` of a file with a header row),
+    /// read line by line, of any size.
     pub history: PathBuf,
     /// Column to count (by its header name).
     #[arg(long)]
