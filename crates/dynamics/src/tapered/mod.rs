@@ -23,8 +23,6 @@ mod model;
 mod rhs;
 mod run;
 mod sample;
-#[cfg(test)]
-mod slice_oracle;
 mod summary;
 
 pub use columns::{SAMPLE_COLUMNS, sample_from_row, sample_row, summary_entries};

@@ -17,7 +17,9 @@ use crate::rhs::assembly::{cage_rates, roller_rates};
 use crate::rhs::bodies::{CageKin, cage_kinematics, single_roller_kinematics};
 use crate::vec3::{V3, add, axpy, cross, dot, norm, perp, power, scale, sub};
 use rolldyn_contact::damping::SliceDamping;
-use rolldyn_lubrication::{BatchContact, ContactGeometry, ContactState, SliceBatch};
+use rolldyn_lubrication::{
+    BatchContact, ContactGeometry, ContactState, SliceBatch, TractionModel, traction,
+};
 
 /// Per-roller results of the last reported evaluation.
 #[derive(Debug, Clone, Default)]
@@ -164,7 +166,7 @@ fn inner_body(model: &TaperedModel, t: f64, y: &[f64], lay: &TaperedLayout) -> B
 }
 
 /// The cup: fixed, axis z.
-pub(super) const CUP: BodyKin = BodyKin {
+const CUP: BodyKin = BodyKin {
     o: [0.0; 3],
     v: [0.0; 3],
     axis: [0.0, 0.0, 1.0],
@@ -285,7 +287,7 @@ fn inner_ring_rates(
 
 /// Position of a point in a body's half-plane: `(ρ, ζ, e_ρ)`.
 #[inline]
-pub(super) fn half_plane(body: &BodyKin, p: V3) -> (f64, f64, V3) {
+fn half_plane(body: &BodyKin, p: V3) -> (f64, f64, V3) {
     let rel = sub(p, body.o);
     let zeta = dot(rel, body.axis);
     let radial = axpy(rel, -zeta, body.axis);
@@ -295,7 +297,7 @@ pub(super) fn half_plane(body: &BodyKin, p: V3) -> (f64, f64, V3) {
 
 /// Velocity of the material point `p` of a body.
 #[inline]
-pub(super) fn body_velocity(body: &BodyKin, p: V3) -> V3 {
+fn body_velocity(body: &BodyKin, p: V3) -> V3 {
     add(body.v, cross(body.omega, sub(p, body.o)))
 }
 
@@ -340,9 +342,37 @@ struct LoadedSlice {
 pub(crate) struct SliceScratch {
     batch: SliceBatch,
     loaded: Vec<LoadedSlice>,
-    /// evaluate the slices with the scalar oracle instead ([`super::slice_oracle`])
+    /// the test oracle: each slice's traction by its own [`traction`] call on the slice's state
+    /// (the path the batch replaced) instead of the batch's vector loop
     #[cfg(test)]
     pub(super) scalar: bool,
+}
+
+/// Friction coefficient of slice `k` of `batch`: the batch's, or with `scalar` (tests) the one
+/// call of [`traction`] per slice that the batch replaced.
+fn slice_coefficient(batch: &SliceBatch, k: usize, model: &TractionModel, scalar: bool) -> f64 {
+    if scalar {
+        traction(&batch.state(k), model).coefficient
+    } else {
+        batch.coefficient(k)
+    }
+}
+
+/// Λ and Hertz half-width of slice `k` of `batch` for the contact record (`scalar` as in
+/// [`slice_coefficient`]).
+fn slice_film(
+    batch: &SliceBatch,
+    k: usize,
+    contact: BatchContact,
+    model: &TractionModel,
+    scalar: bool,
+) -> (f64, f64) {
+    if scalar {
+        let tr = traction(&batch.state(k), model);
+        (tr.lambda, tr.half_width_m)
+    } else {
+        (batch.film(contact).2, batch.state(k).hertz().half_width_m)
+    }
 }
 
 /// The slices of one roller on the cone (`race = 0`) and the cup (`race = 1`): pass 1 finds the
@@ -363,17 +393,9 @@ fn raceways(
     (report, mut record): (&mut RollerReport, Option<&mut RollerContacts>),
 ) {
     #[cfg(test)]
-    if scratch.scalar {
-        return super::slice_oracle::raceways(
-            model,
-            row,
-            rk,
-            inner,
-            roller,
-            f_inner,
-            (report, record),
-        );
-    }
+    let scalar = scratch.scalar;
+    #[cfg(not(test))]
+    let scalar = false;
     let SliceScratch { batch, loaded, .. } = scratch;
     batch.clear();
     loaded.clear();
@@ -386,14 +408,14 @@ fn raceways(
     let (mut total, mut sliding) = ([0.0; 2], [0.0; 2]);
     for (k, ls) in loaded.iter().enumerate() {
         let LoadedSlice { race, q, vs, .. } = *ls;
-        let mu = batch.coefficient(k).abs();
+        let mu = slice_coefficient(batch, k, &model.traction, scalar).abs();
         if let Some(r) = record.as_deref_mut() {
             let c = if race == 0 { &mut r.cone } else { &mut r.cup };
             let i = ls.slice;
             c.force_n[i] = q;
             c.sliding_m_s[i] = vs;
-            c.lambda[i] = batch.film(ls.contact).2;
-            c.half_width_m[i] = batch.state(k).hertz().half_width_m;
+            (c.lambda[i], c.half_width_m[i]) =
+                slice_film(batch, k, ls.contact, &model.traction, scalar);
             c.reduced_radius_m[i] = ls.reduced_radius;
             c.ring_radius_m[i] = ls.rho;
         }
@@ -506,14 +528,14 @@ fn loaded_slices(
 
 /// The 3-D unit normal of a half-plane line at the azimuth of `e_ρ`.
 #[inline]
-pub(super) fn contact_normal(line: &HalfPlaneLine, e_rho: V3, axis: V3) -> V3 {
+fn contact_normal(line: &HalfPlaneLine, e_rho: V3, axis: V3) -> V3 {
     add(scale(e_rho, line.n_rho), scale(axis, line.n_zeta))
 }
 
 /// Normal curvature of the raceway cone across its generatrix at distance `ρ` from the axis:
 /// `cos α/ρ`, convex (+) on the cone, concave (−) on the cup, 1/m.
 #[inline]
-pub(super) fn line_curvature(model: &TaperedModel, race: usize, rho: f64) -> f64 {
+fn line_curvature(model: &TaperedModel, race: usize, rho: f64) -> f64 {
     if race == 0 {
         model.cone_angle.cos() / rho
     } else {
