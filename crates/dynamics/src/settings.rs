@@ -28,7 +28,10 @@ pub enum VelocityErrorScale {
     /// within a period, so both then carry the same elastic energy. The surface speed stays a
     /// floor, and the orbital speed, the spin and the cage and ring velocities keep `v_ref`
     /// (they set the sliding speeds directly). 2002834: `ω_c ≈ 2.8·10⁵ rad/s`, 5–6× looser on
-    /// the roller radial velocity than [`Self::SurfaceSpeed`].
+    /// the roller radial velocity than [`Self::SurfaceSpeed`]. The tapered bearing takes `ω_c`
+    /// of its cone and cup line contacts (the cassette: 1.29·10⁵ rad/s, 19× looser on the
+    /// radial and axial velocities, 33× on the transverse momenta; 1.7× fewer steps,
+    /// `docs/dynamics-integrator.md` §5.7).
     #[default]
     ContactFrequency,
 }
@@ -72,7 +75,7 @@ pub struct IntegratorSettings {
     /// except the mean friction power (+0.9 %). At 1e-5 that bias is +2.6 %, at 3e-5 +4.3 %;
     /// at 1e-4 the raceway force maxima are 20–28 % high (`docs/dynamics-integrator.md`).
     pub tolerance: f64,
-    /// Scale of the roller velocities in the error test (default
+    /// Scale of the roller velocities in the error test, cylindrical and tapered (default
     /// [`VelocityErrorScale::ContactFrequency`]).
     pub velocity_scale: VelocityErrorScale,
     /// First trial step, s (default 1e-7; the controller adapts within a few steps).

@@ -978,17 +978,60 @@ fn pack_state(model: &Model, init: &InitialState) -> Result<Vec<f64>, DynError> 
     Ok(y)
 }
 
-/// Roller–raceway contact frequency `ω_c = √((k_i + k_o)/m_r)`, rad/s: the linearised
-/// stiffness `k = n Q/δ` of each whole line contact (all slices at one approach δ) at the
-/// reference load `Q` ([`IntegratorSettings::contact_frequency_load_n`]).
+/// Roller–raceway contact frequency `ω_c = √((k_i + k_o)/m_r)` of 2002834-type models,
+/// [`contact_frequency`] of the inner and outer line contacts, rad/s.
 pub(crate) fn roller_contact_frequency(model: &Model, reference_load_n: f64) -> f64 {
-    let stiffness = |rs: &crate::model::RacewaySlices| {
-        let k_sum: f64 = rs.k.iter().sum();
-        let delta = (reference_load_n / k_sum).powf(1.0 / rs.n);
-        rs.n * reference_load_n / delta
-    };
-    ((stiffness(&model.inner) + stiffness(&model.outer)) / model.m_r).sqrt()
+    contact_frequency(
+        [
+            (&model.inner.k, model.inner.n),
+            (&model.outer.k, model.outer.n),
+        ],
+        model.m_r,
+        reference_load_n,
+    )
 }
+
+/// Contact frequency `ω_c = √((k_1 + k_2)/m_r)` of a roller of mass `m_r` between two line
+/// contacts, rad/s: each line contact's slice law `Q_s = k_s δⁿ` (`(k_s per slice, n)`)
+/// linearised as `k = n Q/δ` with all slices at one approach δ, at the reference load `Q`
+/// ([`IntegratorSettings::contact_frequency_load_n`]).
+pub(crate) fn contact_frequency(lines: [(&[f64], f64); 2], roller_mass: f64, load_n: f64) -> f64 {
+    let stiffness = |(k, n): (&[f64], f64)| {
+        let k_sum: f64 = k.iter().sum();
+        let delta = (load_n / k_sum).powf(1.0 / n);
+        n * load_n / delta
+    };
+    let [a, b] = lines;
+    ((stiffness(a) + stiffness(b)) / roller_mass).sqrt()
+}
+
+/// Error scales `(roller radial and axial velocity, roller transverse angular momentum)` of
+/// [`IntegratorSettings::velocity_scale`] (crate docs, "Error control"): `v_ref` and the spin
+/// momentum `I_a v_ref/r`, or with [`VelocityErrorScale::ContactFrequency`] the
+/// energy-consistent `ω_c·s_x` and `I_t ω_c·s_x/(L/2)` floored by them (`s_x` the 1 mm
+/// length scale, `L/2` the roller's half-length, `ω_c` from `contact_frequency`).
+pub(crate) fn roller_velocity_scales(
+    set: &IntegratorSettings,
+    v_ref: f64,
+    spin_momentum: f64,
+    transverse_inertia: f64,
+    half_length: f64,
+    contact_frequency: impl FnOnce() -> f64,
+) -> (f64, f64) {
+    match set.velocity_scale {
+        VelocityErrorScale::SurfaceSpeed => (v_ref, spin_momentum),
+        VelocityErrorScale::ContactFrequency => {
+            let w_c = contact_frequency();
+            (
+                v_ref.max(w_c * ERROR_LENGTH_SCALE_M),
+                spin_momentum.max(transverse_inertia * w_c * ERROR_LENGTH_SCALE_M / half_length),
+            )
+        }
+    }
+}
+
+/// Length scale `s_x` of the error test (crate docs, "Error control"): 1 nm at τ = 10⁻⁶, m.
+pub(crate) const ERROR_LENGTH_SCALE_M: f64 = 1e-3;
 
 /// The stepper of `set.method` at `(t, y)` with the error scales of [`error_scales`].
 fn new_stepper(
@@ -1043,23 +1086,17 @@ fn error_scales(model: &Model, set: &IntegratorSettings) -> (Vec<f64>, Vec<f64>)
     let v_ref = (c.inner_speed.speed(0.0).abs() * model.ri)
         .max(c.outer_speed.speed(0.0).abs() * model.ro)
         .max(1.0);
-    let len = 1e-3;
+    let len = ERROR_LENGTH_SCALE_M;
     let half_l = model
         .slice_x
         .iter()
         .fold(0.0_f64, |a, &x| a.max(x.abs()))
         .max(1e-3);
     let spin_momentum = model.ia_r * v_ref / model.rw;
-    let (v_roller, l_transverse) = match set.velocity_scale {
-        VelocityErrorScale::SurfaceSpeed => (v_ref, spin_momentum),
-        VelocityErrorScale::ContactFrequency => {
-            let w_c = roller_contact_frequency(model, set.contact_frequency_load_n);
-            (
-                v_ref.max(w_c * len),
-                spin_momentum.max(model.it_r * w_c * len / half_l),
-            )
-        }
-    };
+    let (v_roller, l_transverse) =
+        roller_velocity_scales(set, v_ref, spin_momentum, model.it_r, half_l, || {
+            roller_contact_frequency(model, set.contact_frequency_load_n)
+        });
     let mut s = vec![0.0; lay.len()];
     let mut rel = vec![0.0; lay.len()];
     for j in 0..model.z {

@@ -714,7 +714,7 @@ fn bars(
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
     use crate::conditions::{ContactTemperatures, InnerRingSupport, OperatingConditions};
     use crate::integrator::Dopri5;
@@ -725,7 +725,7 @@ mod tests {
 
     /// The cassette of `examples/tapered-cassette.toml` (load case 1: 663 rpm, 118 862 N, oil
     /// at 60 °C), its inner ring free, as `rolldyn simulate` sets it up.
-    fn cassette() -> TaperedModel {
+    pub(crate) fn cassette() -> TaperedModel {
         let path =
             Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/tapered-cassette.toml");
         let file = rolldyn_model::load(&path).unwrap();

@@ -16,6 +16,7 @@ use crate::rhs::axisymmetric_omega;
 use crate::rosenbrock::{JacobianBlock, JacobianBorder, RosenbrockW};
 use crate::settings::IntegratorMethod;
 use crate::settings::IntegratorSettings;
+use crate::simulation::{ERROR_LENGTH_SCALE_M, contact_frequency, roller_velocity_scales};
 use crate::stepper::Stepper;
 use crate::vec3::{add, axpy, dot, scale};
 use std::ops::ControlFlow;
@@ -126,15 +127,25 @@ pub fn initial_state(model: &TaperedModel, row1_offset_pitch: f64) -> Vec<f64> {
 }
 
 /// Error scales of the state (crate docs, "Error control"): lengths 1 mm, velocities the
-/// rolling speed.
-fn error_scales(model: &TaperedModel) -> (Vec<f64>, Vec<f64>) {
+/// rolling speed; the rollers' radial and axial velocities and transverse angular momenta by
+/// `set.velocity_scale` ([`roller_velocity_scales`], `ω_c` of the cone and cup line contacts).
+fn error_scales(model: &TaperedModel, set: &IntegratorSettings) -> (Vec<f64>, Vec<f64>) {
     let lay = TaperedLayout { z: model.z };
     let r_m = 0.5 * model.bearing.pitch_diameter;
     let v_ref = (model.conditions.inner_speed.speed(0.0).abs() * r_m).max(1.0);
-    let len = 1e-3;
+    let len = ERROR_LENGTH_SCALE_M;
     let half_l = 0.5 * model.bearing.roller.length;
     let rw = 0.5 * model.bearing.roller.mean_diameter;
     let spin = model.ia_r * v_ref / rw;
+    let (v_roller, l_transverse) =
+        roller_velocity_scales(set, v_ref, spin, model.it_r, half_l, || {
+            let [cone, cup] = &model.slices.k;
+            let lines = [
+                (&cone[..], model.slices.n[0]),
+                (&cup[..], model.slices.n[1]),
+            ];
+            contact_frequency(lines, model.m_r, set.contact_frequency_load_n)
+        });
     let (mut s, mut rel) = (vec![len; lay.len()], vec![0.0; lay.len()]);
     for j in 0..2 * model.z {
         let b = lay.roller(j);
@@ -144,10 +155,12 @@ fn error_scales(model: &TaperedModel) -> (Vec<f64>, Vec<f64>) {
             (roller::AXIS + 1, len / half_l, 0.0),
             (roller::AXIS + 2, len / half_l, 0.0),
             (roller::ORBITAL_SPEED, v_ref / r_m, 1.0),
-            (roller::RADIAL_VELOCITY, v_ref, 1.0),
-            (roller::AXIAL_VELOCITY, v_ref, 1.0),
-            (roller::MOMENTUM, spin, 1.0),
-            (roller::MOMENTUM + 1, spin, 1.0),
+            (roller::RADIAL_VELOCITY, v_roller, 1.0),
+            (roller::AXIAL_VELOCITY, v_roller, 1.0),
+            // global x, y: transverse (plus the axis's small radial share of the spin, held by
+            // the relative part); z: the spin about the nearly axial roller axis
+            (roller::MOMENTUM, l_transverse, 1.0),
+            (roller::MOMENTUM + 1, l_transverse, 1.0),
             (roller::MOMENTUM + 2, spin, 1.0),
         ];
         for (k, sc, r) in vals {
@@ -224,7 +237,7 @@ impl<'m> TaperedSimulation<'m> {
         record_contacts: bool,
     ) -> Self {
         let y0 = initial_state(model, settings.row1_offset_pitch);
-        let (scale_v, rel) = error_scales(model);
+        let (scale_v, rel) = error_scales(model, &settings.integrator);
         let mut sys = TaperedSystem::new(model);
         if record_contacts {
             sys.record_contacts();
@@ -517,4 +530,64 @@ fn sample(
         0.0
     };
     s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::settings::VelocityErrorScale;
+    use crate::tapered::rhs::tests::cassette;
+
+    /// The cassette's roller (m_r = π/4·d²·L·ρ ≈ 0.14 kg) between its cone and cup line
+    /// contacts at 100 N: Palmgren's δ = 3.84·10⁻⁵ Q^0.9/L^0.8 (mm, N) ≈ 0.11 µm over the
+    /// 47.9 mm working length, k = n Q/δ ≈ 1.0·10⁹ N/m each, ω_c = √(2k/m_r) ≈ 1.2·10⁵ rad/s
+    /// (the model's slice laws give 1.29·10⁵).
+    #[test]
+    fn contact_frequency_of_the_cassette_is_of_the_hand_estimate() {
+        let model = cassette();
+        let set = IntegratorSettings::default();
+        let [cone, cup] = &model.slices.k;
+        let lines = [
+            (&cone[..], model.slices.n[0]),
+            (&cup[..], model.slices.n[1]),
+        ];
+        let w = contact_frequency(lines, model.m_r, set.contact_frequency_load_n);
+        println!("ω_c = {w:.4e} rad/s, m_r = {} kg", model.m_r);
+        assert!((1.0e5..1.5e5).contains(&w), "{w}");
+    }
+
+    /// `velocity_scale` applies to the tapered rollers as to the cylindrical ones: the
+    /// energy-consistent scales loosen only the rollers' radial/axial velocities and their
+    /// transverse (global x, y) momenta, and never tighten anything.
+    #[test]
+    fn contact_frequency_scales_loosen_only_roller_contact_velocities() {
+        let model = cassette();
+        let scales = |velocity_scale| {
+            let set = IntegratorSettings {
+                velocity_scale,
+                ..IntegratorSettings::default()
+            };
+            error_scales(&model, &set).0
+        };
+        let old = scales(VelocityErrorScale::SurfaceSpeed);
+        let new = scales(VelocityErrorScale::ContactFrequency);
+        let lay = TaperedLayout { z: model.z };
+        let transverse = [
+            roller::RADIAL_VELOCITY,
+            roller::AXIAL_VELOCITY,
+            roller::MOMENTUM,
+            roller::MOMENTUM + 1,
+        ];
+        for j in 0..2 * model.z {
+            let b = lay.roller(j);
+            for k in 0..ROLLER_DOF {
+                if transverse.contains(&k) {
+                    assert!(new[b + k] > 3.0 * old[b + k], "roller {j} component {k}");
+                } else {
+                    assert_eq!(new[b + k], old[b + k], "roller {j} component {k}");
+                }
+            }
+        }
+        assert_eq!(new[lay.cage(0)..], old[lay.cage(0)..]);
+    }
 }
