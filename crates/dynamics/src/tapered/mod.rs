@@ -29,6 +29,9 @@ pub use columns::{SAMPLE_COLUMNS, sample_from_row, sample_row, summary_entries};
 pub use contacts::{ContactRecorder, RibContact, RollerContacts, SliceContacts};
 pub use layout::TaperedLayout;
 pub use model::{TaperedModel, TaperedParameters, end_rib_film_limit_force};
+/// The cassette of `examples/tapered-cassette.toml` for unit tests outside this module.
+#[cfg(test)]
+pub(crate) use rhs::tests::cassette;
 pub use rhs::{RollerReport, TaperedSystem};
 pub use run::{
     TaperedRun, TaperedRunSettings, TaperedSimulation, initial_state, run, run_recorded,

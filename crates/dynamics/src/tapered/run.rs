@@ -536,7 +536,7 @@ fn sample(
 mod tests {
     use super::*;
     use crate::settings::VelocityErrorScale;
-    use crate::tapered::rhs::tests::cassette;
+    use crate::tapered::cassette;
 
     /// The cassette's roller (m_r = π/4·d²·L·ρ ≈ 0.14 kg) between its cone and cup line
     /// contacts at 100 N: Palmgren's δ = 3.84·10⁻⁵ Q^0.9/L^0.8 (mm, N) ≈ 0.11 µm over the
