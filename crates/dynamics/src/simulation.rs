@@ -1262,7 +1262,7 @@ fn energy(model: &Model, t: f64, y: &[f64]) -> f64 {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
     use crate::model::RacewayTraction;
     use crate::output::NullSink;
@@ -1376,20 +1376,26 @@ mod tests {
         assert!((1.5e5..4.0e5).contains(&w), "{w}");
     }
 
+    /// Error scales `(SurfaceSpeed, ContactFrequency)` of a model's `error_scales`.
+    pub(crate) fn scales_of_both_velocity_scales(
+        error_scales: impl Fn(&IntegratorSettings) -> Vec<f64>,
+    ) -> (Vec<f64>, Vec<f64>) {
+        let with = |velocity_scale| IntegratorSettings {
+            velocity_scale,
+            ..IntegratorSettings::default()
+        };
+        (
+            error_scales(&with(VelocityErrorScale::SurfaceSpeed)),
+            error_scales(&with(VelocityErrorScale::ContactFrequency)),
+        )
+    }
+
     /// The energy-consistent scales loosen only the roller's radial/axial velocities and
     /// transverse momenta, by ω_c·1 mm / v_ref, and never tighten anything.
     #[test]
     fn contact_frequency_scales_loosen_only_roller_contact_velocities() {
         let model = model_2002834();
-        let scales = |velocity_scale| {
-            let set = IntegratorSettings {
-                velocity_scale,
-                ..IntegratorSettings::default()
-            };
-            error_scales(&model, &set).0
-        };
-        let old = scales(VelocityErrorScale::SurfaceSpeed);
-        let new = scales(VelocityErrorScale::ContactFrequency);
+        let (old, new) = scales_of_both_velocity_scales(|set| error_scales(&model, set).0);
         for (i, (a, b)) in old.iter().zip(&new).enumerate() {
             assert!(b >= a, "component {i}");
         }

@@ -535,7 +535,7 @@ fn sample(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::settings::VelocityErrorScale;
+    use crate::simulation::tests::scales_of_both_velocity_scales;
     use crate::tapered::cassette;
 
     /// The cassette's roller (m_r = π/4·d²·L·ρ ≈ 0.14 kg) between its cone and cup line
@@ -562,15 +562,7 @@ mod tests {
     #[test]
     fn contact_frequency_scales_loosen_only_roller_contact_velocities() {
         let model = cassette();
-        let scales = |velocity_scale| {
-            let set = IntegratorSettings {
-                velocity_scale,
-                ..IntegratorSettings::default()
-            };
-            error_scales(&model, &set).0
-        };
-        let old = scales(VelocityErrorScale::SurfaceSpeed);
-        let new = scales(VelocityErrorScale::ContactFrequency);
+        let (old, new) = scales_of_both_velocity_scales(|set| error_scales(&model, set).0);
         let lay = TaperedLayout { z: model.z };
         let transverse = [
             roller::RADIAL_VELOCITY,
