@@ -191,8 +191,11 @@ pub(crate) struct Border {
     /// `∂f_b/∂y_support` (`n × s`, row-major) and `∂f_support/∂y_b` (`s × n`) per coupled block
     pub(crate) jac_rows: Vec<f64>,
     pub(crate) jac_cols: Vec<f64>,
-    /// `D_b⁻¹ B_b` per coupled block, stored by columns (`s` columns of `n` values)
+    /// `D_b⁻¹ B_b` per coupled block, `n × s` row-major like `jac_rows`
     x: Vec<f64>,
+    /// scratch of `s` values (the largest support): a row of `C_b D_b⁻¹ B_b`, the border
+    /// unknowns of a block's support
+    schur_row: Vec<f64>,
     /// LU factors of the Schur complement `S` and its pivots
     schur: Vec<f64>,
     piv: Vec<usize>,
@@ -407,6 +410,7 @@ impl RosenbrockW {
             jac_rows: vec![0.0; o],
             jac_cols: vec![0.0; o],
             x: vec![0.0; o],
+            schur_row: vec![0.0; border.support.iter().map(Vec::len).max().unwrap_or(0)],
             schur: vec![0.0; m * m],
             piv: vec![0; m],
             active: false,
@@ -550,24 +554,33 @@ impl RosenbrockW {
                 let sup = &bd.support[c];
                 let s = sup.len();
                 let oc = bd.off[c];
-                // X = D_b⁻¹ B_b, B_b = −∂f_b/∂y_support, column by column
-                for q in 0..s {
-                    let col = &mut bd.x[oc + q * n..oc + (q + 1) * n];
-                    for (r, v) in col.iter_mut().enumerate() {
-                        *v = -bd.jac_rows[oc + r * s + q];
-                    }
-                    dense_lu::solve_in_place(&self.lu[o..o + n * n], &self.piv[p..p + n], col);
+                // X = D_b⁻¹ B_b, B_b = −∂f_b/∂y_support, all s columns in one solve
+                let xb = &mut bd.x[oc..oc + n * s];
+                for (v, &j) in xb.iter_mut().zip(&bd.jac_rows[oc..oc + n * s]) {
+                    *v = -j;
                 }
-                // S −= C_b X, C_b = −∂f_support/∂y_b (rows the block does not enter are zero)
+                dense_lu::solve_columns_in_place(
+                    &self.lu[o..o + n * n],
+                    &self.piv[p..p + n],
+                    xb,
+                    s,
+                );
+                // S −= C_b X, C_b = −∂f_support/∂y_b (rows the block does not enter are zero),
+                // one row of S at a time along the rows of X
+                let product = &mut bd.schur_row[..s];
                 for (qr, &pr) in sup.iter().enumerate() {
                     let crow = &bd.jac_cols[oc + qr * n..oc + (qr + 1) * n];
                     if crow.iter().all(|&v| v == 0.0) {
                         continue;
                     }
-                    for (qc, &pc) in sup.iter().enumerate() {
-                        let xcol = &bd.x[oc + qc * n..oc + (qc + 1) * n];
-                        let dot: f64 = crow.iter().zip(xcol).map(|(a, b)| a * b).sum();
-                        bd.schur[pr * m + pc] += dot;
+                    product.fill(0.0);
+                    for (&c, xrow) in crow.iter().zip(xb.chunks_exact(s)) {
+                        for (acc, &xv) in product.iter_mut().zip(xrow) {
+                            *acc += c * xv;
+                        }
+                    }
+                    for (&pc, &v) in sup.iter().zip(product.iter()) {
+                        bd.schur[pr * m + pc] += v;
                     }
                 }
             }
@@ -633,12 +646,20 @@ impl RosenbrockW {
             for (c, &b) in bd.coupled.iter().enumerate() {
                 let blk = self.blocks[b];
                 let oc = bd.off[c];
-                for (q, &pos) in bd.support[c].iter().enumerate() {
-                    let z = bd.g[pos];
-                    let xcol = &bd.x[oc + q * blk.n..oc + (q + 1) * blk.n];
-                    for (v, &xv) in x[blk.start..blk.start + blk.n].iter_mut().zip(xcol) {
-                        *v -= xv * z;
-                    }
+                let s = bd.support[c].len();
+                let z = &mut bd.schur_row[..s];
+                for (zq, &pos) in z.iter_mut().zip(&bd.support[c]) {
+                    *zq = bd.g[pos];
+                }
+                let xb = &bd.x[oc..oc + blk.n * s];
+                for (v, xrow) in x[blk.start..blk.start + blk.n]
+                    .iter_mut()
+                    .zip(xb.chunks_exact(s))
+                {
+                    *v = xrow
+                        .iter()
+                        .zip(z.iter())
+                        .fold(*v, |acc, (&xv, &zq)| acc - xv * zq);
                 }
             }
         }
