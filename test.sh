@@ -28,11 +28,11 @@ python3 tools/module_cycles.py
 
 cargo test --workspace
 
-# The package and the program its answers are compared with, both with the wheel profile
-# (python/pyproject.toml: thin LTO), so the program reuses the crates pip's build compiled — a fat-LTO
-# release build of the same code would add minutes and test nothing more (same arithmetic,
-# BENCHMARKS.md "Wheel build and profiles").
+# The package, and the program its answers are compared with: the `rolldyn` that `cargo test` built
+# (target/debug, test profile). Its arithmetic is the wheel's — the optimisation level does not
+# change floating-point results (no fast-math, no contraction into FMA) — and a separate
+# wheel-profile build of the program would add ≈ 3 min and test nothing more (BENCHMARKS.md,
+# "CI time").
 python3 -m pip install --quiet --disable-pip-version-check "./python[test]"
-cargo build --profile wheel --bin rolldyn
 
-ROLLDYN_BIN="$PWD/target/wheel/rolldyn" python3 -m pytest python/tests
+ROLLDYN_BIN="$PWD/target/debug/rolldyn" python3 -m pytest python/tests

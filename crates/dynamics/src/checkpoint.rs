@@ -5,11 +5,13 @@
 
 use crate::error::DynError;
 
-/// The frame of every checkpoint: the tag `RDYNCK` and the format version (08: the
-/// Rosenbrock-W factor step size and bordered Jacobian; 07: the sliding-split maxima of the summary windows; 06: checksum, output step, the caller's note).
+/// The frame of every checkpoint: the tag `RDYNCK` and the format version (09: the previous
+/// Rosenbrock-W step size of the predictive controller; 08: the Rosenbrock-W factor step size
+/// and bordered Jacobian; 07: the sliding-split maxima of the summary windows; 06: checksum,
+/// output step, the caller's note).
 const KIND: Kind = Kind {
     tag: b"RDYNCK",
-    version: b"08",
+    version: b"09",
 };
 
 pub(crate) use rolldyn_numerics::hash::fnv1a;

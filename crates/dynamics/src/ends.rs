@@ -1157,7 +1157,10 @@ mod tests {
                 old.delta
             );
             let rel = |x: V3, y: V3, scale_: f64| norm(sub(x, y)) / scale_;
-            if (new.delta - old.delta).abs() > 1e-9 * old.delta {
+            // δ differences within that rounding are no differences: a barely touching end
+            // (δ ≈ 10⁻⁹ m) cannot be compared to 10⁻⁹ of δ
+            let gap = ((new.delta - old.delta).abs() - rounding).max(0.0);
+            if gap > 1e-9 * old.delta {
                 // a maximum at a kink (rim corner, chord switch): the new search lands on it
                 // exactly, the oracle within its last golden-section bracket (0.618⁴⁰ of half
                 // the interval), which moves δ by the slope times that width
@@ -1179,7 +1182,7 @@ mod tests {
                 self.oracle_missed += 1;
                 return;
             }
-            self.delta = self.delta.max((new.delta - old.delta).abs() / old.delta);
+            self.delta = self.delta.max(gap / old.delta);
             // on a flat maximum the oracle's x is only known to √(2 ε_δ/|f''|) (golden-section
             // comparisons of δ values within their rounding ε_δ), where the new search solves
             // f' = 0: the point and the forces (damping and friction at the point) are compared

@@ -222,6 +222,8 @@ pub struct RosenbrockW {
     pub h: f64,
     /// previous accepted error (PI memory)
     pub err_old: f64,
+    /// size of the previous accepted step (0: none yet), memory of the predictive controller
+    pub h_prev: f64,
     /// whether the last attempt was rejected
     pub last_rejected: bool,
     /// `f(t, y)` is in `f0`
@@ -315,6 +317,7 @@ impl RosenbrockW {
             t,
             h: h0,
             err_old: 1e-4,
+            h_prev: 0.0,
             last_rejected: false,
             f0_valid: false,
             stats: StepStats {
@@ -843,14 +846,8 @@ impl RosenbrockW {
                 self.dense_h = h;
                 self.t = t + h;
                 self.stats.accepted += 1;
-                self.h = crate::integrator::accepted_step(
-                    h,
-                    err,
-                    self.err_old,
-                    self.last_rejected,
-                    expo1,
-                    set,
-                );
+                self.h = self.next_step(h, err, expo1, set);
+                self.h_prev = h;
                 self.err_old = err.max(1e-4);
                 self.last_rejected = false;
                 self.jac_age += 1;
@@ -873,6 +870,24 @@ impl RosenbrockW {
                 });
             }
         }
+    }
+
+    /// Next step size after an accepted step `h` with error `err`: the PI step
+    /// ([`crate::integrator::accepted_step`]), bounded by Gustafsson's predictive step
+    /// `h·safety·(h/h_prev)·(err_old/err²)^{1/3}` (Hairer & Wanner II, §IV.8, RODAS; exponent
+    /// 1/3 for the order-2 error estimate) when `predictive_step` is set, then held at `h` when
+    /// it would grow by less than `hold_step_ratio` (RADAU5), so the factors stay valid.
+    fn next_step(&self, h: f64, err: f64, expo1: f64, set: &IntegratorSettings) -> f64 {
+        let mut next =
+            crate::integrator::accepted_step(h, err, self.err_old, self.last_rejected, expo1, set);
+        if set.predictive_step && self.h_prev > 0.0 {
+            let growth = (h / self.h_prev) * (self.err_old / err.max(1e-10).powi(2)).cbrt();
+            next = next.min(h * (set.safety * growth).clamp(set.min_shrink, set.max_growth));
+        }
+        if next > h && next <= h * (1.0 + set.hold_step_ratio) {
+            next = h;
+        }
+        next
     }
 
     /// Dense output at `t` inside the last accepted step (cubic Hermite), written to `out`.

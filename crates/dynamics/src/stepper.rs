@@ -103,6 +103,7 @@ impl Stepper {
                 w.f64(ig.t);
                 w.f64(ig.h);
                 w.f64(ig.err_old);
+                w.f64(ig.h_prev);
                 w.u64(u64::from(ig.last_rejected));
                 w.u64(u64::from(ig.f0_valid));
                 w.slice(&ig.y);
@@ -158,6 +159,7 @@ impl Stepper {
                 ig.t = r.f64()?;
                 ig.h = r.f64()?;
                 ig.err_old = r.f64()?;
+                ig.h_prev = r.f64()?;
                 ig.last_rejected = r.u64()? != 0;
                 ig.f0_valid = r.u64()? != 0;
                 r.slice_into(&mut ig.y)?;
