@@ -981,6 +981,33 @@ mod tests {
     }
 
     #[test]
+    fn the_step_is_held_predicted_ahead_of_a_growing_error_and_free_to_grow() {
+        let set = IntegratorSettings::default();
+        let groups = vec![vec![JacobianBlock { start: 0, n: 3 }]];
+        let mut ig = RosenbrockW::new(0.0, vec![1.0; 3], vec![1.0; 3], vec![0.0; 3], 1e-6, &groups);
+        let expo1 = 1.0 / 3.0 - 0.75 * set.pi_beta;
+        let h = 1e-6;
+        let close = |a: f64, b: f64| (a - b).abs() <= 1e-14 * b;
+        // first accepted step (no previous step): the PI controller proposes a growth of 1.3 %
+        // (err 0.5 after 0.1), below `hold_step_ratio`: the step is held
+        ig.err_old = 0.1;
+        let pi = crate::integrator::accepted_step(h, 0.5, 0.1, false, expo1, &set);
+        assert!(pi > h && pi < 1.2 * h, "PI step {pi:e}");
+        assert_eq!(ig.next_step(h, 0.5, expo1, &set), h);
+        // after an equal step the error has grown fivefold: the predictive bound
+        // h·safety·(0.1/0.5²)^{1/3} = 0.66 h rules
+        ig.h_prev = h;
+        let predicted = h * set.safety * (0.1_f64 / 0.25).cbrt();
+        assert!(close(ig.next_step(h, 0.5, expo1, &set), predicted));
+        // a falling error (0.5 → 0.01): the predictive bound (clamped at 5 h) lies above the PI
+        // step (3.5 h), which is taken
+        ig.err_old = 0.5;
+        let pi = crate::integrator::accepted_step(h, 0.01, 0.5, false, expo1, &set);
+        assert!(pi > 3.0 * h && pi < 4.0 * h, "PI step {pi:e}");
+        assert_eq!(ig.next_step(h, 0.01, expo1, &set), pi);
+    }
+
+    #[test]
     fn stiff_component_is_stable_with_large_steps() {
         // λ h = 1e4: explicit methods would explode, the W-method with the block Jacobian is
         // stable and accurate in the non-stiff components
