@@ -1192,7 +1192,6 @@ mod tests {
             if frame.cs != 0.0 || face.curvature != 0.0 {
                 let (x_new, x_old) = (frame.deepest_curved().0, frame.deepest_curved_golden().0);
                 let bend = frame.slope_on(x_new, frame.chord_at(x_new)).1.abs();
-                let rounding = 4.0 * f64::EPSILON * norm(old.point);
                 let width = 0.5 * (frame.xb - frame.xa) * 0.618_f64.powi(40);
                 let resolution = (2.0 * rounding / bend).sqrt().max(width);
                 assert!(
